@@ -1,0 +1,41 @@
+# Locates every dependency from where the brief says it comes from: the Python packages
+# (pybind11, eclipse-sumo) through the Python interpreter being built for, Eigen and GoogleTest
+# from the system.
+
+find_package(Python 3.11 REQUIRED COMPONENTS Interpreter Development.Embed)
+
+# Asks the target interpreter one question; fails configuration with its answer if it cannot.
+function(sbsim_python_query out code what)
+  execute_process(
+    COMMAND "${Python_EXECUTABLE}" -c "${code}"
+    OUTPUT_VARIABLE value ERROR_VARIABLE err RESULT_VARIABLE rc OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "sbsim: cannot find ${what} with ${Python_EXECUTABLE}: ${err}"
+                        "Install it with: ${Python_EXECUTABLE} -m pip install pybind11 'eclipse-sumo==1.28.*'")
+  endif()
+  set(${out} "${value}" PARENT_SCOPE)
+endfunction()
+
+if(NOT pybind11_DIR)
+  sbsim_python_query(_pybind11_dir "import pybind11; print(pybind11.get_cmake_dir())" "pybind11")
+  set(pybind11_DIR "${_pybind11_dir}" CACHE PATH "pybind11's CMake package folder")
+endif()
+find_package(pybind11 2.10 CONFIG REQUIRED)
+
+if(NOT SUMO_DIR)
+  sbsim_python_query(_sumo_home "import sumo; print(sumo.SUMO_HOME)" "eclipse-sumo")
+  set(SUMO_DIR "${_sumo_home}/cmake" CACHE PATH "SUMO's CMake package folder ($SUMO_HOME/cmake)")
+endif()
+find_package(SUMO CONFIG REQUIRED)
+# SUMOConfig names Parquet as a link dependency it does not ship a target for; libsumocpp.so
+# finds its own libraries through its RPATH, so that entry is only noise for the linker.
+set_property(TARGET SUMO::libsumocpp PROPERTY IMPORTED_LINK_DEPENDENT_LIBRARIES_RELEASE "")
+get_target_property(SBSIM_SUMO_LIBRARY SUMO::libsumocpp IMPORTED_LOCATION_RELEASE)
+get_filename_component(SBSIM_SUMO_LIBDIR "${SBSIM_SUMO_LIBRARY}" DIRECTORY)
+get_filename_component(SBSIM_SUMO_HOME "${SBSIM_SUMO_LIBDIR}" DIRECTORY)
+
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+
+if(SBSIM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()

@@ -1,0 +1,36 @@
+#include "app/BundledScenario.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sbsim::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kName = "grid-rain";
+}
+
+BundledScenario BundledScenario::locate() {
+    std::vector<fs::path> roots;
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) roots.push_back(exe.parent_path().parent_path() / "share" / "sbsim" / "stories");
+    roots.emplace_back(fs::path(SBSIM_SOURCE_DIR) / "stories");
+
+    std::string searched;
+    for (const fs::path& root : roots) {
+        const fs::path dir = root / kName;
+        const fs::path cfg = dir / (std::string(kName) + ".sumocfg");
+        if (fs::is_regular_file(cfg)) {
+            BundledScenario s{cfg, std::nullopt};
+            if (fs::is_regular_file(dir / "story.py")) s.story = dir / "story.py";
+            return s;
+        }
+        searched += (searched.empty() ? "" : ", ") + cfg.string();
+    }
+    throw std::runtime_error("bundled scenario not found (looked for " + searched + "); pass --sumocfg FILE");
+}
+
+}  // namespace sbsim::app

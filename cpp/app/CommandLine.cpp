@@ -1,0 +1,99 @@
+#include "app/CommandLine.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "app/ShellWords.h"
+
+namespace sbsim::app {
+
+namespace {
+
+template <typename T>
+T parseNumber(const std::string& option, const std::string& text) {
+    T value{};
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end) throw UsageError("option " + option + " expects a number, got '" + text + "'");
+    return value;
+}
+
+}  // namespace
+
+std::string CommandLine::usage() {
+    return R"(usage: sbsim [--sumocfg FILE] [--story FILE.py] [--events FILE.jsonl] [--end SECONDS]
+             [--seed N] [--sumo-option "..."]... [--quiet] [--version] [--help]
+
+Runs SUMO through libsumo, with an Artery-style storyboard making traffic dynamic.
+Without --sumocfg, runs the bundled scenario (stories/grid-rain).
+
+  --sumocfg FILE       SUMO configuration to load
+  --story FILE.py      storyboard script defining createStories(board)
+  --events FILE.jsonl  write storyboard events as JSON Lines
+  --end SECONDS        stop after the step reaching this time (default: the sumocfg's end)
+  --seed N             seed for SUMO (--seed) and the storyboard's random generators
+  --sumo-option "..."  extra SUMO options, split into words as a shell would; repeatable
+  --quiet              no progress, no summary, no SUMO warnings
+  --version            print the version and exit
+  --help               print this help and exit
+)";
+}
+
+CommandLine CommandLine::parse(const std::vector<std::string>& args) {
+    CommandLine cl;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string option = args[i];
+        std::optional<std::string> inlineValue;
+        if (const auto eq = option.find('='); option.rfind("--", 0) == 0 && eq != std::string::npos) {
+            inlineValue = option.substr(eq + 1);
+            option.resize(eq);
+        }
+        const auto value = [&]() -> std::string {
+            if (inlineValue) return *inlineValue;
+            if (i + 1 >= args.size()) throw UsageError("option " + option + " needs a value");
+            return args[++i];
+        };
+        const auto flag = [&] {
+            if (inlineValue) throw UsageError("option " + option + " takes no value");
+            return true;
+        };
+        if (option == "--sumocfg" || option == "-c") {
+            cl.sumocfg = value();
+        } else if (option == "--story") {
+            cl.story = value();
+        } else if (option == "--events") {
+            cl.events = value();
+        } else if (option == "--end") {
+            const double end = parseNumber<double>(option, value());
+            if (!std::isfinite(end) || end < 0) throw UsageError("option --end expects a time >= 0 in seconds");
+            cl.end = end;
+        } else if (option == "--seed") {
+            cl.seed = parseNumber<std::int64_t>(option, value());
+        } else if (option == "--sumo-option") {
+            const std::string text = value();
+            try {
+                for (std::string& w : splitShellWords(text)) cl.sumoOptions.push_back(std::move(w));
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(std::string("option --sumo-option: ") + e.what());
+            }
+        } else if (option == "--snapshot-method") {
+            cl.snapshotMethod = value();
+            if (cl.snapshotMethod != "getters" && cl.snapshotMethod != "subscriptions") {
+                throw UsageError("option --snapshot-method expects 'getters' or 'subscriptions'");
+            }
+        } else if (option == "--quiet" || option == "-q") {
+            cl.quiet = flag();
+        } else if (option == "--help" || option == "-h") {
+            cl.help = flag();
+        } else if (option == "--version") {
+            cl.version = flag();
+        } else if (option.rfind("-", 0) == 0) {
+            throw UsageError("unknown option '" + option + "' (see sbsim --help)");
+        } else {
+            throw UsageError("unexpected argument '" + option + "' (see sbsim --help)");
+        }
+    }
+    return cl;
+}
+
+}  // namespace sbsim::app

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sbsim::app {
+
+/// Bad command-line input; the program prints the message and exits with code 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct CommandLine {
+    std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
+    std::optional<std::filesystem::path> story;
+    std::optional<std::filesystem::path> events;
+    std::optional<double> end;  ///< seconds
+    std::optional<std::int64_t> seed;
+    std::vector<std::string> sumoOptions;  ///< already split into words
+    bool quiet = false;
+    bool help = false;
+    bool version = false;
+    std::string snapshotMethod = "getters";  ///< hidden: bench/ compares "getters" and "subscriptions"
+
+    /// Parses argv (without the program name). Throws UsageError naming the problem.
+    static CommandLine parse(const std::vector<std::string>& args);
+    static std::string usage();
+};
+
+}  // namespace sbsim::app

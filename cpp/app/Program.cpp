@@ -1,0 +1,137 @@
+#include "app/Program.h"
+
+#include <libsumo/TraCIDefs.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "app/BundledScenario.h"
+#include "app/CommandLine.h"
+#include "app/ProgressDisplay.h"
+#include "kernel/Simulation.h"
+#include "traffic/SumoBridge.h"
+
+namespace sbsim::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Bad input found after parsing (unreadable files and the like): exit code 2 as well.
+class InputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+void requireReadableFile(const std::string& option, const fs::path& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw InputError(option + ": no such file '" + path.string() + "'");
+    if (fs::is_directory(path, ec)) throw InputError(option + ": '" + path.string() + "' is a directory, not a file");
+    if (std::ifstream(path).fail()) throw InputError(option + ": cannot read '" + path.string() + "'");
+}
+
+const char* endReasonText(traffic::SumoBridge::EndReason r) {
+    switch (r) {
+        case traffic::SumoBridge::EndReason::EndTime: return "end time reached";
+        case traffic::SumoBridge::EndReason::NoMoreVehicles: return "no more vehicles expected";
+        case traffic::SumoBridge::EndReason::Running: break;
+    }
+    return "stopped";
+}
+
+int run(const CommandLine& cl) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point started = Clock::now();
+
+    fs::path sumocfg;
+    std::optional<fs::path> story = cl.story;
+    if (cl.sumocfg) {
+        sumocfg = *cl.sumocfg;
+    } else {
+        const BundledScenario bundled = BundledScenario::locate();
+        sumocfg = bundled.sumocfg;
+        if (!story) story = bundled.story;
+    }
+    requireReadableFile("--sumocfg", sumocfg);
+    if (story) requireReadableFile("--story", *story);
+    std::ofstream events;
+    if (cl.events) {
+        events.open(*cl.events, std::ios::out | std::ios::trunc);
+        if (!events) throw InputError("--events: cannot write '" + cl.events->string() + "'");
+    }
+
+    traffic::SumoSettings settings;
+    settings.sumocfg = sumocfg;
+    settings.extraOptions = cl.sumoOptions;
+    settings.seed = cl.seed;
+    if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
+    settings.quiet = cl.quiet;
+    settings.snapshotMethod = cl.snapshotMethod == "subscriptions" ? traffic::SnapshotBuilder::Method::Subscriptions
+                                                                   : traffic::SnapshotBuilder::Method::Getters;
+
+    kernel::Simulation sim;
+    auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
+    try {
+        sumo.load();
+    } catch (const traffic::SumoLoadError& e) {
+        throw InputError("SUMO cannot load '" + sumocfg.string() + "': " + e.what());
+    }
+
+    std::unique_ptr<ProgressDisplay> progress;
+    if (!cl.quiet && isatty(STDERR_FILENO)) {
+        progress = std::make_unique<ProgressDisplay>(stderr, sumo.endTime());
+        sim.subscribe(traffic::SumoBridge::stepSignal, *progress);
+    }
+    try {
+        sim.run();
+    } catch (const libsumo::TraCIException& e) {
+        throw std::runtime_error("SUMO error at t=" + sim.now().str() + " s: " + e.what());
+    }
+    sim.finish();
+    if (progress) progress->clear();
+
+    const double wall = std::chrono::duration<double>(Clock::now() - started).count();
+    if (!cl.quiet) {
+        const double simulated = (sim.now() - sumo.beginTime()).seconds();
+        std::printf("sbsim %s: %s\n", SBSIM_VERSION, sumocfg.filename().string().c_str());
+        std::printf("end: %s s (%s)\n", sim.now().str().c_str(), endReasonText(sumo.endReason()));
+        std::printf("steps: %llu\n", static_cast<unsigned long long>(sumo.steps()));
+        std::printf("vehicles seen: %llu\n", static_cast<unsigned long long>(sumo.vehiclesSeen()));
+        std::printf("peak running: %zu\n", sumo.peakRunning());
+        std::printf("wall time: %.3f s\n", wall);
+        std::printf("real-time factor: %.1f\n", wall > 0 ? simulated / wall : 0.0);
+    }
+    return 0;
+}
+
+}  // namespace
+
+int runProgram(const std::vector<std::string>& args) {
+    try {
+        const CommandLine cl = CommandLine::parse(args);
+        if (cl.help) {
+            std::cout << CommandLine::usage();
+            return 0;
+        }
+        if (cl.version) {
+            std::cout << "sbsim " << SBSIM_VERSION << "\n";
+            return 0;
+        }
+        return run(cl);
+    } catch (const UsageError& e) {
+        std::cerr << "sbsim: " << e.what() << "\n";
+        return 2;
+    } catch (const InputError& e) {
+        std::cerr << "sbsim: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "sbsim: error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace sbsim::app

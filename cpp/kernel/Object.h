@@ -1,0 +1,12 @@
+#pragma once
+
+namespace sbsim::kernel {
+
+/// Polymorphic base for signal payloads (OMNeT++'s cObject role): listeners downcast with
+/// dynamic_cast to the type they expect.
+class Object {
+public:
+    virtual ~Object() = default;
+};
+
+}  // namespace sbsim::kernel

@@ -1,0 +1,90 @@
+#include "kernel/Simulation.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "kernel/Module.h"
+
+namespace sbsim::kernel {
+
+Simulation::~Simulation() {
+    // Modules go first, newest first, while the event set and signal tables they refer to still exist.
+    while (!modules_.empty()) {
+        fes_.removeAllFor(*modules_.back());
+        modules_.pop_back();
+    }
+}
+
+Module& Simulation::addModule(std::unique_ptr<Module> module) {
+    if (!module) throw std::invalid_argument("null module");
+    if (module->simulation_ != nullptr) throw std::logic_error("module '" + module->name() + "' already added");
+    module->simulation_ = this;
+    Module& m = *module;
+    modules_.push_back(std::move(module));
+    if (initialized_ && !finished_) {
+        m.initialized_ = true;
+        m.initialize();
+    }
+    return m;
+}
+
+void Simulation::removeModule(Module& module) {
+    const auto it = std::find_if(modules_.begin(), modules_.end(), [&](const auto& p) { return p.get() == &module; });
+    if (it == modules_.end()) throw std::logic_error("module '" + module.name() + "' is not part of this simulation");
+    if (module.initialized_ && !finished_) module.finish();
+    fes_.removeAllFor(module);
+    modules_.erase(it);
+}
+
+void Simulation::initialize() {
+    if (initialized_) return;
+    initialized_ = true;
+    // Index loop: initialize() may add modules, which are then initialized by addModule.
+    const std::size_t n = modules_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        Module& m = *modules_[i];
+        if (!m.initialized_) {
+            m.initialized_ = true;
+            m.initialize();
+        }
+    }
+}
+
+Simulation::StopReason Simulation::run(SimTime limit) {
+    initialize();
+    stopRequested_ = false;
+    while (!fes_.empty()) {
+        if (fes_.peek().arrivalTime() > limit) return StopReason::TimeLimit;
+        std::unique_ptr<Message> owned;
+        Message& msg = fes_.pop(owned);
+        now_ = msg.arrivalTime();
+        ++events_;
+        msg.arrivalModule()->handleMessage(msg);
+        if (stopRequested_) return StopReason::Requested;
+    }
+    return StopReason::NoMoreEvents;
+}
+
+void Simulation::finish() {
+    if (finished_) return;
+    finished_ = true;
+    for (const auto& m : modules_) {
+        if (m->initialized_) m->finish();
+    }
+}
+
+void Simulation::schedule(Message& msg, SimTime at, Module& target) {
+    if (at < now_) {
+        throw std::logic_error("message '" + msg.name() + "' scheduled in the past (" + at.str() + " s < " + now_.str() + " s)");
+    }
+    fes_.insert(msg, at, &target);
+}
+
+void Simulation::schedule(std::unique_ptr<Message> msg, SimTime at, Module& target) {
+    if (at < now_) {
+        throw std::logic_error("message '" + msg->name() + "' scheduled in the past (" + at.str() + " s < " + now_.str() + " s)");
+    }
+    fes_.insert(std::move(msg), at, &target);
+}
+
+}  // namespace sbsim::kernel

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+#include "kernel/FutureEventSet.h"
+#include "kernel/Signal.h"
+#include "kernel/SimTime.h"
+
+namespace sbsim::kernel {
+
+class Module;
+
+/// The event loop: owns the modules and the future-event set, advances time from event to event
+/// (never between them), and runs the lifecycle. Deterministic: the same inputs deliver the same
+/// events in the same order.
+class Simulation {
+public:
+    enum class StopReason { NoMoreEvents, TimeLimit, Requested };
+
+    Simulation() = default;
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    /// Adds a module; if the simulation is already initialized the module is initialized now.
+    Module& addModule(std::unique_ptr<Module> module);
+    template <typename T, typename... Args>
+    T& emplaceModule(Args&&... args) {
+        static_assert(std::is_base_of_v<Module, T>);
+        return static_cast<T&>(addModule(std::make_unique<T>(std::forward<Args>(args)...)));
+    }
+    /// Calls finish() on a module if it was initialized, drops its pending events and destroys it.
+    void removeModule(Module& module);
+    std::size_t moduleCount() const { return modules_.size(); }
+
+    SimTime now() const { return now_; }
+    std::uint64_t eventCount() const { return events_; }
+    FutureEventSet& futureEvents() { return fes_; }
+    /// Simulation-wide listeners: they hear every module's emits.
+    SignalTable& signals() { return signals_; }
+    void subscribe(SignalId id, Listener& listener) { signals_.subscribe(id, listener); }
+
+    /// initialize() on every module, in the order they were added.
+    void initialize();
+    /// Delivers events in order while their time is <= `limit`.
+    StopReason run(SimTime limit = SimTime::max());
+    /// Ends run() after the event being handled.
+    void stop() { stopRequested_ = true; }
+    /// finish() on every initialized module, in the order they were added; runs once.
+    void finish();
+
+    // Used by Module.
+    void schedule(Message& msg, SimTime at, Module& target);
+    void schedule(std::unique_ptr<Message> msg, SimTime at, Module& target);
+
+private:
+    std::vector<std::unique_ptr<Module>> modules_;
+    FutureEventSet fes_;
+    SignalTable signals_;
+    SimTime now_;
+    std::uint64_t events_ = 0;
+    bool initialized_ = false;
+    bool finished_ = false;
+    bool stopRequested_ = false;
+};
+
+}  // namespace sbsim::kernel

@@ -1,0 +1,151 @@
+#include "traffic/SumoBridge.h"
+
+#include <libsumo/Simulation.h>
+#include <libsumo/Vehicle.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "traffic/StderrCapture.h"
+
+namespace sbsim::traffic {
+
+namespace {
+/// SUMO's printed "Error: ..." lines folded into one line, or the exception text if there are none.
+std::string sumoErrorLine(const std::string& printed, const std::string& fallback) {
+    std::string line;
+    std::size_t pos = 0;
+    bool inError = false;
+    while (pos < printed.size()) {
+        std::size_t eol = printed.find('\n', pos);
+        if (eol == std::string::npos) eol = printed.size();
+        std::string text = printed.substr(pos, eol - pos);
+        pos = eol + 1;
+        if (text.rfind("Error: ", 0) == 0) {
+            inError = true;
+            text.erase(0, 7);
+        } else if (text.rfind("Warning: ", 0) == 0) {
+            inError = false;
+            continue;
+        }
+        if (!inError) continue;
+        const std::size_t first = text.find_first_not_of(" \t");
+        if (first == std::string::npos) continue;
+        if (!line.empty()) line += ' ';
+        line += text.substr(first);
+    }
+    return line.empty() ? fallback : line;
+}
+}  // namespace
+
+const kernel::SignalId SumoBridge::departedSignal = kernel::registerSignal("vehicleDeparted");
+const kernel::SignalId SumoBridge::arrivedSignal = kernel::registerSignal("vehicleArrived");
+const kernel::SignalId SumoBridge::stepSignal = kernel::registerSignal("sumoStep");
+
+SumoBridge::SumoBridge(SumoSettings settings)
+    : kernel::Module("sumo"), settings_(std::move(settings)), builder_(settings_.snapshotMethod) {
+    stepMessage_.setPriority(kStepPriority);
+}
+
+SumoBridge::~SumoBridge() { close(); }
+
+void SumoBridge::load() {
+    if (loaded_) return;
+    const std::vector<std::string>& extra = settings_.extraOptions;
+    // SUMO refuses an option given twice, so sbsim's defaults yield to the user's.
+    const auto defaultOption = [&](std::vector<std::string>& args, const std::string& name, const std::string& value) {
+        if (std::find(extra.begin(), extra.end(), name) == extra.end()) args.insert(args.end(), {name, value});
+    };
+    std::vector<std::string> args = {"-c", settings_.sumocfg.string()};
+    defaultOption(args, "--no-step-log", "true");
+    if (settings_.seed) args.insert(args.end(), {"--seed", std::to_string(*settings_.seed)});
+    if (settings_.quiet) defaultOption(args, "--no-warnings", "true");
+    args.insert(args.end(), extra.begin(), extra.end());
+
+    StderrCapture capture;
+    std::string failure;
+    try {
+        libsumo::Simulation::load(args);
+    } catch (const libsumo::TraCIException& e) {
+        failure = e.what();
+    } catch (const libsumo::FatalTraCIError& e) {
+        failure = e.what();
+    }
+    const std::string printed = capture.finish();
+    if (!failure.empty()) throw SumoLoadError(sumoErrorLine(printed, failure));
+    std::fputs(printed.c_str(), stderr);  // warnings of a successful load, as SUMO printed them
+    loaded_ = true;
+
+    stepLength_ = kernel::SimTime::fromSeconds(libsumo::Simulation::getDeltaT());
+    begin_ = kernel::SimTime::fromMilliseconds(libsumo::Simulation::getCurrentTime());
+    const double configuredEnd = libsumo::Simulation::getEndTime();
+    end_ = settings_.end;
+    if (!end_ && configuredEnd >= 0) end_ = kernel::SimTime::fromSeconds(configuredEnd);
+    const libsumo::TraCIPositionVector b = libsumo::Simulation::getNetBoundary();
+    if (b.value.size() >= 2) boundary_ << b.value[0].x, b.value[1].x, b.value[0].y, b.value[1].y;
+}
+
+void SumoBridge::initialize() {
+    load();
+    // Vehicles already on the road (a loaded state) count as departed at the beginning.
+    std::vector<std::string> present = libsumo::Vehicle::getIDList();
+    std::sort(present.begin(), present.end());
+    builder_.addVehicles(present);
+    vehiclesSeen_ += present.size();
+    builder_.fill(snapshot_, begin_);
+    scheduleNextStep();
+}
+
+void SumoBridge::scheduleNextStep() {
+    const kernel::SimTime next = begin_ + stepLength_ * static_cast<kernel::SimTime::rep>(steps_ + 1);
+    if (end_ && next > *end_) {
+        endReason_ = EndReason::EndTime;
+        simulation().stop();
+        return;
+    }
+    scheduleAt(next, stepMessage_);
+}
+
+void SumoBridge::announce(const std::vector<std::string>& ids, kernel::SignalId signal) {
+    for (const std::string& id : ids) emit(signal, std::string_view(id));
+}
+
+void SumoBridge::handleMessage(kernel::Message& msg) {
+    if (&msg != &stepMessage_) return kernel::Module::handleMessage(msg);
+    libsumo::Simulation::step();
+    ++steps_;
+    std::vector<std::string> departed = libsumo::Simulation::getDepartedIDList();
+    std::vector<std::string> arrived = libsumo::Simulation::getArrivedIDList();
+    std::sort(departed.begin(), departed.end());
+    std::sort(arrived.begin(), arrived.end());
+    builder_.addVehicles(departed);
+    builder_.removeVehicles(arrived);
+    vehiclesSeen_ += departed.size();
+    peakRunning_ = std::max(peakRunning_, builder_.running());
+    builder_.fill(snapshot_, simTime());
+
+    announce(departed, departedSignal);
+    announce(arrived, arrivedSignal);
+    emit(stepSignal, static_cast<const kernel::Object&>(snapshot_));
+
+    if (libsumo::Simulation::getMinExpectedNumber() <= 0) {
+        endReason_ = EndReason::NoMoreVehicles;
+        simulation().stop();
+        return;
+    }
+    scheduleNextStep();
+}
+
+void SumoBridge::finish() { close(); }
+
+void SumoBridge::close() {
+    if (!loaded_) return;
+    loaded_ = false;
+    try {
+        libsumo::Simulation::close();
+    } catch (const std::exception&) {
+        // Closing is best effort: SUMO may already have shut down after a fatal error.
+    }
+}
+
+}  // namespace sbsim::traffic

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/Module.h"
+#include "traffic/SnapshotBuilder.h"
+#include "traffic/VehicleSnapshot.h"
+
+namespace sbsim::traffic {
+
+/// What to load into SUMO and how long to run it.
+struct SumoSettings {
+    std::filesystem::path sumocfg;
+    std::vector<std::string> extraOptions;  ///< passed to SUMO as they are, after sbsim's own
+    std::optional<std::int64_t> seed;       ///< SUMO's --seed
+    std::optional<kernel::SimTime> end;     ///< default: the configuration's end, else until no vehicle is left
+    bool quiet = false;                     ///< also silences SUMO's warnings
+    SnapshotBuilder::Method snapshotMethod = SnapshotBuilder::Method::Getters;
+};
+
+/// Raised when SUMO refuses the configuration; carries SUMO's own message.
+class SumoLoadError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Drives SUMO through libsumo as a kernel module: one self-message per SUMO step. After each step
+/// it refreshes the vehicle snapshot and emits, in this order, `departedSignal` (one per vehicle,
+/// value: id), `arrivedSignal` (one per vehicle, value: id) and `stepSignal` (value: the snapshot).
+/// Vehicles are reported in ascending byte order of id. SUMO is closed in finish() or, at the
+/// latest, by the destructor, whatever happened.
+class SumoBridge : public kernel::Module {
+public:
+    static const kernel::SignalId departedSignal;
+    static const kernel::SignalId arrivedSignal;
+    static const kernel::SignalId stepSignal;
+
+    /// Steps come before other events due at the same time, so everything at time t sees step t.
+    static constexpr int kStepPriority = -1000;
+
+    enum class EndReason { Running, EndTime, NoMoreVehicles };
+
+    explicit SumoBridge(SumoSettings settings);
+    ~SumoBridge() override;
+
+    /// Loads SUMO now (initialize() does it otherwise); throws SumoLoadError with SUMO's message.
+    void load();
+    bool loaded() const { return loaded_; }
+
+    void initialize() override;
+    void handleMessage(kernel::Message& msg) override;
+    void finish() override;
+
+    const VehicleSnapshot& snapshot() const { return snapshot_; }
+    kernel::SimTime stepLength() const { return stepLength_; }
+    kernel::SimTime beginTime() const { return begin_; }
+    /// The time the run stops at, if any (from --end or the configuration).
+    std::optional<kernel::SimTime> endTime() const { return end_; }
+    /// SUMO's network boundary: (xmin, ymin), (xmax, ymax).
+    const Eigen::Matrix2d& netBoundary() const { return boundary_; }
+    EndReason endReason() const { return endReason_; }
+
+    std::uint64_t steps() const { return steps_; }
+    std::uint64_t vehiclesSeen() const { return vehiclesSeen_; }
+    std::size_t peakRunning() const { return peakRunning_; }
+
+private:
+    void close();
+    void scheduleNextStep();
+    void announce(const std::vector<std::string>& ids, kernel::SignalId signal);
+
+    SumoSettings settings_;
+    bool loaded_ = false;
+    kernel::SimTime stepLength_;
+    kernel::SimTime begin_;
+    std::optional<kernel::SimTime> end_;
+    Eigen::Matrix2d boundary_ = Eigen::Matrix2d::Zero();
+    kernel::Message stepMessage_{"sumo step"};
+    SnapshotBuilder builder_;
+    VehicleSnapshot snapshot_;
+    EndReason endReason_ = EndReason::Running;
+    std::uint64_t steps_ = 0;
+    std::uint64_t vehiclesSeen_ = 0;
+    std::size_t peakRunning_ = 0;
+};
+
+}  // namespace sbsim::traffic

@@ -1,0 +1,27 @@
+#include "traffic/VehicleController.h"
+
+#include <libsumo/Vehicle.h>
+
+namespace sbsim::traffic {
+
+using libsumo::Vehicle;
+
+std::string VehicleController::typeId() const { return Vehicle::getTypeID(id_); }
+std::string VehicleController::roadId() const { return Vehicle::getRoadID(id_); }
+std::string VehicleController::laneId() const { return Vehicle::getLaneID(id_); }
+int VehicleController::laneIndex() const { return Vehicle::getLaneIndex(id_); }
+double VehicleController::speed() const { return Vehicle::getSpeed(id_); }
+double VehicleController::maxSpeed() const { return Vehicle::getMaxSpeed(id_); }
+double VehicleController::emergencyDecel() const { return Vehicle::getEmergencyDecel(id_); }
+int VehicleController::speedMode() const { return Vehicle::getSpeedMode(id_); }
+
+void VehicleController::setMaxSpeed(double mps) const { Vehicle::setMaxSpeed(id_, mps); }
+void VehicleController::setSpeed(double mps) const { Vehicle::setSpeed(id_, mps); }
+void VehicleController::slowDown(double mps, double seconds) const { Vehicle::slowDown(id_, mps, seconds); }
+void VehicleController::setSpeedMode(int mode) const { Vehicle::setSpeedMode(id_, mode); }
+void VehicleController::changeLane(int laneIndex, double seconds) const { Vehicle::changeLane(id_, laneIndex, seconds); }
+void VehicleController::changeLaneRelative(int offset, double seconds) const {
+    Vehicle::changeLaneRelative(id_, offset, seconds);
+}
+
+}  // namespace sbsim::traffic

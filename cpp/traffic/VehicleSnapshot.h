@@ -1,0 +1,55 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kernel/Object.h"
+#include "kernel/SimTime.h"
+
+namespace sbsim::traffic {
+
+/// The state of every running vehicle after one SUMO step, as struct-of-arrays: column/element i
+/// of every array belongs to vehicle ids()[i], and ids are in ascending byte order, so iteration is
+/// deterministic. Conditions and services read this instead of calling libsumo per vehicle.
+/// Strings that repeat across vehicles (road, lane, type) are stored once and indexed.
+class VehicleSnapshot : public kernel::Object {
+public:
+    using Index = std::int32_t;
+
+    kernel::SimTime time() const { return time_; }
+    Index size() const { return static_cast<Index>(ids_.size()); }
+    bool empty() const { return ids_.empty(); }
+
+    /// Ascending byte order (std::string comparison).
+    const std::vector<std::string>& ids() const { return ids_; }
+    /// Index of `id` in this step's arrays (binary search over the sorted ids), if running.
+    std::optional<Index> indexOf(std::string_view id) const;
+
+    const Eigen::Matrix2Xd& positions() const { return position_; }  ///< SUMO network x, y (front bumper)
+    const Eigen::VectorXd& speeds() const { return speed_; }          ///< m/s
+    const Eigen::VectorXd& angles() const { return angle_; }          ///< degrees, SUMO's: 0 = north, clockwise
+    const Eigen::VectorXd& accelerations() const { return acceleration_; }  ///< m/s²
+    const Eigen::VectorXd& lengths() const { return length_; }        ///< m
+    const Eigen::VectorXd& widths() const { return width_; }          ///< m
+    const Eigen::VectorXd& maxSpeeds() const { return maxSpeed_; }    ///< m/s, the vehicle's own cap
+
+    const std::string& roadId(Index i) const { return strings_[road_[i]]; }
+    const std::string& laneId(Index i) const { return strings_[lane_[i]]; }
+    const std::string& typeId(Index i) const { return strings_[type_[i]]; }
+
+private:
+    friend class SnapshotBuilder;
+
+    kernel::SimTime time_;
+    std::vector<std::string> ids_;
+    Eigen::Matrix2Xd position_;
+    Eigen::VectorXd speed_, angle_, acceleration_, length_, width_, maxSpeed_;
+    std::vector<std::int32_t> road_, lane_, type_;  // indices into strings_
+    std::vector<std::string> strings_;              // interned road, lane and type ids
+};
+
+}  // namespace sbsim::traffic
