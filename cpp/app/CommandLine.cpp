@@ -33,6 +33,7 @@ Without --sumocfg, runs the bundled scenario (stories/grid-rain).
   --end SECONDS        stop after the step reaching this time (default: the sumocfg's end)
   --seed N             seed for SUMO (--seed) and the storyboard's random generators
   --sumo-option "..."  extra SUMO options, split into words as a shell would; repeatable
+  --threads N          threads reading vehicle states after each step (default 0: all cores)
   --quiet              no progress, no summary, no SUMO warnings
   --version            print the version and exit
   --help               print this help and exit
@@ -76,11 +77,10 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
             } catch (const std::invalid_argument& e) {
                 throw UsageError(std::string("option --sumo-option: ") + e.what());
             }
-        } else if (option == "--snapshot-method") {
-            cl.snapshotMethod = value();
-            if (cl.snapshotMethod != "getters" && cl.snapshotMethod != "subscriptions") {
-                throw UsageError("option --snapshot-method expects 'getters' or 'subscriptions'");
-            }
+        } else if (option == "--threads") {
+            const auto threads = parseNumber<std::int64_t>(option, value());
+            if (threads < 0 || threads > 256) throw UsageError("option --threads expects 0 (all cores) to 256");
+            cl.threads = static_cast<unsigned>(threads);
         } else if (option == "--quiet" || option == "-q") {
             cl.quiet = flag();
         } else if (option == "--help" || option == "-h") {

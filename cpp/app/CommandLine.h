@@ -25,7 +25,7 @@ struct CommandLine {
     bool quiet = false;
     bool help = false;
     bool version = false;
-    std::string snapshotMethod = "getters";  ///< hidden: bench/ compares "getters" and "subscriptions"
+    unsigned threads = 0;  ///< threads reading the per-step snapshot; 0 = all cores
 
     /// Parses argv (without the program name). Throws UsageError naming the problem.
     static CommandLine parse(const std::vector<std::string>& args);

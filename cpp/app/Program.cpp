@@ -13,6 +13,12 @@
 #include "app/CommandLine.h"
 #include "app/ProgressDisplay.h"
 #include "kernel/Simulation.h"
+#include "storyboard/CanvasFrame.h"
+#include "storyboard/EventLog.h"
+#include "storyboard/StoryError.h"
+#include "storyboard/Storyboard.h"
+#include "storyboard/python/PythonRuntime.h"
+#include "storyboard/python/StoryScript.h"
 #include "traffic/SumoBridge.h"
 
 namespace sbsim::app {
@@ -20,6 +26,9 @@ namespace sbsim::app {
 namespace fs = std::filesystem;
 
 namespace {
+
+/// SUMO's own default seed, used for the storyboard too when --seed is not given.
+constexpr std::int64_t kDefaultSeed = 23423;
 
 /// Bad input found after parsing (unreadable files and the like): exit code 2 as well.
 class InputError : public std::runtime_error {
@@ -70,8 +79,11 @@ int run(const CommandLine& cl) {
     settings.seed = cl.seed;
     if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
     settings.quiet = cl.quiet;
-    settings.snapshotMethod = cl.snapshotMethod == "subscriptions" ? traffic::SnapshotBuilder::Method::Subscriptions
-                                                                   : traffic::SnapshotBuilder::Method::Getters;
+    settings.threads = cl.threads;
+
+    // Declared before the simulation so it outlives the stories' Python objects.
+    std::optional<storyboard::PythonRuntime> python;
+    if (story) python.emplace();
 
     kernel::Simulation sim;
     auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
@@ -79,6 +91,20 @@ int run(const CommandLine& cl) {
         sumo.load();
     } catch (const traffic::SumoLoadError& e) {
         throw InputError("SUMO cannot load '" + sumocfg.string() + "': " + e.what());
+    }
+
+    std::optional<storyboard::EventLog> log;
+    if (events.is_open()) log.emplace(events);
+    storyboard::Storyboard* board = nullptr;
+    std::unique_ptr<storyboard::StoryScript> script;
+    if (story) {
+        board = &sim.emplaceModule<storyboard::Storyboard>(cl.seed.value_or(kDefaultSeed), log ? &*log : nullptr);
+        board->attach(sumo);
+        script = std::make_unique<storyboard::StoryScript>(*python, *story, *board,
+                                                           storyboard::CanvasFrame(sumo.netBoundary()));
+        if (script->createStories() == 0) {
+            std::fprintf(stderr, "sbsim: warning: %s registered no story\n", story->string().c_str());
+        }
     }
 
     std::unique_ptr<ProgressDisplay> progress;
@@ -102,6 +128,11 @@ int run(const CommandLine& cl) {
         std::printf("steps: %llu\n", static_cast<unsigned long long>(sumo.steps()));
         std::printf("vehicles seen: %llu\n", static_cast<unsigned long long>(sumo.vehiclesSeen()));
         std::printf("peak running: %zu\n", sumo.peakRunning());
+        if (board != nullptr) {
+            for (const auto& st : board->stories()) {
+                std::printf("activations %s: %llu\n", st->name().c_str(), static_cast<unsigned long long>(st->activations()));
+            }
+        }
         std::printf("wall time: %.3f s\n", wall);
         std::printf("real-time factor: %.1f\n", wall > 0 ? simulated / wall : 0.0);
     }
@@ -127,6 +158,9 @@ int runProgram(const std::vector<std::string>& args) {
         return 2;
     } catch (const InputError& e) {
         std::cerr << "sbsim: " << e.what() << "\n";
+        return 2;
+    } catch (const storyboard::StoryError& e) {
+        std::cerr << e.details() << "sbsim: " << e.what() << "\n";
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "sbsim: error: " << e.what() << "\n";

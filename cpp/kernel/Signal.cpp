@@ -1,6 +1,7 @@
 #include "kernel/Signal.h"
 
 #include <algorithm>
+#include <deque>
 #include <mutex>
 #include <stdexcept>
 #include <unordered_map>
@@ -11,7 +12,7 @@ namespace {
 struct Registry {
     std::mutex mutex;
     std::unordered_map<std::string, SignalId> ids;
-    std::vector<std::string> names;
+    std::deque<std::string> names;  // a deque: signalName() hands out references that must survive growth
 };
 Registry& registry() {
     static Registry r;
@@ -49,7 +50,9 @@ void Listener::receiveSignal(Module&, SignalId, const Object&) {}
 
 SignalTable::~SignalTable() {
     for (SignalId id = 0; id < static_cast<SignalId>(listeners_.size()); ++id) {
-        for (Listener* l : listeners_[id]) std::erase(l->subscriptions_, std::pair{this, id});
+        for (Listener* l : listeners_[id]) {
+            if (l != nullptr) std::erase(l->subscriptions_, std::pair{this, id});
+        }
     }
 }
 
@@ -64,8 +67,20 @@ void SignalTable::subscribe(SignalId id, Listener& listener) {
 
 void SignalTable::unsubscribe(SignalId id, Listener& listener) {
     if (id < 0 || id >= static_cast<SignalId>(listeners_.size())) return;
-    std::erase(listeners_[id], &listener);
+    auto& list = listeners_[id];
+    if (notifying_ > 0) {
+        // A notification may be iterating this list: keep the slots where they are.
+        std::replace(list.begin(), list.end(), &listener, static_cast<Listener*>(nullptr));
+        blanked_ = true;
+    } else {
+        std::erase(list, &listener);
+    }
     std::erase(listener.subscriptions_, std::pair{this, id});
+}
+
+void SignalTable::dropBlanked() {
+    for (auto& list : listeners_) std::erase(list, nullptr);
+    blanked_ = false;
 }
 
 }  // namespace sbsim::kernel

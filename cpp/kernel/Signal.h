@@ -52,19 +52,39 @@ public:
     void subscribe(SignalId id, Listener& listener);
     void unsubscribe(SignalId id, Listener& listener);
     bool hasListeners(SignalId id) const {
-        return id < static_cast<SignalId>(listeners_.size()) && !listeners_[id].empty();
+        return id >= 0 && id < static_cast<SignalId>(listeners_.size()) && !listeners_[id].empty();
     }
 
+    /// Calls the listeners subscribed when the notification starts. One unsubscribed (or destroyed)
+    /// meanwhile is not called anymore; one subscribed meanwhile hears the next notification.
     template <typename T>
-    void notify(Module& source, SignalId id, const T& value) const {
+    void notify(Module& source, SignalId id, const T& value) {
         if (!hasListeners(id)) return;
-        // A copy: listeners may (un)subscribe while being notified.
-        const std::vector<Listener*> targets = listeners_[id];
-        for (Listener* l : targets) l->receiveSignal(source, id, value);
+        const NotifyScope scope(*this);
+        // Indexing, not iterators nor a copy: the lists may grow, and a copy could hold a listener
+        // destroyed by an earlier one. Unsubscribing only blanks slots while notifying_ > 0.
+        const std::size_t n = listeners_[id].size();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (Listener* l = listeners_[id][i]) l->receiveSignal(source, id, value);
+        }
     }
 
 private:
-    std::vector<std::vector<Listener*>> listeners_;  // indexed by SignalId
+    /// Counts nested notifications; the last one to end drops the blanked slots (also on a throw).
+    struct NotifyScope {
+        explicit NotifyScope(SignalTable& t) : table(t) { ++table.notifying_; }
+        ~NotifyScope() {
+            if (--table.notifying_ == 0 && table.blanked_) table.dropBlanked();
+        }
+        NotifyScope(const NotifyScope&) = delete;
+        NotifyScope& operator=(const NotifyScope&) = delete;
+        SignalTable& table;
+    };
+    void dropBlanked();
+
+    std::vector<std::vector<Listener*>> listeners_;  // indexed by SignalId; nullptr: unsubscribed while notifying
+    int notifying_ = 0;
+    bool blanked_ = false;
 };
 
 }  // namespace sbsim::kernel

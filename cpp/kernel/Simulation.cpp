@@ -52,17 +52,21 @@ void Simulation::initialize() {
 
 Simulation::StopReason Simulation::run(SimTime limit) {
     initialize();
-    stopRequested_ = false;
-    while (!fes_.empty()) {
+    // The request is used up when honoured, not reset on entry: a stop() from initialize() (say, an
+    // end time before the first SUMO step) must end this run before any event.
+    while (true) {
+        if (stopRequested_) {
+            stopRequested_ = false;
+            return StopReason::Requested;
+        }
+        if (fes_.empty()) return StopReason::NoMoreEvents;
         if (fes_.peek().arrivalTime() > limit) return StopReason::TimeLimit;
         std::unique_ptr<Message> owned;
         Message& msg = fes_.pop(owned);
         now_ = msg.arrivalTime();
         ++events_;
         msg.arrivalModule()->handleMessage(msg);
-        if (stopRequested_) return StopReason::Requested;
     }
-    return StopReason::NoMoreEvents;
 }
 
 void Simulation::finish() {

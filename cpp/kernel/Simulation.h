@@ -47,7 +47,8 @@ public:
     void initialize();
     /// Delivers events in order while their time is <= `limit`.
     StopReason run(SimTime limit = SimTime::max());
-    /// Ends run() after the event being handled.
+    /// Ends run() after the event being handled; called outside an event (e.g. from initialize()),
+    /// the next run() returns before delivering any.
     void stop() { stopRequested_ = true; }
     /// finish() on every initialized module, in the order they were added; runs once.
     void finish();

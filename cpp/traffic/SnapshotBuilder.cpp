@@ -1,16 +1,9 @@
 #include "traffic/SnapshotBuilder.h"
 
 #include <libsumo/Lane.h>
-#include <libsumo/TraCIConstants.h>
 #include <libsumo/Vehicle.h>
 
 namespace sbsim::traffic {
-
-namespace {
-const std::vector<int> kSubscribedVariables = {libsumo::VAR_POSITION,     libsumo::VAR_SPEED,
-                                               libsumo::VAR_ANGLE,        libsumo::VAR_ACCELERATION,
-                                               libsumo::VAR_LANE_ID,      libsumo::VAR_MAXSPEED};
-}  // namespace
 
 std::int32_t SnapshotBuilder::intern(const std::string& s) {
     const auto [it, inserted] = internIndex_.try_emplace(s, static_cast<std::int32_t>(strings_.size()));
@@ -19,27 +12,27 @@ std::int32_t SnapshotBuilder::intern(const std::string& s) {
 }
 
 std::int32_t SnapshotBuilder::roadOfLane(std::int32_t lane) {
-    const auto it = laneRoad_.find(lane);
-    if (it != laneRoad_.end()) return it->second;
-    // A teleporting vehicle has no lane: its road is empty as well.
-    const std::string& laneId = strings_[lane];
-    const std::int32_t road = intern(laneId.empty() ? std::string() : libsumo::Lane::getEdgeID(laneId));
-    laneRoad_.emplace(lane, road);
-    return road;
+    if (lane >= static_cast<std::int32_t>(laneRoad_.size())) laneRoad_.resize(lane + 1, -1);
+    if (laneRoad_[lane] < 0) {
+        // A teleporting vehicle has no lane: its road is empty as well.
+        const std::string laneId = strings_[lane];
+        laneRoad_[lane] = intern(laneId.empty() ? std::string() : libsumo::Lane::getEdgeID(laneId));
+    }
+    return laneRoad_[lane];
 }
 
 void SnapshotBuilder::addVehicles(const std::vector<std::string>& ids) {
     for (const std::string& id : ids) {
-        Constants c{libsumo::Vehicle::getLength(id), libsumo::Vehicle::getWidth(id),
-                    intern(libsumo::Vehicle::getTypeID(id))};
-        if (running_.insert_or_assign(id, c).second && method_ == Method::Subscriptions) {
-            libsumo::Vehicle::subscribe(id, kSubscribedVariables);
-        }
+        Record r{libsumo::Vehicle::getLength(id), libsumo::Vehicle::getWidth(id),
+                 intern(libsumo::Vehicle::getTypeID(id))};
+        running_.insert_or_assign(id, std::move(r));
     }
+    orderStale_ = orderStale_ || !ids.empty();
 }
 
 void SnapshotBuilder::removeVehicles(const std::vector<std::string>& ids) {
     for (const std::string& id : ids) running_.erase(id);
+    orderStale_ = orderStale_ || !ids.empty();
 }
 
 void SnapshotBuilder::resize(VehicleSnapshot& out, std::size_t n) const {
@@ -58,18 +51,22 @@ void SnapshotBuilder::resize(VehicleSnapshot& out, std::size_t n) const {
 }
 
 void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
+    if (orderStale_) {
+        order_.clear();
+        order_.reserve(running_.size());
+        for (auto& [id, record] : running_) order_.emplace_back(&id, &record);
+        orderStale_ = false;
+    }
     out.time_ = time;
-    resize(out, running_.size());
-    const libsumo::SubscriptionResults results =
-        method_ == Method::Subscriptions ? libsumo::Vehicle::getAllSubscriptionResults() : libsumo::SubscriptionResults();
-    Eigen::Index i = 0;
-    for (const auto& [id, c] : running_) {
-        if (out.ids_[i] != id) out.ids_[i] = id;  // most ids keep their slot between steps: no reallocation
-        out.length_[i] = c.length;
-        out.width_[i] = c.width;
-        out.type_[i] = c.type;
-        std::int32_t lane = 0;
-        if (method_ == Method::Getters) {
+    resize(out, order_.size());
+
+    // Independent per vehicle: each index is written by exactly one thread.
+    parallel_.run(order_.size(), [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::string& id = *order_[k].first;
+            Record& r = *order_[k].second;
+            const auto i = static_cast<Eigen::Index>(k);
+            if (out.ids_[k] != id) out.ids_[k] = id;  // most ids keep their slot: no reallocation
             const libsumo::TraCIPosition p = libsumo::Vehicle::getPosition(id);
             out.position_(0, i) = p.x;
             out.position_(1, i) = p.y;
@@ -77,25 +74,29 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
             out.angle_[i] = libsumo::Vehicle::getAngle(id);
             out.acceleration_[i] = libsumo::Vehicle::getAcceleration(id);
             out.maxSpeed_[i] = libsumo::Vehicle::getMaxSpeed(id);
-            lane = intern(libsumo::Vehicle::getLaneID(id));
-        } else {
-            const libsumo::TraCIResults& r = results.at(id);
-            const auto& p = static_cast<const libsumo::TraCIPosition&>(*r.at(libsumo::VAR_POSITION));
-            out.position_(0, i) = p.x;
-            out.position_(1, i) = p.y;
-            const auto value = [&](int var) { return static_cast<const libsumo::TraCIDouble&>(*r.at(var)).value; };
-            out.speed_[i] = value(libsumo::VAR_SPEED);
-            out.angle_[i] = value(libsumo::VAR_ANGLE);
-            out.acceleration_[i] = value(libsumo::VAR_ACCELERATION);
-            out.maxSpeed_[i] = value(libsumo::VAR_MAXSPEED);
-            lane = intern(static_cast<const libsumo::TraCIString&>(*r.at(libsumo::VAR_LANE_ID)).value);
+            out.length_[i] = r.length;
+            out.width_[i] = r.width;
+            out.type_[k] = r.type;
+            std::string lane = libsumo::Vehicle::getLaneID(id);
+            if (lane != r.lane || r.laneIndex < 0) {
+                r.lane = std::move(lane);
+                r.laneIndex = -1;
+            }
         }
-        out.lane_[i] = lane;
-        out.road_[i] = roadOfLane(lane);
-        ++i;
+    });
+    // Interning touches shared tables: only for the few vehicles that changed lane, on one thread.
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+        Record& r = *order_[k].second;
+        if (r.laneIndex < 0) {
+            r.laneIndex = intern(r.lane);
+            r.road = roadOfLane(r.laneIndex);
+        }
+        out.lane_[k] = r.laneIndex;
+        out.road_[k] = r.road;
     }
     // Interned strings only ever grow: append the new ones.
-    out.strings_.insert(out.strings_.end(), strings_.begin() + static_cast<std::ptrdiff_t>(out.strings_.size()), strings_.end());
+    out.strings_.insert(out.strings_.end(), strings_.begin() + static_cast<std::ptrdiff_t>(out.strings_.size()),
+                        strings_.end());
 }
 
 }  // namespace sbsim::traffic

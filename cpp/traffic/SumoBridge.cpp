@@ -43,7 +43,7 @@ const kernel::SignalId SumoBridge::arrivedSignal = kernel::registerSignal("vehic
 const kernel::SignalId SumoBridge::stepSignal = kernel::registerSignal("sumoStep");
 
 SumoBridge::SumoBridge(SumoSettings settings)
-    : kernel::Module("sumo"), settings_(std::move(settings)), builder_(settings_.snapshotMethod) {
+    : kernel::Module("sumo"), settings_(std::move(settings)), builder_(settings_.threads) {
     stepMessage_.setPriority(kStepPriority);
 }
 

@@ -20,7 +20,7 @@ struct SumoSettings {
     std::optional<std::int64_t> seed;       ///< SUMO's --seed
     std::optional<kernel::SimTime> end;     ///< default: the configuration's end, else until no vehicle is left
     bool quiet = false;                     ///< also silences SUMO's warnings
-    SnapshotBuilder::Method snapshotMethod = SnapshotBuilder::Method::Getters;
+    unsigned threads = 0;                   ///< threads reading the snapshot; 0 = all cores
 };
 
 /// Raised when SUMO refuses the configuration; carries SUMO's own message.

@@ -15,12 +15,12 @@ double VehicleController::maxSpeed() const { return Vehicle::getMaxSpeed(id_); }
 double VehicleController::emergencyDecel() const { return Vehicle::getEmergencyDecel(id_); }
 int VehicleController::speedMode() const { return Vehicle::getSpeedMode(id_); }
 
-void VehicleController::setMaxSpeed(double mps) const { Vehicle::setMaxSpeed(id_, mps); }
-void VehicleController::setSpeed(double mps) const { Vehicle::setSpeed(id_, mps); }
-void VehicleController::slowDown(double mps, double seconds) const { Vehicle::slowDown(id_, mps, seconds); }
-void VehicleController::setSpeedMode(int mode) const { Vehicle::setSpeedMode(id_, mode); }
-void VehicleController::changeLane(int laneIndex, double seconds) const { Vehicle::changeLane(id_, laneIndex, seconds); }
-void VehicleController::changeLaneRelative(int offset, double seconds) const {
+void VehicleController::setMaxSpeed(double mps) { Vehicle::setMaxSpeed(id_, mps); }
+void VehicleController::setSpeed(double mps) { Vehicle::setSpeed(id_, mps); }
+void VehicleController::slowDown(double mps, double seconds) { Vehicle::slowDown(id_, mps, seconds); }
+void VehicleController::setSpeedMode(int mode) { Vehicle::setSpeedMode(id_, mode); }
+void VehicleController::changeLane(int laneIndex, double seconds) { Vehicle::changeLane(id_, laneIndex, seconds); }
+void VehicleController::changeLaneRelative(int offset, double seconds) {
     Vehicle::changeLaneRelative(id_, offset, seconds);
 }
 

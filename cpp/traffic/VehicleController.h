@@ -2,36 +2,36 @@
 
 #include <string>
 
-#include "traffic/VehicleSnapshot.h"
-
 namespace sbsim::traffic {
 
 /// Commands and live queries for one vehicle, forwarded to libsumo::Vehicle. Effects and services
-/// act on vehicles only through this class, so every SUMO command has one place to look.
+/// act on vehicles only through this class, so every SUMO command has one place to look. The
+/// methods are virtual so unit tests can stand a model vehicle in for SUMO's.
 class VehicleController {
 public:
     explicit VehicleController(std::string id) : id_(std::move(id)) {}
+    virtual ~VehicleController() = default;
 
     const std::string& id() const { return id_; }
 
     // Live values, asked of SUMO now (not the step's snapshot).
-    std::string typeId() const;
-    std::string roadId() const;
-    std::string laneId() const;
-    int laneIndex() const;
-    double speed() const;
-    double maxSpeed() const;
-    double emergencyDecel() const;
-    int speedMode() const;
+    virtual std::string typeId() const;
+    virtual std::string roadId() const;
+    virtual std::string laneId() const;
+    virtual int laneIndex() const;
+    virtual double speed() const;
+    virtual double maxSpeed() const;
+    virtual double emergencyDecel() const;
+    virtual int speedMode() const;
 
-    void setMaxSpeed(double mps) const;
+    virtual void setMaxSpeed(double mps);
     /// Holds the vehicle at `mps`; a negative value hands speed control back to SUMO.
-    void setSpeed(double mps) const;
+    virtual void setSpeed(double mps);
     /// Changes speed linearly to `mps` over `seconds`.
-    void slowDown(double mps, double seconds) const;
-    void setSpeedMode(int mode) const;
-    void changeLane(int laneIndex, double seconds) const;
-    void changeLaneRelative(int offset, double seconds) const;
+    virtual void slowDown(double mps, double seconds);
+    virtual void setSpeedMode(int mode);
+    virtual void changeLane(int laneIndex, double seconds);
+    virtual void changeLaneRelative(int offset, double seconds);
 
 private:
     std::string id_;

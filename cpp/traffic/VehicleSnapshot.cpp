@@ -1,6 +1,8 @@
 #include "traffic/VehicleSnapshot.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <unordered_map>
 
 namespace sbsim::traffic {
 
@@ -9,6 +11,52 @@ std::optional<VehicleSnapshot::Index> VehicleSnapshot::indexOf(std::string_view 
                                      [](const std::string& a, std::string_view b) { return std::string_view(a) < b; });
     if (it == ids_.end() || *it != id) return std::nullopt;
     return static_cast<Index>(it - ids_.begin());
+}
+
+}  // namespace sbsim::traffic
+
+namespace sbsim::traffic {
+
+void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time) {
+    std::sort(vehicles.begin(), vehicles.end(), [](const Vehicle& a, const Vehicle& b) { return a.id < b.id; });
+    for (std::size_t i = 1; i < vehicles.size(); ++i) {
+        if (vehicles[i].id == vehicles[i - 1].id) throw std::invalid_argument("duplicate vehicle id '" + vehicles[i].id + "'");
+    }
+    const auto n = static_cast<Eigen::Index>(vehicles.size());
+    time_ = time;
+    ids_.clear();
+    strings_.clear();
+    road_.clear();
+    lane_.clear();
+    type_.clear();
+    position_.resize(2, n);
+    speed_.resize(n);
+    angle_.resize(n);
+    acceleration_.resize(n);
+    length_.resize(n);
+    width_.resize(n);
+    maxSpeed_.resize(n);
+    std::unordered_map<std::string, std::int32_t> interned;
+    const auto intern = [&](const std::string& s) {
+        const auto [it, inserted] = interned.try_emplace(s, static_cast<std::int32_t>(strings_.size()));
+        if (inserted) strings_.push_back(s);
+        return it->second;
+    };
+    for (Eigen::Index i = 0; i < n; ++i) {
+        Vehicle& v = vehicles[i];
+        position_(0, i) = v.x;
+        position_(1, i) = v.y;
+        speed_[i] = v.speed;
+        angle_[i] = v.angle;
+        acceleration_[i] = v.acceleration;
+        length_[i] = v.length;
+        width_[i] = v.width;
+        maxSpeed_[i] = v.maxSpeed;
+        road_.push_back(intern(v.road));
+        lane_.push_back(intern(v.lane));
+        type_.push_back(intern(v.type));
+        ids_.push_back(std::move(v.id));
+    }
 }
 
 }  // namespace sbsim::traffic

@@ -41,6 +41,16 @@ public:
     const std::string& laneId(Index i) const { return strings_[lane_[i]]; }
     const std::string& typeId(Index i) const { return strings_[type_[i]]; }
 
+    /// One vehicle's values, for building a snapshot by hand (tests, tools); SUMO runs fill it directly.
+    struct Vehicle {
+        std::string id;
+        double x = 0, y = 0, speed = 0, angle = 0, acceleration = 0;
+        double length = 5, width = 1.8, maxSpeed = 50;
+        std::string road, lane, type = "car";
+    };
+    /// Replaces the content with `vehicles` (any order; stored in ascending id order) at `time`.
+    void assign(std::vector<Vehicle> vehicles, kernel::SimTime time);
+
 private:
     friend class SnapshotBuilder;
 

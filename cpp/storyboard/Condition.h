@@ -1,0 +1,35 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string_view>
+
+#include "storyboard/ConditionResult.h"
+#include "storyboard/EvaluationContext.h"
+
+namespace sbsim::storyboard {
+
+/// A node of a story's condition tree. A condition object may be shared by several stories (and
+/// several places of one tree); it then shares its state, as in Artery. Per-vehicle state is keyed
+/// by vehicle id and dropped by forget() when the vehicle leaves.
+class Condition {
+public:
+    virtual ~Condition() = default;
+
+    /// Evaluates the condition for the ego vehicle at `ego` in ctx.snapshot().
+    virtual ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) = 0;
+
+    /// Called once per step, before any test() of that step (vectorised conditions work here).
+    virtual void prepare(const EvaluationContext& /*ctx*/) {}
+    /// The vehicle left the simulation: drop whatever is kept for it.
+    virtual void forget(std::string_view /*vehicleId*/) {}
+    /// The radius (m) this condition searches neighbours in, if it uses the neighbour grid.
+    virtual std::optional<double> neighbourRadius() const { return std::nullopt; }
+    /// Calls `visit` on each direct child (And/Or), so the board can reach every node of a tree.
+    virtual void forEachChild(const std::function<void(Condition&)>& /*visit*/) {}
+};
+
+using ConditionPtr = std::shared_ptr<Condition>;
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "storyboard/ConditionResult.h"
+#include "storyboard/EffectStack.h"
+#include "traffic/VehicleController.h"
+
+namespace sbsim::storyboard {
+
+class Story;
+
+/// What an effect may act on when its story activates or deactivates for one vehicle.
+class EffectScope {
+public:
+    virtual ~EffectScope() = default;
+    virtual const Story& story() const = 0;
+    virtual const std::string& vehicleId() const = 0;
+    virtual traffic::VehicleController& vehicle() = 0;
+    /// The vehicle's composition of built-in effects.
+    virtual EffectStack& stack() = 0;
+    /// Identifies this activation of this effect (for EffectStack::remove).
+    virtual EffectStack::Token token() const = 0;
+    /// The condition's other vehicles at activation, ascending ids.
+    virtual const std::vector<std::string>& others() const = 0;
+    /// Emits a StoryboardSignal for this vehicle (and logs it).
+    virtual void emitSignal(const std::string& cause) = 0;
+};
+
+/// An effect of a story (Artery's EffectFactory role): apply() when the story activates for a
+/// vehicle, remove() when it deactivates because its condition turned false. When a vehicle
+/// leaves the simulation nothing is called: there is nothing left to command.
+class Effect {
+public:
+    virtual ~Effect() = default;
+    virtual void apply(EffectScope& scope) = 0;
+    virtual void remove(EffectScope& scope) = 0;
+};
+
+using EffectPtr = std::shared_ptr<Effect>;
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,74 @@
+#include "storyboard/EffectStack.h"
+
+#include <algorithm>
+
+namespace sbsim::storyboard {
+
+std::optional<double> EffectStack::effectiveCap() const {
+    if (caps_.empty()) return std::nullopt;
+    return caps_.back().second;
+}
+
+std::optional<EffectStack::Hold> EffectStack::effectiveHold() const {
+    if (holds_.empty()) return std::nullopt;
+    return holds_.back().second;
+}
+
+void EffectStack::pushSpeedCap(Token token, double mps) {
+    const auto before = effectiveCap();
+    if (!before) recordedMaxSpeed_ = vehicle_->maxSpeed();
+    caps_.emplace_back(token, mps);
+    applyCap(before);
+}
+
+void EffectStack::pushHold(Token token, Hold hold) {
+    const auto before = effectiveHold();
+    holds_.emplace_back(token, hold);
+    applyHold(before);
+}
+
+void EffectStack::remove(Token token) {
+    const auto matches = [token](const auto& entry) { return entry.first == token; };
+    if (const auto it = std::find_if(caps_.begin(), caps_.end(), matches); it != caps_.end()) {
+        const auto before = effectiveCap();
+        caps_.erase(it);
+        applyCap(before);
+    } else if (const auto h = std::find_if(holds_.begin(), holds_.end(), matches); h != holds_.end()) {
+        const auto before = effectiveHold();
+        holds_.erase(h);
+        applyHold(before);
+    }
+}
+
+void EffectStack::applyCap(std::optional<double> before) {
+    const auto now = effectiveCap();
+    if (now == before) return;
+    vehicle_->setMaxSpeed(now ? *now : recordedMaxSpeed_);
+}
+
+void EffectStack::applyHold(std::optional<Hold> before) {
+    const auto now = effectiveHold();
+    if (now == before) return;
+    if (!now) {
+        vehicle_->setSpeed(-1);
+        if (recordedSpeedMode_) vehicle_->setSpeedMode(*recordedSpeedMode_);
+        recordedSpeedMode_.reset();
+    } else if (*now == Hold::Stop) {
+        // From EmergencyStop: give the vehicle its own speed checks back, then hold it.
+        if (recordedSpeedMode_) vehicle_->setSpeedMode(*recordedSpeedMode_);
+        recordedSpeedMode_.reset();
+        vehicle_->setSpeed(0);
+    } else {
+        recordedSpeedMode_ = vehicle_->speedMode();
+        vehicle_->setSpeedMode(0);
+        const double v = vehicle_->speed();
+        const double decel = vehicle_->emergencyDecel();
+        if (v > 0 && decel > 0) {
+            vehicle_->slowDown(0, v / decel);
+        } else {
+            vehicle_->setSpeed(0);
+        }
+    }
+}
+
+}  // namespace sbsim::storyboard

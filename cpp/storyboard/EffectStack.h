@@ -1,0 +1,47 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "traffic/VehicleController.h"
+
+namespace sbsim::storyboard {
+
+/// One vehicle's active built-in effects, composed per domain so that the vehicle always behaves
+/// as if only the currently active stories had ever acted (Artery's stack restores in the wrong
+/// order when stories end out of order):
+/// - max speed: the most recently activated cap rules; the live max speed is recorded when the
+///   first cap arrives and restored when the last one leaves;
+/// - speed hold: the most recently activated Stop or EmergencyStop rules; the speed mode is
+///   recorded for an EmergencyStop and restored when handing over to Stop or releasing.
+/// A command goes to SUMO only when a domain's effective value changes.
+class EffectStack {
+public:
+    using Token = std::uint64_t;  ///< identifies one effect activation
+    enum class Hold { Stop, EmergencyStop };
+
+    explicit EffectStack(traffic::VehicleController& vehicle) : vehicle_(&vehicle) {}
+
+    void pushSpeedCap(Token token, double mps);
+    void pushHold(Token token, Hold hold);
+    /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
+    void remove(Token token);
+
+    bool empty() const { return caps_.empty() && holds_.empty(); }
+    std::optional<double> effectiveCap() const;
+    std::optional<Hold> effectiveHold() const;
+
+private:
+    void applyCap(std::optional<double> before);
+    void applyHold(std::optional<Hold> before);
+
+    traffic::VehicleController* vehicle_;
+    std::vector<std::pair<Token, double>> caps_;  // activation order
+    std::vector<std::pair<Token, Hold>> holds_;   // activation order
+    double recordedMaxSpeed_ = 0;
+    std::optional<int> recordedSpeedMode_;
+};
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,19 @@
+#include "storyboard/Story.h"
+
+#include <stdexcept>
+
+namespace sbsim::storyboard {
+
+Story::Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name)
+    : condition_(std::move(condition)), effects_(std::move(effects)) {
+    if (!condition_) throw std::invalid_argument("Story needs a condition, got None");
+    for (const EffectPtr& e : effects_) {
+        if (!e) throw std::invalid_argument("Story effects must not contain None");
+    }
+    if (name) {
+        name_ = *name;
+        explicitName_ = true;
+    }
+}
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "storyboard/Condition.h"
+#include "storyboard/Effect.h"
+
+namespace sbsim::storyboard {
+
+/// A condition tree and the effects applied to each vehicle while the tree holds for it.
+class Story {
+public:
+    /// Throws std::invalid_argument for a null condition or effect.
+    Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name = std::nullopt);
+
+    Condition& condition() const { return *condition_; }
+    const ConditionPtr& conditionPtr() const { return condition_; }
+    const std::vector<EffectPtr>& effects() const { return effects_; }
+    /// The given name, or "story<N>" with N the registration index once registered.
+    const std::string& name() const { return name_; }
+    bool hasExplicitName() const { return explicitName_; }
+
+    std::uint64_t activations() const { return activations_; }
+
+private:
+    friend class Storyboard;
+    ConditionPtr condition_;
+    std::vector<EffectPtr> effects_;
+    std::string name_;
+    bool explicitName_ = false;
+    std::uint64_t activations_ = 0;
+};
+
+using StoryPtr = std::shared_ptr<Story>;
+
+}  // namespace sbsim::storyboard

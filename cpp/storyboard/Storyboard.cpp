@@ -1,0 +1,187 @@
+#include "storyboard/Storyboard.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "storyboard/StoryboardSignal.h"
+#include "traffic/SumoBridge.h"
+
+namespace sbsim::storyboard {
+
+const kernel::SignalId Storyboard::signalEmitted = kernel::registerSignal("storyboardSignal");
+
+/// The EffectScope of one (vehicle, story, effect) activation.
+class Storyboard::Scope : public EffectScope {
+public:
+    Scope(Storyboard& board, VehicleState& state, const Story& story, const std::string& id,
+          std::vector<std::string> others)
+        : board_(board), state_(state), story_(story), id_(id), others_(std::move(others)) {}
+
+    void setToken(EffectStack::Token token) { token_ = token; }
+
+    const Story& story() const override { return story_; }
+    const std::string& vehicleId() const override { return id_; }
+    traffic::VehicleController& vehicle() override { return *state_.controller; }
+    EffectStack& stack() override { return *state_.stack; }
+    EffectStack::Token token() const override { return token_; }
+    const std::vector<std::string>& others() const override { return others_; }
+    void emitSignal(const std::string& cause) override {
+        StoryboardSignal signal;
+        signal.cause = cause;
+        signal.story = story_.name();
+        signal.ego = id_;
+        signal.others = others_;
+        if (board_.log_ != nullptr) board_.log_->signal(board_.now_, story_.name(), id_, cause, others_);
+        board_.emit(signalEmitted, static_cast<const kernel::Object&>(signal));
+    }
+
+private:
+    Storyboard& board_;
+    VehicleState& state_;
+    const Story& story_;
+    const std::string& id_;
+    std::vector<std::string> others_;
+    EffectStack::Token token_ = 0;
+};
+
+Storyboard::Storyboard(std::uint64_t seed, EventLog* log)
+    : kernel::Module("storyboard"),
+      seed_(seed),
+      log_(log),
+      makeController_([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); }) {}
+
+Storyboard::~Storyboard() = default;
+
+void Storyboard::attach(kernel::Module& sumo) {
+    sumo.subscribe(traffic::SumoBridge::arrivedSignal, *this);
+    sumo.subscribe(traffic::SumoBridge::stepSignal, *this);
+}
+
+void Storyboard::receiveSignal(kernel::Module&, kernel::SignalId id, std::string_view value) {
+    if (id == traffic::SumoBridge::arrivedSignal) leftSinceStep_.emplace_back(value);
+}
+
+void Storyboard::receiveSignal(kernel::Module&, kernel::SignalId id, const kernel::Object& value) {
+    if (id != traffic::SumoBridge::stepSignal) return;
+    const auto& snapshot = dynamic_cast<const traffic::VehicleSnapshot&>(value);
+    update(snapshot, std::move(leftSinceStep_));
+    leftSinceStep_.clear();
+}
+
+void Storyboard::collectConditions(Condition& root) {
+    if (!knownConditions_.insert(&root).second) return;  // shared node: visited once
+    conditions_.push_back(&root);
+    if (const auto r = root.neighbourRadius()) neighbourRadius_ = std::max(neighbourRadius_.value_or(0.0), *r);
+    root.forEachChild([this](Condition& child) { collectConditions(child); });
+}
+
+void Storyboard::registerStory(StoryPtr story) {
+    if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
+    if (!story->explicitName_) story->name_ = "story" + std::to_string(stories_.size());
+    collectConditions(story->condition());
+    stories_.push_back(std::move(story));
+    for (auto& [id, state] : vehicles_) {
+        state.applied.resize(stories_.size());
+        state.active.resize(stories_.size());
+    }
+}
+
+std::shared_ptr<RandomStream> Storyboard::randomStream(unsigned k) {
+    auto& stream = streams_[k];
+    if (!stream) stream = std::make_shared<RandomStream>(seed_, k);
+    return stream;
+}
+
+bool Storyboard::isActive(const std::string& vehicle, const Story& story) const {
+    const auto it = vehicles_.find(vehicle);
+    if (it == vehicles_.end()) return false;
+    for (std::size_t s = 0; s < stories_.size(); ++s) {
+        if (stories_[s].get() == &story) return it->second.active[s];
+    }
+    return false;
+}
+
+Storyboard::VehicleState& Storyboard::stateFor(const std::string& id) {
+    auto [it, inserted] = vehicles_.try_emplace(id);
+    VehicleState& state = it->second;
+    if (inserted) {
+        state.controller = makeController_(id);
+        state.stack = std::make_unique<EffectStack>(*state.controller);
+        state.applied.resize(stories_.size());
+        state.active.resize(stories_.size());
+    }
+    return state;
+}
+
+void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left) {
+    now_ = snapshot.time();
+    std::sort(left.begin(), left.end());
+    for (const std::string& id : left) {
+        if (const auto it = vehicles_.find(id); it != vehicles_.end()) {
+            for (std::size_t s = 0; s < stories_.size(); ++s) {
+                if (it->second.active[s] && log_ != nullptr) log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
+            }
+            vehicles_.erase(it);
+        }
+        for (Condition* c : conditions_) c->forget(id);
+    }
+
+    if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 1.0));
+    const EvaluationContext ctx(snapshot, grid_);
+    for (Condition* c : conditions_) c->prepare(ctx);
+
+    const auto& ids = snapshot.ids();
+    for (VehicleIndex i = 0; i < snapshot.size(); ++i) {
+        const std::string& id = ids[i];
+        const auto found = vehicles_.find(id);
+        VehicleState* state = found == vehicles_.end() ? nullptr : &found->second;
+        for (std::size_t s = 0; s < stories_.size(); ++s) {
+            const ConditionResult result = stories_[s]->condition().test(ctx, i);
+            const bool wasActive = state != nullptr && state->active[s];
+            if (!wasActive && result.isTrue()) {
+                if (state == nullptr) state = &stateFor(id);
+                activate(*state, s, id, result, snapshot);
+            } else if (wasActive && !result.isTrue()) {
+                deactivate(*state, s, id);
+            }
+        }
+        // A vehicle with no active story and no composed effect needs no state.
+        if (state != nullptr && state->activeCount == 0 && state->stack->empty()) vehicles_.erase(id);
+    }
+    if (log_ != nullptr) log_->flush();
+}
+
+void Storyboard::activate(VehicleState& state, std::size_t s, const std::string& id, const ConditionResult& result,
+                          const traffic::VehicleSnapshot& snapshot) {
+    Story& story = *stories_[s];
+    state.active[s] = true;
+    ++state.activeCount;
+    ++story.activations_;
+    if (log_ != nullptr) log_->activate(now_, story.name(), id);
+    std::vector<std::string> others;
+    others.reserve(result.others().size());
+    for (const VehicleIndex o : result.others()) others.push_back(snapshot.ids()[o]);
+    Scope scope(*this, state, story, id, std::move(others));
+    for (const EffectPtr& effect : story.effects()) {
+        const EffectStack::Token token = nextToken_++;
+        scope.setToken(token);
+        effect->apply(scope);
+        state.applied[s].push_back({effect.get(), token});
+    }
+}
+
+void Storyboard::deactivate(VehicleState& state, std::size_t s, const std::string& id) {
+    Story& story = *stories_[s];
+    state.active[s] = false;
+    --state.activeCount;
+    if (log_ != nullptr) log_->deactivate(now_, story.name(), id, "condition");
+    Scope scope(*this, state, story, id, {});
+    auto& applied = state.applied[s];
+    for (auto it = applied.rbegin(); it != applied.rend(); ++it) {
+        scope.setToken(it->token);
+        it->effect->remove(scope);
+    }
+    applied.clear();
+}
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,94 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "kernel/Module.h"
+#include "storyboard/EffectStack.h"
+#include "storyboard/EventLog.h"
+#include "storyboard/RandomStream.h"
+#include "storyboard/Story.h"
+#include "traffic/NeighbourGrid.h"
+#include "traffic/VehicleController.h"
+#include "traffic/VehicleSnapshot.h"
+
+namespace sbsim::storyboard {
+
+/// Evaluates the registered stories after every SUMO step, in Artery's order: vehicles in
+/// ascending byte order of id, for each vehicle every story in registration order. A story whose
+/// condition turns true for a vehicle is activated for it (effects applied, in order); one whose
+/// condition turns false is deactivated (effects removed, in reverse order). Before that pass,
+/// every active story of every vehicle that left is deactivated with reason "vehicle_left" and
+/// its state dropped, without commands to SUMO.
+class Storyboard : public kernel::Module, private kernel::Listener {
+public:
+    /// Payload: StoryboardSignal. Emitted by SignalEffect on activation.
+    static const kernel::SignalId signalEmitted;
+
+    using ControllerFactory = std::function<std::unique_ptr<traffic::VehicleController>(const std::string& id)>;
+
+    /// `seed` seeds the random streams; `log` (optional) receives the event lines.
+    explicit Storyboard(std::uint64_t seed, EventLog* log = nullptr);
+    ~Storyboard() override;
+
+    /// Listen to `sumo`'s arrivals and steps (a SumoBridge); without this call, drive update() by hand.
+    void attach(kernel::Module& sumo);
+    /// Replaces how vehicles are commanded (default: libsumo through traffic::VehicleController).
+    void setControllerFactory(ControllerFactory factory) { makeController_ = std::move(factory); }
+
+    void registerStory(StoryPtr story);
+    const std::vector<StoryPtr>& stories() const { return stories_; }
+    /// Random stream k (Artery scripts pass the generator index); the same k gives the same stream.
+    std::shared_ptr<RandomStream> randomStream(unsigned k);
+
+    /// One evaluation pass: first the vehicles in `left` (any order), then every vehicle of `snapshot`.
+    void update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left);
+
+    bool isActive(const std::string& vehicle, const Story& story) const;
+
+private:
+    struct AppliedEffect {
+        Effect* effect;
+        EffectStack::Token token;
+    };
+    struct VehicleState {
+        std::unique_ptr<traffic::VehicleController> controller;
+        std::unique_ptr<EffectStack> stack;
+        std::vector<std::vector<AppliedEffect>> applied;  // per story; non-empty iff active
+        std::vector<bool> active;                         // per story
+        std::size_t activeCount = 0;
+    };
+    class Scope;
+
+    void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
+    void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
+
+    VehicleState& stateFor(const std::string& id);
+    void activate(VehicleState& state, std::size_t story, const std::string& id, const ConditionResult& result,
+                  const traffic::VehicleSnapshot& snapshot);
+    void deactivate(VehicleState& state, std::size_t story, const std::string& id);
+    void collectConditions(Condition& root);
+
+    std::uint64_t seed_;
+    EventLog* log_;
+    kernel::SimTime now_;
+    std::vector<StoryPtr> stories_;
+    std::vector<Condition*> conditions_;  // every distinct node of every tree, for prepare/forget
+    std::unordered_set<Condition*> knownConditions_;
+    std::optional<double> neighbourRadius_;
+    traffic::NeighbourGrid grid_;
+    std::unordered_map<std::string, VehicleState> vehicles_;  // vehicles with state (node-stable)
+    std::map<unsigned, std::shared_ptr<RandomStream>> streams_;
+    std::vector<std::string> leftSinceStep_;
+    EffectStack::Token nextToken_ = 1;
+    ControllerFactory makeController_;
+};
+
+}  // namespace sbsim::storyboard

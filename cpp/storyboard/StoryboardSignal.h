@@ -1,0 +1,19 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kernel/Object.h"
+
+namespace sbsim::storyboard {
+
+/// Emitted by a SignalEffect once, when its story activates for a vehicle: delivered to the ego
+/// vehicle's services (and to anyone subscribed to Storyboard::signalEmitted).
+struct StoryboardSignal : kernel::Object {
+    std::string cause;
+    std::string story;
+    std::string ego;
+    std::vector<std::string> others;  ///< the condition's other vehicles, ascending
+};
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,22 @@
+#include "storyboard/conditions/AndCondition.h"
+
+#include <stdexcept>
+
+namespace sbsim::storyboard {
+
+AndCondition::AndCondition(ConditionPtr a, ConditionPtr b) : a_(std::move(a)), b_(std::move(b)) {
+    if (!a_ || !b_) throw std::invalid_argument("AndCondition: operand is null");
+}
+
+ConditionResult AndCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
+    ConditionResult left = a_->test(ctx, ego);
+    if (!left) return left;
+    return ConditionResult::conjunction(left, b_->test(ctx, ego));
+}
+
+void AndCondition::forEachChild(const std::function<void(Condition&)>& visit) {
+    visit(*a_);
+    visit(*b_);
+}
+
+}  // namespace sbsim::storyboard

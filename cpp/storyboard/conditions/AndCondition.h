@@ -1,0 +1,26 @@
+#pragma once
+
+#include "storyboard/Condition.h"
+
+namespace sbsim::storyboard {
+
+/// a ∧ b. b is evaluated only when a is true, so stateful conditions on the right (Limit,
+/// Likelihood, Deferring) see only the vehicles that passed the left side, as a story author
+/// writing `a & limit` expects. Sets combine by ConditionResult::conjunction.
+class AndCondition : public Condition {
+public:
+    /// Throws std::invalid_argument for a null operand.
+    AndCondition(ConditionPtr a, ConditionPtr b);
+
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    void forEachChild(const std::function<void(Condition&)>& visit) override;
+
+    const ConditionPtr& left() const { return a_; }
+    const ConditionPtr& right() const { return b_; }
+
+private:
+    ConditionPtr a_;
+    ConditionPtr b_;
+};
+
+}  // namespace sbsim::storyboard

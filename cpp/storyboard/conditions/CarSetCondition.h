@@ -1,0 +1,23 @@
+#pragma once
+
+#include <set>
+#include <string>
+
+#include "storyboard/Condition.h"
+#include "storyboard/conditions/VehicleIdMap.h"
+
+namespace sbsim::storyboard {
+
+/// True for the vehicles whose id is in the given set.
+class CarSetCondition : public Condition {
+public:
+    explicit CarSetCondition(std::set<std::string> ids);
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    const std::set<std::string>& ids() const { return ids_; }
+
+private:
+    std::set<std::string> ids_;
+    VehicleIdSet lookup_;  // the same ids, hashed: one lookup per vehicle and step
+};
+
+}  // namespace sbsim::storyboard

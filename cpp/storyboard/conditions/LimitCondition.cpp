@@ -1,0 +1,25 @@
+#include "storyboard/conditions/LimitCondition.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace sbsim::storyboard {
+
+LimitCondition::LimitCondition(std::int64_t limit) : limit_(static_cast<std::uint64_t>(limit)) {
+    if (limit < 0) throw std::invalid_argument("LimitCondition: limit must be >= 0, not " + std::to_string(limit));
+}
+
+ConditionResult LimitCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
+    const std::string& id = ctx.snapshot().ids()[ego];
+    if (admitted_.contains(id)) return true;
+    if (admittedCount_ >= limit_) return false;
+    admitted_.insert(id);
+    ++admittedCount_;
+    return true;
+}
+
+void LimitCondition::forget(std::string_view vehicleId) {
+    if (const auto it = admitted_.find(vehicleId); it != admitted_.end()) admitted_.erase(it);
+}
+
+}  // namespace sbsim::storyboard

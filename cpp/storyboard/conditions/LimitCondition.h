@@ -1,0 +1,31 @@
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "storyboard/Condition.h"
+#include "storyboard/conditions/VehicleIdMap.h"
+
+namespace sbsim::storyboard {
+
+/// True for the first `limit` distinct vehicles that reach (are tested by) this condition, and for
+/// them only, for as long as they run. A vehicle that leaves does not free its slot.
+class LimitCondition : public Condition {
+public:
+    /// Throws std::invalid_argument for a negative limit.
+    explicit LimitCondition(std::int64_t limit);
+
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    void forget(std::string_view vehicleId) override;
+
+    std::uint64_t limit() const { return limit_; }
+    /// How many vehicles were ever admitted (never decreases).
+    std::uint64_t admittedCount() const { return admittedCount_; }
+
+private:
+    std::uint64_t limit_;
+    std::uint64_t admittedCount_ = 0;
+    VehicleIdSet admitted_;  // admitted and still running
+};
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "storyboard/Condition.h"
+
+namespace sbsim::storyboard {
+
+/// True if the ego's speed is strictly above the threshold (m/s).
+class SpeedConditionGreater : public Condition {
+public:
+    explicit SpeedConditionGreater(double mps);
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    double threshold() const { return threshold_; }
+
+private:
+    double threshold_;
+};
+
+/// True if the ego's speed is strictly below the threshold (m/s).
+class SpeedConditionLess : public Condition {
+public:
+    explicit SpeedConditionLess(double mps);
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    double threshold() const { return threshold_; }
+
+private:
+    double threshold_;
+};
+
+}  // namespace sbsim::storyboard

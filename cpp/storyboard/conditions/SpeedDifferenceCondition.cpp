@@ -1,0 +1,81 @@
+#include "storyboard/conditions/SpeedDifferenceCondition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace sbsim::storyboard {
+
+SpeedDifferenceCondition::SpeedDifferenceCondition(Direction direction, double delta, std::optional<double> distance)
+    : direction_(direction), delta_(delta), distance_(distance) {
+    if (std::isnan(delta_)) throw std::invalid_argument("SpeedDifferenceCondition: delta must not be NaN");
+    if (distance_ && !(*distance_ >= 0 && std::isfinite(*distance_))) {
+        throw std::invalid_argument("SpeedDifferenceCondition: distance must be finite and >= 0, not " +
+                                    std::to_string(*distance_));
+    }
+}
+
+void SpeedDifferenceCondition::prepare(const EvaluationContext& ctx) {
+    if (!distance_) sortBySpeed(ctx.snapshot());
+}
+
+void SpeedDifferenceCondition::sortBySpeed(const traffic::VehicleSnapshot& snapshot) {
+    const Eigen::VectorXd& speeds = snapshot.speeds();
+    bySpeed_.resize(static_cast<std::size_t>(snapshot.size()));
+    std::iota(bySpeed_.begin(), bySpeed_.end(), VehicleIndex{0});
+    std::sort(bySpeed_.begin(), bySpeed_.end(), [&](VehicleIndex a, VehicleIndex b) { return speeds[a] < speeds[b]; });
+    sortedSpeeds_.resize(bySpeed_.size());
+    for (std::size_t k = 0; k < bySpeed_.size(); ++k) sortedSpeeds_[k] = speeds[bySpeed_[k]];
+    stamp_ = SnapshotStamp::of(snapshot);
+}
+
+ConditionResult SpeedDifferenceCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
+    const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
+    if (!distance_) return testAll(snapshot, ego);
+    const Eigen::VectorXd& speeds = snapshot.speeds();
+    const double egoSpeed = speeds[ego];
+    scratch_.clear();
+    ctx.neighbours().forEachWithin(ego, *distance_, [&](VehicleIndex o) {
+        if (qualifies(egoSpeed, speeds[o])) scratch_.push_back(o);
+    });
+    std::sort(scratch_.begin(), scratch_.end());
+    return ConditionResult::ofOthers(std::vector<VehicleIndex>(scratch_.begin(), scratch_.end()));
+}
+
+ConditionResult SpeedDifferenceCondition::testAll(const traffic::VehicleSnapshot& snapshot, VehicleIndex ego) {
+    if (!(stamp_ == SnapshotStamp::of(snapshot))) sortBySpeed(snapshot);
+    const Eigen::VectorXd& speeds = snapshot.speeds();
+    const double egoSpeed = speeds[ego];
+    // The exact predicate is monotone in the other's speed (rounded subtraction is monotone), so
+    // the qualifying vehicles form one run of the speed order.
+    auto first = sortedSpeeds_.begin();
+    auto last = sortedSpeeds_.end();
+    if (direction_ == Direction::EgoFaster) {
+        last = std::partition_point(first, last, [&](double s) { return qualifies(egoSpeed, s); });
+    } else {
+        first = std::partition_point(first, last, [&](double s) { return !qualifies(egoSpeed, s); });
+    }
+    const auto count = static_cast<std::size_t>(last - first);
+    if (count == 0) return ConditionResult::ofOthers({});
+
+    std::vector<VehicleIndex> others;
+    if (count > bySpeed_.size() / 16) {
+        // Many matches: a scan in index order is cheaper than sorting them and is already sorted.
+        others.reserve(count);
+        for (VehicleIndex o = 0; o < snapshot.size(); ++o) {
+            if (o != ego && qualifies(egoSpeed, speeds[o])) others.push_back(o);
+        }
+        return ConditionResult::ofOthers(std::move(others));
+    }
+    const auto offset = first - sortedSpeeds_.begin();
+    others.reserve(count);
+    for (auto it = bySpeed_.begin() + offset, end = it + static_cast<std::ptrdiff_t>(count); it != end; ++it) {
+        if (*it != ego) others.push_back(*it);
+    }
+    std::sort(others.begin(), others.end());
+    return ConditionResult::ofOthers(std::move(others));
+}
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "storyboard/Condition.h"
+#include "storyboard/conditions/SnapshotStamp.h"
+
+namespace sbsim::storyboard {
+
+/// Common part of SpeedDifferenceConditionFaster/Slower: the set of other vehicles whose speed
+/// differs from the ego's by more than `delta` (m/s, strict) in the given direction, optionally only
+/// those within `distance` m (inclusive, through the neighbour grid).
+class SpeedDifferenceCondition : public Condition {
+public:
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    void prepare(const EvaluationContext& ctx) override;
+    std::optional<double> neighbourRadius() const override { return distance_; }
+
+    double delta() const { return delta_; }
+    std::optional<double> distance() const { return distance_; }
+
+protected:
+    enum class Direction { EgoFaster, EgoSlower };
+    /// Throws std::invalid_argument for a NaN delta or a negative or non-finite distance.
+    SpeedDifferenceCondition(Direction direction, double delta, std::optional<double> distance);
+
+private:
+    bool qualifies(double egoSpeed, double otherSpeed) const {
+        return direction_ == Direction::EgoFaster ? egoSpeed - otherSpeed > delta_ : otherSpeed - egoSpeed > delta_;
+    }
+    ConditionResult testAll(const traffic::VehicleSnapshot& snapshot, VehicleIndex ego);
+    void sortBySpeed(const traffic::VehicleSnapshot& snapshot);
+
+    Direction direction_;
+    double delta_;
+    std::optional<double> distance_;
+    // Per step, without a distance: all vehicles by ascending speed, so the qualifying ones are a
+    // prefix (ego faster) or a suffix (ego slower) found by binary search.
+    SnapshotStamp stamp_;
+    std::vector<VehicleIndex> bySpeed_;
+    std::vector<double> sortedSpeeds_;
+    std::vector<VehicleIndex> scratch_;  // reused between calls
+};
+
+/// The other vehicles the ego is faster than by more than `delta`: speed(ego) - speed(o) > delta.
+class SpeedDifferenceConditionFaster : public SpeedDifferenceCondition {
+public:
+    explicit SpeedDifferenceConditionFaster(double delta, std::optional<double> distance = std::nullopt)
+        : SpeedDifferenceCondition(Direction::EgoFaster, delta, distance) {}
+};
+
+/// The other vehicles the ego is slower than by more than `delta`: speed(o) - speed(ego) > delta.
+class SpeedDifferenceConditionSlower : public SpeedDifferenceCondition {
+public:
+    explicit SpeedDifferenceConditionSlower(double delta, std::optional<double> distance = std::nullopt)
+        : SpeedDifferenceCondition(Direction::EgoSlower, delta, distance) {}
+};
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,19 @@
+#include "storyboard/conditions/TimeCondition.h"
+
+#include <stdexcept>
+
+namespace sbsim::storyboard {
+
+TimeCondition::TimeCondition(kernel::SimTime begin, std::optional<kernel::SimTime> end)
+    : begin_(begin), end_(end.value_or(kernel::SimTime::max())) {
+    if (end_ < begin_) {
+        throw std::invalid_argument("TimeCondition: end " + end_.str() + " s is before begin " + begin_.str() + " s");
+    }
+}
+
+ConditionResult TimeCondition::test(const EvaluationContext& ctx, VehicleIndex /*ego*/) {
+    const kernel::SimTime now = ctx.now();
+    return begin_ <= now && now <= end_;
+}
+
+}  // namespace sbsim::storyboard

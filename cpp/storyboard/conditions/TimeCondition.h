@@ -1,0 +1,26 @@
+#pragma once
+
+#include <optional>
+
+#include "kernel/SimTime.h"
+#include "storyboard/Condition.h"
+
+namespace sbsim::storyboard {
+
+/// True while begin <= now <= end (end: forever when not given).
+class TimeCondition : public Condition {
+public:
+    /// Throws std::invalid_argument if end < begin.
+    TimeCondition(kernel::SimTime begin, std::optional<kernel::SimTime> end = std::nullopt);
+
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+
+    kernel::SimTime begin() const { return begin_; }
+    kernel::SimTime end() const { return end_; }
+
+private:
+    kernel::SimTime begin_;
+    kernel::SimTime end_;
+};
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,15 @@
+#include "storyboard/effects/SpeedEffect.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sbsim::storyboard {
+
+SpeedEffect::SpeedEffect(double mps) : mps_(mps) {
+    if (!std::isfinite(mps) || mps < 0) {
+        throw std::invalid_argument("SpeedEffect needs a speed >= 0 in m/s, got " + std::to_string(mps));
+    }
+}
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,46 @@
+#include "storyboard/geometry/Polygon.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace sbsim::storyboard::geometry {
+
+Polygon::Polygon(std::vector<Eigen::Vector2d> vertices) : vertices_(std::move(vertices)) {
+    if (vertices_.size() < 3) {
+        throw std::invalid_argument("a polygon needs at least 3 vertices, got " + std::to_string(vertices_.size()));
+    }
+    min_ = max_ = vertices_.front();
+    for (const Eigen::Vector2d& v : vertices_) {
+        if (!v.allFinite()) throw std::invalid_argument("polygon vertex with a non-finite coordinate");
+        min_ = min_.cwiseMin(v);
+        max_ = max_.cwiseMax(v);
+    }
+}
+
+bool Polygon::contains(const Eigen::Vector2d& p) const {
+    // Outside the box, or on it (a box edge touches the polygon only at its boundary).
+    if (!(p.x() > min_.x() && p.x() < max_.x() && p.y() > min_.y() && p.y() < max_.y())) return false;
+    bool inside = false;
+    const std::size_t n = vertices_.size();
+    for (std::size_t k = 0, prev = n - 1; k < n; prev = k++) {
+        const Eigen::Vector2d& a = vertices_[prev];
+        const Eigen::Vector2d& b = vertices_[k];
+        // On the segment a-b: collinear and within its extent. Checked first, so the crossing
+        // count below never has to decide about boundary points.
+        const double cross = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
+        if (cross == 0 && p.x() >= std::min(a.x(), b.x()) && p.x() <= std::max(a.x(), b.x()) &&
+            p.y() >= std::min(a.y(), b.y()) && p.y() <= std::max(a.y(), b.y())) {
+            return false;
+        }
+        // Crossing of a ray towards +x; the half-open rule (a.y > p.y) != (b.y > p.y) counts a
+        // vertex on the ray exactly once and skips horizontal edges.
+        if ((a.y() > p.y()) != (b.y() > p.y())) {
+            const double xCross = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+            if (p.x() < xCross) inside = !inside;
+        }
+    }
+    return inside;
+}
+
+}  // namespace sbsim::storyboard::geometry

@@ -1,0 +1,69 @@
+#include "storyboard/python/PythonCondition.h"
+
+#include <pybind11/numpy.h>
+
+#include <algorithm>
+
+#include "storyboard/python/ScriptContext.h"
+#include "storyboard/python/SnapshotView.h"
+
+namespace py = pybind11;
+
+namespace sbsim::storyboard {
+
+namespace {
+std::string className(const Condition* self) {
+    return py::str(py::type::of(py::cast(self)).attr("__name__")).cast<std::string>();
+}
+}  // namespace
+
+void PythonCondition::prepare(const EvaluationContext& ctx) {
+    try {
+        const py::function testAll = py::get_override(static_cast<const Condition*>(this), "test_all");
+        vectorised_ = static_cast<bool>(testAll);
+        if (!vectorised_) return;
+        const auto mask = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(testAll(SnapshotView{&ctx.snapshot()}));
+        if (!mask || mask.ndim() != 1 || mask.shape(0) != ctx.snapshot().size()) {
+            throw py::value_error(className(this) + ".test_all must return one boolean per vehicle (" +
+                                  std::to_string(ctx.snapshot().size()) + ")");
+        }
+        mask_.assign(mask.data(), mask.data() + mask.shape(0));
+    } catch (py::error_already_set& e) {
+        throwStoryError(e, "in " + className(this) + ".test_all");
+    }
+}
+
+ConditionResult PythonCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
+    if (vectorised_) return mask_[ego] != 0;
+    try {
+        const py::function test = py::get_override(static_cast<const Condition*>(this), "test");
+        if (!test) {
+            throw py::type_error(className(this) + " must define test(self, vehicle) or test_all(self, snapshot)");
+        }
+        const py::object result = test(VehicleView{&ctx.snapshot(), ego});
+        if (py::isinstance<py::bool_>(result)) return result.cast<bool>();
+        if (py::isinstance<py::str>(result) || !py::hasattr(result, "__iter__")) {
+            throw py::type_error(className(this) + ".test must return a bool or a set of vehicle ids, got " +
+                                 py::repr(result).cast<std::string>());
+        }
+        std::vector<VehicleIndex> others;
+        for (const py::handle id : result) {
+            if (const auto i = ctx.snapshot().indexOf(id.cast<std::string>()); i && *i != ego) others.push_back(*i);
+        }
+        std::sort(others.begin(), others.end());
+        others.erase(std::unique(others.begin(), others.end()), others.end());
+        return ConditionResult::ofOthers(std::move(others));
+    } catch (py::error_already_set& e) {
+        throwStoryError(e, "in " + className(this) + ".test for vehicle " + ctx.snapshot().ids()[ego]);
+    }
+}
+
+void PythonCondition::forget(std::string_view vehicleId) {
+    try {
+        if (const py::function f = py::get_override(static_cast<const Condition*>(this), "forget")) f(std::string(vehicleId));
+    } catch (py::error_already_set& e) {
+        throwStoryError(e, "in " + className(this) + ".forget");
+    }
+}
+
+}  // namespace sbsim::storyboard

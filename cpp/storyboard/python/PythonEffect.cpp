@@ -1,0 +1,22 @@
+#include "storyboard/python/PythonEffect.h"
+
+#include "storyboard/Story.h"
+#include "storyboard/python/ScriptContext.h"
+
+namespace py = pybind11;
+
+namespace sbsim::storyboard {
+
+void PythonEffect::call(const char* method, EffectScope& scope) {
+    const std::string where = std::string("in ") + py::str(py::type::of(py::cast(static_cast<const Effect*>(this))).attr("__name__")).cast<std::string>() +
+                              "." + method + " (story " + scope.story().name() + ", vehicle " + scope.vehicleId() + ")";
+    try {
+        const py::function f = py::get_override(static_cast<const Effect*>(this), method);
+        if (!f) throw py::type_error(std::string("custom effect must define ") + method + "(self, vehicle)");
+        f(py::cast(&scope.vehicle(), py::return_value_policy::reference));
+    } catch (py::error_already_set& e) {
+        throwStoryError(e, where);
+    }
+}
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,115 @@
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "traffic/VehicleSnapshot.h"
+
+namespace sbsim::traffic {
+
+/// A uniform grid over the vehicle positions of one snapshot, rebuilt once per step in O(n), so
+/// "who is within r metres of vehicle i" costs a few cells instead of all pairs. Used by the
+/// speed-difference and TTC conditions and by the V2X medium.
+class NeighbourGrid {
+public:
+    using Index = VehicleSnapshot::Index;
+
+    NeighbourGrid() = default;
+
+    /// Indexes `snapshot` (kept by reference until the next build) with square cells of `cellSize` m.
+    /// Throws std::invalid_argument unless cellSize is finite and > 0.
+    void build(const VehicleSnapshot& snapshot, double cellSize);
+    double cellSize() const { return cellSize_; }
+
+    /// Calls `visit(j)` for every vehicle j != i whose position is within `radius` of vehicle i's
+    /// (distance <= radius). Any radius works; radius <= cellSize() touches at most 3x3 cells.
+    /// The order of the calls is unspecified.
+    template <typename Visit>
+    void forEachWithin(Index i, double radius, Visit&& visit) const;
+
+    /// The indices of forEachWithin, in ascending order.
+    std::vector<Index> within(Index i, double radius) const;
+
+private:
+    // Cells live in a hash table rather than a dense bounding-box array: a network may span tens of
+    // kilometres while vehicles occupy a small fraction of the cells, and the table stays O(n) in
+    // size whatever the spread. Vehicles are counting-sorted by bucket, so a bucket is one
+    // contiguous run of items_; a bucket may also hold other cells (collisions), hence Item::cell.
+    struct Item {
+        double x, y;
+        std::uint64_t cell;
+        Index index;
+    };
+
+    static std::int32_t cellCoordinate(double v, double inverseCellSize) {
+        const double c = std::floor(v * inverseCellSize);
+        // Clamping (NaN to the lowest cell) keeps the mapping monotone and the cast defined.
+        if (!(c >= std::numeric_limits<std::int32_t>::min())) return std::numeric_limits<std::int32_t>::min();
+        if (c > std::numeric_limits<std::int32_t>::max()) return std::numeric_limits<std::int32_t>::max();
+        return static_cast<std::int32_t>(c);
+    }
+    static std::uint64_t cellKey(std::int32_t cx, std::int32_t cy) {
+        return (std::uint64_t{static_cast<std::uint32_t>(cx)} << 32) | static_cast<std::uint32_t>(cy);
+    }
+    std::size_t bucketOf(std::int32_t cx, std::int32_t cy) const {
+        const std::uint64_t h = std::uint64_t{static_cast<std::uint32_t>(cx)} * 0x9E3779B97F4A7C15ULL ^
+                                std::uint64_t{static_cast<std::uint32_t>(cy)} * 0xC2B2AE3D27D4EB4FULL;
+        return static_cast<std::size_t>(h >> shift_);
+    }
+
+    const VehicleSnapshot* snapshot_ = nullptr;
+    double cellSize_ = 0;
+    double inverseCellSize_ = 0;
+    unsigned shift_ = 63;                    // 64 - log2(bucket count)
+    std::vector<std::int32_t> bucketStart_;  // bucket b is items_[bucketStart_[b], bucketStart_[b + 1])
+    std::vector<Item> items_;                // ascending vehicle index within a bucket
+    std::vector<std::uint32_t> bucketScratch_;  // per vehicle, kept to avoid reallocating each step
+};
+
+template <typename Visit>
+void NeighbourGrid::forEachWithin(Index i, double radius, Visit&& visit) const {
+    if (snapshot_ == nullptr || !(radius >= 0)) return;
+    const Eigen::Matrix2Xd& positions = snapshot_->positions();
+    const double x = positions(0, i);
+    const double y = positions(1, i);
+    const double r2 = radius * radius;
+    const auto near = [&](double px, double py) {
+        const double dx = px - x;
+        const double dy = py - y;
+        return dx * dx + dy * dy <= r2;
+    };
+    const auto n = static_cast<std::int64_t>(items_.size());
+
+    // The cell range is widened by a hair so that rounding in x - r cannot drop a point that the
+    // distance test accepts.
+    const double reach = radius * (1 + 1e-12) + 1e-9;
+    const std::int32_t cx0 = cellCoordinate(x - reach, inverseCellSize_);
+    const std::int32_t cx1 = cellCoordinate(x + reach, inverseCellSize_);
+    const std::int32_t cy0 = cellCoordinate(y - reach, inverseCellSize_);
+    const std::int32_t cy1 = cellCoordinate(y + reach, inverseCellSize_);
+    const std::int64_t columns = std::int64_t{cx1} - cx0 + 1;
+    const std::int64_t rows = std::int64_t{cy1} - cy0 + 1;
+    if (columns > n || rows > n || columns * rows > n) {
+        // A radius far beyond the cell size: visiting the cells would cost more than all vehicles.
+        for (Index j = 0; j < static_cast<Index>(n); ++j) {
+            if (j != i && near(positions(0, j), positions(1, j))) visit(j);
+        }
+        return;
+    }
+    for (std::int64_t cx = cx0; cx <= cx1; ++cx) {
+        for (std::int64_t cy = cy0; cy <= cy1; ++cy) {
+            const auto icx = static_cast<std::int32_t>(cx);
+            const auto icy = static_cast<std::int32_t>(cy);
+            const std::uint64_t key = cellKey(icx, icy);
+            const std::size_t b = bucketOf(icx, icy);
+            const Item* const end = items_.data() + bucketStart_[b + 1];
+            for (const Item* it = items_.data() + bucketStart_[b]; it != end; ++it) {
+                if (it->cell == key && it->index != i && near(it->x, it->y)) visit(it->index);
+            }
+        }
+    }
+}
+
+}  // namespace sbsim::traffic

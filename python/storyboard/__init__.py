@@ -1,0 +1,95 @@
+"""sbsim's storyboard package.
+
+Inside a story run by ``sbsim --story``, ``import storyboard`` gives Artery's story API
+(conditions, effects, ``Story``, ``Coord``, ``SimTime``), implemented in C++, plus Pythonic helpers
+(:func:`all_of`, :func:`any_of`, :func:`seconds`, ...). Everywhere, :mod:`storyboard.runner` runs the
+``sbsim`` program and reads its outputs.
+"""
+
+from __future__ import annotations
+
+from functools import reduce
+from typing import TYPE_CHECKING, Any
+
+__version__ = "0.1.0"
+
+try:  # the C++ core exists only inside the sbsim program
+    from _sbsim import (  # type: ignore[import-not-found]
+        AndCondition,
+        CarSetCondition,
+        Condition,
+        Coord,
+        DeferringCondition,
+        Effect,
+        EmergencyStopEffect,
+        LikelihoodCondition,
+        LimitCondition,
+        OrCondition,
+        PolygonCondition,
+        RandomNumberGenerator,
+        SignalEffect,
+        SignalEffectFactory,
+        SimTime,
+        Snapshot,
+        SpeedConditionGreater,
+        SpeedConditionLess,
+        SpeedDifferenceConditionFaster,
+        SpeedDifferenceConditionSlower,
+        SpeedEffect,
+        SpeedEffectFactory,
+        StopEffect,
+        StopEffectFactory,
+        Story,
+        Storyboard,
+        TimeCondition,
+        TtcCondition,
+        Vehicle,
+        VehicleController,
+    )
+
+    IN_SBSIM = True
+except ImportError:  # imported by a plain Python (tests, tools, the runner)
+    IN_SBSIM = False
+
+if TYPE_CHECKING:
+    from _sbsim import Condition as _Condition  # noqa: F401
+
+
+def _require_sbsim(name: str) -> None:
+    if not IN_SBSIM:
+        raise RuntimeError(f"storyboard.{name} is only available inside a story run by sbsim --story")
+
+
+def all_of(*conditions: Any) -> Any:
+    """``AndCondition`` over any number of conditions, evaluated left to right, lazily."""
+    _require_sbsim("all_of")
+    if not conditions:
+        raise ValueError("all_of needs at least one condition")
+    return reduce(AndCondition, conditions)
+
+
+def any_of(*conditions: Any) -> Any:
+    """``OrCondition`` over any number of conditions, evaluated left to right, lazily."""
+    _require_sbsim("any_of")
+    if not conditions:
+        raise ValueError("any_of needs at least one condition")
+    return reduce(OrCondition, conditions)
+
+
+def seconds(x: float) -> Any:
+    """A ``SimTime`` of ``x`` seconds (Artery's ``timeline.seconds``)."""
+    _require_sbsim("seconds")
+    return SimTime(x)
+
+
+def milliseconds(x: float) -> Any:
+    """A ``SimTime`` of ``x`` milliseconds (Artery's ``timeline.milliseconds``)."""
+    _require_sbsim("milliseconds")
+    return SimTime(x / 1000.0)
+
+
+def __getattr__(name: str) -> Any:
+    # Only reached for names not defined above: outside sbsim, say why instead of a bare AttributeError.
+    if not IN_SBSIM and name[:1].isupper():
+        _require_sbsim(name)
+    raise AttributeError(f"module 'storyboard' has no attribute {name!r}")

@@ -1,0 +1,79 @@
+"""Run the ``sbsim`` program from Python and read what it writes."""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import sys
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+
+def executable() -> Path:
+    """The ``sbsim`` installed beside this Python (its ``bin/``), else the one on ``PATH``."""
+    beside = Path(sys.prefix) / "bin" / "sbsim"
+    if beside.is_file() and os.access(beside, os.X_OK):
+        return beside
+    found = shutil.which("sbsim")
+    if found is None:
+        raise FileNotFoundError("sbsim is not installed: run ./sbsim once, or pip install .")
+    return Path(found)
+
+
+@dataclass(frozen=True)
+class RunResult:
+    returncode: int
+    stdout: str
+    stderr: str
+
+    def summary(self) -> dict[str, str]:
+        """The final summary's ``key: value`` lines."""
+        out: dict[str, str] = {}
+        for line in self.stdout.splitlines():
+            key, sep, value = line.partition(": ")
+            if sep and not key.startswith("sbsim "):
+                out[key] = value
+        return out
+
+
+def run(
+    sumocfg: str | os.PathLike[str] | None = None,
+    *,
+    story: str | os.PathLike[str] | None = None,
+    events: str | os.PathLike[str] | None = None,
+    end: float | None = None,
+    seed: int | None = None,
+    sumo_options: Sequence[str] = (),
+    quiet: bool = False,
+    extra: Sequence[str] = (),
+    timeout: float | None = None,
+) -> RunResult:
+    """Runs ``sbsim`` with these options and returns its exit code and output (never raises on failure)."""
+    args: list[str] = [str(executable())]
+    if sumocfg is not None:
+        args += ["--sumocfg", os.fspath(sumocfg)]
+    if story is not None:
+        args += ["--story", os.fspath(story)]
+    if events is not None:
+        args += ["--events", os.fspath(events)]
+    if end is not None:
+        args += ["--end", repr(end)]
+    if seed is not None:
+        args += ["--seed", str(seed)]
+    for option in sumo_options:
+        args += ["--sumo-option", option]
+    if quiet:
+        args.append("--quiet")
+    args += list(extra)
+    done = subprocess.run(args, capture_output=True, text=True, timeout=timeout, check=False)
+    return RunResult(done.returncode, done.stdout, done.stderr)
+
+
+def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+    """The events of an ``--events`` file, one dict per line (``pandas.read_json(path, lines=True)`` works too)."""
+    with open(path, encoding="utf-8") as f:
+        return [json.loads(line) for line in f if line.strip()]

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# One-time and incremental set-up shared by ./sbsim and ./run-tests: Debian packages, the .venv,
+# the Python dependencies, and an incremental `pip install` of sbsim whenever a source changed.
+# Source it; it defines SBSIM_ROOT and VENV. Set SBSIM_BUILD_TESTS=ON to build the C++ tests too.
+set -euo pipefail
+
+SBSIM_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+VENV="$SBSIM_ROOT/.venv"
+DEBIAN_PACKAGES=(libeigen3-dev libgtest-dev cmake g++ python3-dev)
+PYTHON_DEPENDENCIES=(pip "scikit-build-core>=0.10" "pybind11>=2.12" "numpy>=1.24" "eclipse-sumo==1.28.*")
+export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
+
+say() { printf 'sbsim setup: %s\n' "$*" >&2; }
+
+ensure_debian_packages() {
+  local missing=() p
+  command -v dpkg-query >/dev/null || return 0  # not Debian: trust the system
+  for p in "${DEBIAN_PACKAGES[@]}"; do
+    # python3-dev is only needed when the interpreter has no headers of its own (pyenv builds do).
+    if [ "$p" = python3-dev ] && python3 -c 'import sysconfig,os,sys; sys.exit(not os.path.exists(sysconfig.get_paths()["include"]+"/Python.h"))' 2>/dev/null; then continue; fi
+    if [ "$p" = cmake ] || [ "$p" = g++ ]; then command -v "$p" >/dev/null && continue; fi
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  if [ "$(id -u)" -eq 0 ]; then
+    say "installing Debian packages: ${missing[*]}"
+    DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
+  else
+    say "missing Debian packages; install them with:"
+    printf '  sudo apt-get install -y %s\n' "${missing[*]}" >&2
+    exit 1
+  fi
+}
+
+find_python() {
+  local candidate
+  for candidate in "${PYTHON:-}" python3.11 python3; do
+    [ -n "$candidate" ] && command -v "$candidate" >/dev/null || continue
+    if "$candidate" -c 'import sys; sys.exit(sys.version_info[:2] < (3, 11))' 2>/dev/null; then
+      echo "$candidate"
+      return
+    fi
+  done
+  say "Python 3.11 or newer is needed (set PYTHON=/path/to/python3.11)"
+  exit 1
+}
+
+ensure_venv() {
+  if [ ! -x "$VENV/bin/python" ]; then
+    say "creating $VENV"
+    "$(find_python)" -m venv "$VENV"
+  fi
+  local stamp="$VENV/.sbsim-deps" wanted="${PYTHON_DEPENDENCIES[*]} $*"
+  if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$wanted" ]; then
+    say "installing Python dependencies: $wanted"
+    "$VENV/bin/python" -m pip install -q --disable-pip-version-check --upgrade "${PYTHON_DEPENDENCIES[@]}" "$@"
+    echo "$wanted" > "$stamp"
+  fi
+}
+
+# Reinstalls sbsim when a source is newer than the last install; the build folder is kept, so
+# only what changed is recompiled.
+ensure_sbsim_installed() {
+  local stamp="$SBSIM_ROOT/build/.installed-tests-${SBSIM_BUILD_TESTS:-OFF}"
+  if [ -f "$stamp" ] && [ -x "$VENV/bin/sbsim" ] && [ -z "$(cd "$SBSIM_ROOT" && find CMakeLists.txt cmake cpp python pyproject.toml stories tests/cpp -newer "$stamp" -print -quit 2>/dev/null)" ]; then
+    return 0
+  fi
+  say "building and installing sbsim (log: build/pip-install.log)"
+  mkdir -p "$SBSIM_ROOT/build"
+  if ! (cd "$SBSIM_ROOT" && SBSIM_BUILD_TESTS="${SBSIM_BUILD_TESTS:-OFF}" "$VENV/bin/python" -m pip install \
+        --disable-pip-version-check --no-build-isolation --no-deps . >build/pip-install.log 2>&1); then
+    tail -n 40 "$SBSIM_ROOT/build/pip-install.log" >&2
+    say "build failed; full log: build/pip-install.log"
+    exit 1
+  fi
+  rm -f "$SBSIM_ROOT"/build/.installed-tests-*
+  touch "$stamp"
+}
