@@ -14,7 +14,10 @@ from typing import Any
 
 
 def executable() -> Path:
-    """The ``sbsim`` installed beside this Python (its ``bin/``), else the one on ``PATH``."""
+    """``$SBSIM_EXECUTABLE`` if set, else the ``sbsim`` beside this Python (its ``bin/``), else ``PATH``'s."""
+    override = os.environ.get("SBSIM_EXECUTABLE")
+    if override:
+        return Path(override)
     beside = Path(sys.prefix) / "bin" / "sbsim"
     if beside.is_file() and os.access(beside, os.X_OK):
         return beside
