@@ -134,6 +134,9 @@ int run(const CommandLine& cl) {
             }
         }
         std::printf("wall time: %.3f s\n", wall);
+        std::printf("time in sumo: %.3f s\n", sumo.sumoSeconds());
+        std::printf("time reading vehicles: %.3f s\n", sumo.snapshotSeconds());
+        if (board != nullptr) std::printf("time in storyboard: %.3f s\n", board->updateSeconds());
         std::printf("real-time factor: %.1f\n", wall > 0 ? simulated / wall : 0.0);
     }
     return 0;

@@ -1,6 +1,7 @@
 #include "storyboard/Storyboard.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 #include "storyboard/StoryboardSignal.h"
@@ -114,6 +115,7 @@ Storyboard::VehicleState& Storyboard::stateFor(const std::string& id) {
 }
 
 void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left) {
+    const auto started = std::chrono::steady_clock::now();
     now_ = snapshot.time();
     std::sort(left.begin(), left.end());
     for (const std::string& id : left) {
@@ -149,6 +151,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         if (state != nullptr && state->activeCount == 0 && state->stack->empty()) vehicles_.erase(id);
     }
     if (log_ != nullptr) log_->flush();
+    updateSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 void Storyboard::activate(VehicleState& state, std::size_t s, const std::string& id, const ConditionResult& result,

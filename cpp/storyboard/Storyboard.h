@@ -52,6 +52,8 @@ public:
     void update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left);
 
     bool isActive(const std::string& vehicle, const Story& story) const;
+    /// Wall-clock seconds spent in update() (a profiling figure for the summary).
+    double updateSeconds() const { return updateSeconds_; }
 
 private:
     struct AppliedEffect {
@@ -89,6 +91,7 @@ private:
     std::vector<std::string> leftSinceStep_;
     EffectStack::Token nextToken_ = 1;
     ControllerFactory makeController_;
+    double updateSeconds_ = 0;
 };
 
 }  // namespace sbsim::storyboard

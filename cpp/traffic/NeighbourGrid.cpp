@@ -9,7 +9,8 @@ namespace sbsim::traffic {
 
 void NeighbourGrid::build(const VehicleSnapshot& snapshot, double cellSize) {
     if (!(cellSize > 0) || !std::isfinite(cellSize)) {
-        throw std::invalid_argument("neighbour grid: cell size must be finite and > 0, not " + std::to_string(cellSize));
+        throw std::invalid_argument("neighbour grid: cell size must be finite and > 0, not " +
+                                    std::to_string(cellSize));
     }
     snapshot_ = &snapshot;
     cellSize_ = cellSize;

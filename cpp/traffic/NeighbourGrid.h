@@ -62,9 +62,9 @@ private:
     const VehicleSnapshot* snapshot_ = nullptr;
     double cellSize_ = 0;
     double inverseCellSize_ = 0;
-    unsigned shift_ = 63;                    // 64 - log2(bucket count)
-    std::vector<std::int32_t> bucketStart_;  // bucket b is items_[bucketStart_[b], bucketStart_[b + 1])
-    std::vector<Item> items_;                // ascending vehicle index within a bucket
+    unsigned shift_ = 63;                       // 64 - log2(bucket count)
+    std::vector<std::int32_t> bucketStart_;     // bucket b is items_[bucketStart_[b], bucketStart_[b + 1])
+    std::vector<Item> items_;                   // ascending vehicle index within a bucket
     std::vector<std::uint32_t> bucketScratch_;  // per vehicle, kept to avoid reallocating each step
 };
 

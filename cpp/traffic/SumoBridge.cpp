@@ -4,6 +4,7 @@
 #include <libsumo/Vehicle.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 #include "traffic/StderrCapture.h"
@@ -112,7 +113,10 @@ void SumoBridge::announce(const std::vector<std::string>& ids, kernel::SignalId 
 
 void SumoBridge::handleMessage(kernel::Message& msg) {
     if (&msg != &stepMessage_) return kernel::Module::handleMessage(msg);
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point started = Clock::now();
     libsumo::Simulation::step();
+    const Clock::time_point stepped = Clock::now();
     ++steps_;
     std::vector<std::string> departed = libsumo::Simulation::getDepartedIDList();
     std::vector<std::string> arrived = libsumo::Simulation::getArrivedIDList();
@@ -123,6 +127,8 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     vehiclesSeen_ += departed.size();
     peakRunning_ = std::max(peakRunning_, builder_.running());
     builder_.fill(snapshot_, simTime());
+    sumoSeconds_ += std::chrono::duration<double>(stepped - started).count();
+    snapshotSeconds_ += std::chrono::duration<double>(Clock::now() - stepped).count();
 
     announce(departed, departedSignal);
     announce(arrived, arrivedSignal);

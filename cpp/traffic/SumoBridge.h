@@ -68,6 +68,9 @@ public:
     std::uint64_t steps() const { return steps_; }
     std::uint64_t vehiclesSeen() const { return vehiclesSeen_; }
     std::size_t peakRunning() const { return peakRunning_; }
+    /// Wall-clock seconds spent inside SUMO's steps and reading the snapshot (profiling figures).
+    double sumoSeconds() const { return sumoSeconds_; }
+    double snapshotSeconds() const { return snapshotSeconds_; }
 
 private:
     void close();
@@ -87,6 +90,8 @@ private:
     std::uint64_t steps_ = 0;
     std::uint64_t vehiclesSeen_ = 0;
     std::size_t peakRunning_ = 0;
+    double sumoSeconds_ = 0;
+    double snapshotSeconds_ = 0;
 };
 
 }  // namespace sbsim::traffic

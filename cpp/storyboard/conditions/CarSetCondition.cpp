@@ -2,8 +2,7 @@
 
 namespace sbsim::storyboard {
 
-CarSetCondition::CarSetCondition(std::set<std::string> ids)
-    : ids_(std::move(ids)), lookup_(ids_.begin(), ids_.end()) {}
+CarSetCondition::CarSetCondition(std::set<std::string> ids) : ids_(std::move(ids)), lookup_(ids_.begin(), ids_.end()) {}
 
 ConditionResult CarSetCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     return lookup_.contains(ctx.snapshot().ids()[ego]);

@@ -12,8 +12,8 @@ DeferringCondition::DeferringCondition(std::shared_ptr<RandomStream> rng, kernel
         throw std::invalid_argument("DeferringCondition: min deferral " + min_.str() + " s is negative");
     }
     if (max_ < min_) {
-        throw std::invalid_argument("DeferringCondition: max deferral " + max_.str() + " s is below min " +
-                                    min_.str() + " s");
+        throw std::invalid_argument("DeferringCondition: max deferral " + max_.str() + " s is below min " + min_.str() +
+                                    " s");
     }
 }
 
@@ -24,7 +24,8 @@ ConditionResult DeferringCondition::test(const EvaluationContext& ctx, VehicleIn
     // Uniform in [min, max], rounded to whole nanoseconds; the comparison keeps the cast in range.
     const kernel::SimTime::rep range = (max_ - min_).raw();
     const double offset = std::round(static_cast<double>(range) * rng_->uniform01());
-    const kernel::SimTime::rep ns = offset < static_cast<double>(range) ? static_cast<kernel::SimTime::rep>(offset) : range;
+    const kernel::SimTime::rep ns =
+        offset < static_cast<double>(range) ? static_cast<kernel::SimTime::rep>(offset) : range;
     const kernel::SimTime due = now + min_ + kernel::SimTime::fromRaw(ns);
     due_.emplace(id, due);
     return due <= now;

@@ -13,8 +13,7 @@ double checkedThreshold(double mps, const char* what) {
 }
 }  // namespace
 
-SpeedConditionGreater::SpeedConditionGreater(double mps)
-    : threshold_(checkedThreshold(mps, "SpeedConditionGreater")) {}
+SpeedConditionGreater::SpeedConditionGreater(double mps) : threshold_(checkedThreshold(mps, "SpeedConditionGreater")) {}
 
 ConditionResult SpeedConditionGreater::test(const EvaluationContext& ctx, VehicleIndex ego) {
     return ctx.snapshot().speeds()[ego] > threshold_;

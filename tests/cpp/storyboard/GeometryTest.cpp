@@ -1,0 +1,155 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "storyboard/geometry/Footprint.h"
+#include "storyboard/geometry/Polygon.h"
+
+namespace sbsim::storyboard::geometry {
+namespace {
+
+using V = Eigen::Vector2d;
+
+Polygon square() { return Polygon({V(0, 0), V(10, 0), V(10, 10), V(0, 10)}); }
+
+TEST(Polygon, RejectsFewerThanThreeVertices) {
+    EXPECT_THROW(Polygon({}), std::invalid_argument);
+    EXPECT_THROW(Polygon({V(0, 0), V(1, 0)}), std::invalid_argument);
+    EXPECT_NO_THROW(Polygon({V(0, 0), V(1, 0), V(0, 1)}));
+    EXPECT_THROW(Polygon({V(0, 0), V(1, NAN), V(0, 1)}), std::invalid_argument);
+}
+
+TEST(Polygon, InsideAndOutside) {
+    const Polygon p = square();
+    EXPECT_TRUE(p.contains(V(5, 5)));
+    EXPECT_TRUE(p.contains(V(0.001, 9.999)));
+    EXPECT_FALSE(p.contains(V(-1, 5)));
+    EXPECT_FALSE(p.contains(V(5, 11)));
+    EXPECT_FALSE(p.contains(V(20, 20)));
+}
+
+TEST(Polygon, BoundaryIsOutside) {
+    const Polygon p = square();
+    for (const V& v : {V(0, 5), V(10, 5), V(5, 0), V(5, 10), V(0, 0), V(10, 10), V(10, 0), V(0, 10)}) {
+        EXPECT_FALSE(p.contains(v)) << v.transpose();
+    }
+    // A diamond: its edges are inside its bounding box, and points on them are still outside.
+    const Polygon diamond({V(0, -10), V(10, 0), V(0, 10), V(-10, 0)});
+    for (const V& v : {V(-5, 5), V(5, 5), V(5, -5), V(-5, -5), V(-2.5, 7.5), V(0, 10), V(-10, 0)}) {
+        EXPECT_FALSE(diamond.contains(v)) << v.transpose();
+    }
+    EXPECT_TRUE(diamond.contains(V(-4.9, 5)));
+    EXPECT_FALSE(diamond.contains(V(-5.1, 5)));
+    // A slanted edge, with a point exactly on it.
+    const Polygon t({V(0, 0), V(3, 1), V(0, 4)});
+    EXPECT_FALSE(t.contains(V(1.5, 0.5)));
+    EXPECT_TRUE(t.contains(V(1.5, 0.6)));
+    EXPECT_FALSE(t.contains(V(1.5, 0.4)));
+}
+
+TEST(Polygon, OrientationDoesNotMatter) {
+    const Polygon ccw({V(0, 0), V(10, 0), V(10, 10), V(0, 10)});
+    const Polygon cw({V(0, 10), V(10, 10), V(10, 0), V(0, 0)});
+    for (double x = -1; x <= 11; x += 0.5) {
+        for (double y = -1; y <= 11; y += 0.5) {
+            EXPECT_EQ(ccw.contains(V(x, y)), cw.contains(V(x, y))) << x << ", " << y;
+            EXPECT_EQ(ccw.contains(V(x, y)), x > 0 && x < 10 && y > 0 && y < 10) << x << ", " << y;
+        }
+    }
+}
+
+TEST(Polygon, NonConvex) {
+    // A U: the notch between the arms is outside.
+    const Polygon u({V(0, 0), V(30, 0), V(30, 30), V(20, 30), V(20, 10), V(10, 10), V(10, 30), V(0, 30)});
+    EXPECT_TRUE(u.contains(V(5, 25)));
+    EXPECT_TRUE(u.contains(V(25, 25)));
+    EXPECT_TRUE(u.contains(V(15, 5)));
+    EXPECT_FALSE(u.contains(V(15, 20)));
+    EXPECT_FALSE(u.contains(V(15, 10)));  // on the notch's floor
+    EXPECT_FALSE(u.contains(V(20, 20)));  // on an inner edge
+    // The ray from (5, 10) runs along the notch's floor and through vertices.
+    EXPECT_TRUE(u.contains(V(5, 10)));
+    EXPECT_TRUE(u.contains(V(25, 10)));
+    EXPECT_TRUE(u.contains(V(5, 30 - 1e-9)));
+}
+
+TEST(Polygon, RepeatedClosingVertexIsHarmless) {
+    const Polygon closed({V(0, 0), V(10, 0), V(10, 10), V(0, 10), V(0, 0)});
+    EXPECT_TRUE(closed.contains(V(5, 5)));
+    EXPECT_FALSE(closed.contains(V(0, 5)));
+    EXPECT_FALSE(closed.contains(V(0, 0)));
+}
+
+TEST(Footprint, HeadingFollowsSumoAngles) {
+    EXPECT_EQ(Footprint::headingOf(0), V(0, 1));
+    EXPECT_EQ(Footprint::headingOf(90), V(1, 0));
+    EXPECT_EQ(Footprint::headingOf(180), V(0, -1));
+    EXPECT_EQ(Footprint::headingOf(270), V(-1, 0));
+    EXPECT_EQ(Footprint::headingOf(-90), V(-1, 0));
+    EXPECT_EQ(Footprint::headingOf(450), V(1, 0));
+    const V h = Footprint::headingOf(45);
+    EXPECT_NEAR(h.x(), std::sqrt(0.5), 1e-15);
+    EXPECT_NEAR(h.y(), std::sqrt(0.5), 1e-15);
+}
+
+TEST(Footprint, PositionIsTheFrontBumper) {
+    const Footprint north = Footprint::fromSumo(V(0, 0), 0, 5, 2);
+    EXPECT_EQ(north.centre(), V(0, -2.5));
+    EXPECT_EQ(north.frontBumper(), V(0, 0));
+    const auto c = north.corners();
+    EXPECT_EQ(c[0], V(-1, 0));   // front left
+    EXPECT_EQ(c[1], V(1, 0));    // front right
+    EXPECT_EQ(c[2], V(1, -5));   // rear right
+    EXPECT_EQ(c[3], V(-1, -5));  // rear left
+
+    const Footprint east = Footprint::fromSumo(V(10, 3), 90, 4, 2);
+    EXPECT_EQ(east.centre(), V(8, 3));
+    EXPECT_EQ(east.corners()[1], V(10, 2));  // front right is to the south
+}
+
+TEST(Footprint, MovesAlongTheHeading) {
+    const Footprint f = Footprint::fromSumo(V(0, 0), 90, 5, 2);
+    EXPECT_EQ(f.moved(10).centre(), V(7.5, 0));
+    EXPECT_EQ(f.movedFor(4, 2.5).frontBumper(), V(10, 0));
+    EXPECT_EQ(f.moved(-2).frontBumper(), V(-2, 0));
+}
+
+TEST(Footprint, OverlapAndSeparation) {
+    const Footprint a = Footprint::fromSumo(V(0, 0), 0, 5, 2);
+    EXPECT_TRUE(overlaps(a, a));
+    EXPECT_TRUE(overlaps(a, Footprint::fromSumo(V(0.5, 1), 0, 5, 2)));
+    EXPECT_FALSE(overlaps(a, Footprint::fromSumo(V(0, 5.1), 0, 5, 2)));  // 0.1 m ahead
+    EXPECT_FALSE(overlaps(a, Footprint::fromSumo(V(2.1, 0), 0, 5, 2)));  // 0.1 m beside
+    // Perpendicular: a car crossing just in front.
+    EXPECT_FALSE(overlaps(a, Footprint::fromSumo(V(3, 1.01), 90, 5, 2)));
+    EXPECT_TRUE(overlaps(a, Footprint::fromSumo(V(3, 0.99), 90, 5, 2)));
+}
+
+TEST(Footprint, TouchingOverlaps) {
+    const Footprint a = Footprint::fromSumo(V(0, 0), 0, 5, 2);
+    EXPECT_TRUE(overlaps(a, Footprint::fromSumo(V(0, 5), 0, 5, 2)));    // nose to tail
+    EXPECT_TRUE(overlaps(a, Footprint::fromSumo(V(2, 0), 0, 5, 2)));    // side by side
+    EXPECT_TRUE(overlaps(a, Footprint::fromSumo(V(2, 5), 0, 5, 2)));    // corner to corner
+    EXPECT_TRUE(overlaps(a, Footprint::fromSumo(V(0, 0), 180, 5, 2)));  // nose to nose
+    EXPECT_FALSE(overlaps(a, Footprint::fromSumo(V(0, 0.001), 180, 5, 2)));
+    // Touching along a slanted edge: b's rear edge lies on a's front-right edge line.
+    const Footprint r = Footprint::fromSumo(V(0, 0), 30, 4, 2);
+    const Footprint beside = Footprint(r.centre() + 2 * r.right(), r.heading(), 4, 2);
+    EXPECT_TRUE(overlaps(r, beside));
+    EXPECT_FALSE(overlaps(r, Footprint(r.centre() + 2.001 * r.right(), r.heading(), 4, 2)));
+}
+
+TEST(Footprint, OnlyTheOtherRectanglesAxisSeparates) {
+    // a's axes see overlapping projections; b's diagonal axis separates them.
+    const Footprint a(V(0, 0), V(0, 1), 2, 2);
+    const Footprint far(V(1.9, 1.9), Footprint::headingOf(45), 2, 2);
+    EXPECT_FALSE(overlaps(a, far));
+    EXPECT_FALSE(overlaps(far, a));
+    const Footprint near(V(1.6, 1.6), Footprint::headingOf(45), 2, 2);
+    EXPECT_TRUE(overlaps(a, near));
+    EXPECT_TRUE(overlaps(near, a));
+}
+
+}  // namespace
+}  // namespace sbsim::storyboard::geometry

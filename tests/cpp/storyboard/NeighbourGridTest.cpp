@@ -1,0 +1,138 @@
+#include "traffic/NeighbourGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include "StoryboardTestSupport.h"
+
+namespace sbsim::traffic {
+namespace {
+
+using storyboard::test::car;
+using storyboard::test::Vehicle;
+using Index = NeighbourGrid::Index;
+
+std::vector<Index> bruteForce(const VehicleSnapshot& s, Index i, double radius) {
+    std::vector<Index> out;
+    for (Index j = 0; j < s.size(); ++j) {
+        const double dx = s.positions()(0, j) - s.positions()(0, i);
+        const double dy = s.positions()(1, j) - s.positions()(1, i);
+        if (j != i && dx * dx + dy * dy <= radius * radius) out.push_back(j);
+    }
+    return out;
+}
+
+std::vector<Vehicle> randomVehicles(std::mt19937_64& rng, int n, double extent, bool lattice) {
+    std::uniform_real_distribution<double> coordinate(-extent, extent);
+    std::uniform_int_distribution<int> cell(-static_cast<int>(extent / 10), static_cast<int>(extent / 10));
+    std::vector<Vehicle> vehicles;
+    for (int k = 0; k < n; ++k) {
+        // Lattice points sit on cell borders and at exact distances (3-4-5 and alike).
+        const double x = lattice ? 10.0 * cell(rng) : coordinate(rng);
+        const double y = lattice ? 10.0 * cell(rng) : coordinate(rng);
+        vehicles.push_back(car("v" + std::to_string(k), x, y));
+    }
+    return vehicles;
+}
+
+void expectSameAsBruteForce(const VehicleSnapshot& s, const NeighbourGrid& grid, double radius) {
+    for (Index i = 0; i < s.size(); ++i) {
+        const std::vector<Index> expected = bruteForce(s, i, radius);
+        ASSERT_EQ(grid.within(i, radius), expected) << "vehicle " << i << ", radius " << radius;
+        // forEachWithin visits the same vehicles, each once.
+        std::vector<Index> visited;
+        grid.forEachWithin(i, radius, [&](Index j) { visited.push_back(j); });
+        std::sort(visited.begin(), visited.end());
+        ASSERT_EQ(visited, expected) << "vehicle " << i << ", radius " << radius;
+    }
+}
+
+TEST(NeighbourGrid, MatchesBruteForceOnRandomPositions) {
+    std::mt19937_64 rng(20240601);
+    VehicleSnapshot s;
+    s.assign(randomVehicles(rng, 1500, 1000, false), kernel::SimTime::zero());
+    NeighbourGrid grid;
+    grid.build(s, 50);
+    EXPECT_EQ(grid.cellSize(), 50);
+    std::size_t found = 0;
+    for (const double radius : {0.0, 7.5, 50.0, 120.0, 3000.0}) {
+        expectSameAsBruteForce(s, grid, radius);
+        found += grid.within(0, radius).size();
+    }
+    EXPECT_GT(found, 1500u);  // the comparison is not vacuous
+}
+
+TEST(NeighbourGrid, MatchesBruteForceOnLatticeWithExactDistances) {
+    std::mt19937_64 rng(7);
+    VehicleSnapshot s;
+    s.assign(randomVehicles(rng, 800, 200, true), kernel::SimTime::zero());
+    for (const double cellSize : {10.0, 25.0, 50.0}) {
+        NeighbourGrid grid;
+        grid.build(s, cellSize);
+        for (const double radius : {0.0, 10.0, 50.0}) expectSameAsBruteForce(s, grid, radius);
+    }
+}
+
+TEST(NeighbourGrid, MatchesBruteForceWhenSpreadFarApartAndClustered) {
+    // Clusters tens of kilometres apart: far more cells than vehicles in the bounding box.
+    std::mt19937_64 rng(99);
+    std::normal_distribution<double> jitter(0, 15);
+    std::vector<Vehicle> vehicles;
+    for (int k = 0; k < 600; ++k) {
+        const double cx = (k % 3) * 40'000.0 - 1e6;
+        const double cy = (k % 5) * 25'000.0 + 3e5;
+        vehicles.push_back(car("v" + std::to_string(k), cx + jitter(rng), cy + jitter(rng)));
+    }
+    VehicleSnapshot s;
+    s.assign(vehicles, kernel::SimTime::zero());
+    NeighbourGrid grid;
+    grid.build(s, 20);
+    for (const double radius : {5.0, 20.0, 60.0}) expectSameAsBruteForce(s, grid, radius);
+}
+
+TEST(NeighbourGrid, DistanceIsInclusiveAndExcludesTheVehicleItself) {
+    VehicleSnapshot s;
+    s.assign({car("a", 0, 0), car("b", 3, 4), car("c", 0, 0), car("d", -6, -8)}, kernel::SimTime::zero());
+    NeighbourGrid grid;
+    grid.build(s, 5);
+    EXPECT_EQ(grid.within(0, 5), (std::vector<Index>{1, 2}));
+    EXPECT_EQ(grid.within(0, 4.999), (std::vector<Index>{2}));
+    EXPECT_EQ(grid.within(0, 0), (std::vector<Index>{2}));  // same position
+    EXPECT_EQ(grid.within(0, 10), (std::vector<Index>{1, 2, 3}));
+    EXPECT_EQ(grid.within(1, 15), (std::vector<Index>{0, 2, 3}));
+    EXPECT_EQ(grid.within(1, 14.999), (std::vector<Index>{0, 2}));
+    EXPECT_TRUE(grid.within(0, -1).empty());
+}
+
+TEST(NeighbourGrid, RebuildsForANewSnapshot) {
+    VehicleSnapshot s;
+    s.assign({car("a", 0, 0), car("b", 3, 0)}, kernel::SimTime::zero());
+    NeighbourGrid grid;
+    grid.build(s, 10);
+    EXPECT_EQ(grid.within(0, 5), (std::vector<Index>{1}));
+    s.assign({car("a", 0, 0), car("b", 30, 0), car("c", 0, -2)}, kernel::SimTime::fromSeconds(1));
+    grid.build(s, 10);
+    EXPECT_EQ(grid.within(0, 5), (std::vector<Index>{2}));
+    s.assign({}, kernel::SimTime::fromSeconds(2));
+    grid.build(s, 10);
+    s.assign({car("z", 1, 1)}, kernel::SimTime::fromSeconds(3));
+    grid.build(s, 10);
+    EXPECT_TRUE(grid.within(0, 100).empty());
+}
+
+TEST(NeighbourGrid, RejectsABadCellSize) {
+    VehicleSnapshot s;
+    NeighbourGrid grid;
+    EXPECT_THROW(grid.build(s, 0), std::invalid_argument);
+    EXPECT_THROW(grid.build(s, -1), std::invalid_argument);
+    EXPECT_THROW(grid.build(s, std::numeric_limits<double>::infinity()), std::invalid_argument);
+    EXPECT_THROW(grid.build(s, std::nan("")), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sbsim::traffic

@@ -1,0 +1,117 @@
+#include "storyboard/conditions/SpeedDifferenceCondition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
+#include <stdexcept>
+
+#include "StoryboardTestSupport.h"
+
+namespace sbsim::storyboard::test {
+namespace {
+
+TEST(SpeedDifferenceCondition, FasterIsStrictAndCoversAllVehiclesWithoutDistance) {
+    Scene scene({car("ego", 0, 0, 20), car("slow", 10, 0, 10), car("exact", 20, 0, 15), car("fast", 30, 0, 25),
+                 car("farSlow", 50'000, 0, 5)});
+    SpeedDifferenceConditionFaster c(5);
+    EXPECT_FALSE(c.neighbourRadius());
+    const ConditionResult r = scene.test(c, "ego");
+    EXPECT_TRUE(r.isSet());
+    EXPECT_EQ(scene.others(r), (Ids{"farSlow", "slow"}));  // ascending id order
+    // From the slowest vehicle's view nobody is slower.
+    const ConditionResult none = scene.test(c, "farSlow");
+    EXPECT_TRUE(none.isSet());
+    EXPECT_FALSE(none.isTrue());
+}
+
+TEST(SpeedDifferenceCondition, SlowerIsStrict) {
+    Scene scene({car("ego", 0, 0, 20), car("slow", 10, 0, 10), car("exact", 20, 0, 25), car("fast", 30, 0, 25.5),
+                 car("faster", 40, 0, 40)});
+    SpeedDifferenceConditionSlower c(5);
+    EXPECT_EQ(scene.others(scene.test(c, "ego")), (Ids{"fast", "faster"}));
+    EXPECT_EQ(scene.others(scene.test(c, "slow")), (Ids{"ego", "exact", "fast", "faster"}));
+}
+
+TEST(SpeedDifferenceCondition, NeverContainsTheEgo) {
+    Scene scene({car("a", 0, 0, 10), car("b", 10, 0, 10)});
+    SpeedDifferenceConditionFaster all(-1);  // every speed difference of 0 qualifies
+    EXPECT_EQ(scene.others(scene.test(all, "a")), (Ids{"b"}));
+    SpeedDifferenceConditionSlower near(-1, 20);
+    EXPECT_EQ(scene.others(scene.test(near, "a")), (Ids{"b"}));
+}
+
+TEST(SpeedDifferenceCondition, DistanceIsInclusive) {
+    Scene scene(
+        {car("ego", 0, 0, 20), car("edge", 30, 40, 0), car("beyond", 30, 40.001, 0), car("fastNear", 1, 1, 30)});
+    SpeedDifferenceConditionFaster c(5, 50.0);
+    EXPECT_EQ(c.neighbourRadius(), 50.0);
+    EXPECT_EQ(scene.others(scene.test(c, "ego")), (Ids{"edge"}));
+    SpeedDifferenceConditionSlower slower(5, 50.0);
+    EXPECT_EQ(scene.others(scene.test(slower, "ego")), (Ids{"fastNear"}));
+}
+
+TEST(SpeedDifferenceCondition, RejectsBadParameters) {
+    EXPECT_THROW(SpeedDifferenceConditionFaster(std::nan("")), std::invalid_argument);
+    EXPECT_THROW(SpeedDifferenceConditionFaster(1, -1.0), std::invalid_argument);
+    EXPECT_THROW(SpeedDifferenceConditionSlower(1, std::numeric_limits<double>::infinity()), std::invalid_argument);
+    EXPECT_NO_THROW(SpeedDifferenceConditionSlower(1, 0.0));
+}
+
+/// The definition, pair by pair.
+std::vector<VehicleIndex> bruteForce(const traffic::VehicleSnapshot& s, VehicleIndex ego, bool egoFaster, double delta,
+                                     std::optional<double> distance) {
+    std::vector<VehicleIndex> out;
+    const double e = s.speeds()[ego];
+    for (VehicleIndex o = 0; o < s.size(); ++o) {
+        if (o == ego) continue;
+        const double diff = egoFaster ? e - s.speeds()[o] : s.speeds()[o] - e;
+        const double dx = s.positions()(0, o) - s.positions()(0, ego);
+        const double dy = s.positions()(1, o) - s.positions()(1, ego);
+        if (diff > delta && (!distance || dx * dx + dy * dy <= *distance * *distance)) out.push_back(o);
+    }
+    return out;
+}
+
+TEST(SpeedDifferenceCondition, MatchesBruteForceOnRandomTraffic) {
+    std::mt19937_64 rng(31337);
+    std::uniform_real_distribution<double> coordinate(0, 600);
+    std::uniform_int_distribution<int> speedStep(0, 60);  // quarter m/s steps: many ties and exact differences
+    std::vector<Vehicle> vehicles;
+    for (int k = 0; k < 700; ++k) {
+        vehicles.push_back(car("veh" + std::to_string(k), coordinate(rng), coordinate(rng), 0.25 * speedStep(rng)));
+    }
+    Scene scene(vehicles, SimTime::fromSeconds(1), 60);
+    std::size_t nonEmpty = 0;
+    for (const std::optional<double> distance : {std::optional<double>(), std::optional<double>(60.0)}) {
+        for (const double delta : {-100.0, -0.25, 0.0, 2.5, 7.0, 14.75}) {
+            SpeedDifferenceConditionFaster faster(delta, distance);
+            SpeedDifferenceConditionSlower slower(delta, distance);
+            faster.prepare(scene.ctx());
+            slower.prepare(scene.ctx());
+            for (VehicleIndex ego = 0; ego < scene.snapshot().size(); ego += 3) {
+                const ConditionResult f = faster.test(scene.ctx(), ego);
+                const ConditionResult s = slower.test(scene.ctx(), ego);
+                ASSERT_EQ(f.others(), bruteForce(scene.snapshot(), ego, true, delta, distance))
+                    << "ego " << ego << " delta " << delta;
+                ASSERT_EQ(s.others(), bruteForce(scene.snapshot(), ego, false, delta, distance))
+                    << "ego " << ego << " delta " << delta;
+                nonEmpty += f.isTrue() + s.isTrue();
+            }
+        }
+    }
+    EXPECT_GT(nonEmpty, 1000u);
+}
+
+TEST(SpeedDifferenceCondition, FollowsANewSnapshotEvenWithoutPrepare) {
+    SpeedDifferenceConditionFaster c(1);
+    Scene scene({car("a", 0, 0, 10), car("b", 5, 0, 5)}, SimTime::fromSeconds(1));
+    EXPECT_EQ(scene.others(c.test(scene.ctx(), scene.index("a"))), (Ids{"b"}));
+    scene.set({car("a", 0, 0, 10), car("b", 5, 0, 12), car("c", 9, 0, 2)}, SimTime::fromSeconds(2));
+    EXPECT_EQ(scene.others(c.test(scene.ctx(), scene.index("a"))), (Ids{"c"}));
+}
+
+}  // namespace
+}  // namespace sbsim::storyboard::test

@@ -1,0 +1,196 @@
+// The board's evaluation pass on hand-made snapshots: event order (vehicle_left first, then
+// vehicles by id, stories by registration), activation/deactivation, signals, effect removal,
+// and that nothing lingers after a vehicle leaves.
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "kernel/Simulation.h"
+#include "storyboard/EventLog.h"
+#include "storyboard/Storyboard.h"
+#include "storyboard/StoryboardSignal.h"
+#include "storyboard/conditions/AndCondition.h"
+#include "storyboard/conditions/CarSetCondition.h"
+#include "storyboard/conditions/LimitCondition.h"
+#include "storyboard/conditions/SpeedCondition.h"
+#include "storyboard/conditions/TimeCondition.h"
+#include "storyboard/effects/SignalEffect.h"
+#include "storyboard/effects/SpeedEffect.h"
+#include "storyboard/effects/StopEffect.h"
+
+namespace sbsim::storyboard {
+namespace {
+
+using kernel::SimTime;
+using traffic::VehicleSnapshot;
+
+/// Records every command per vehicle; max speed starts at 50.
+struct Commands {
+    std::map<std::string, double> maxSpeed;
+    std::map<std::string, std::vector<double>> setSpeed;
+};
+
+class RecordingVehicle : public traffic::VehicleController {
+public:
+    RecordingVehicle(const std::string& id, Commands& log) : VehicleController(id), log_(log) {
+        log_.maxSpeed.try_emplace(id, 50.0);
+    }
+    double maxSpeed() const override { return log_.maxSpeed.at(id()); }
+    double speed() const override { return 10.0; }
+    int speedMode() const override { return 31; }
+    double emergencyDecel() const override { return 9.0; }
+    void setMaxSpeed(double mps) override { log_.maxSpeed[id()] = mps; }
+    void setSpeed(double mps) override { log_.setSpeed[id()].push_back(mps); }
+
+private:
+    Commands& log_;
+};
+
+VehicleSnapshot::Vehicle car(std::string id, double speed) {
+    VehicleSnapshot::Vehicle v;
+    v.id = std::move(id);
+    v.speed = speed;
+    return v;
+}
+
+class SignalProbe : public kernel::Listener {
+public:
+    void receiveSignal(kernel::Module&, kernel::SignalId, const kernel::Object& value) override {
+        signals.push_back(dynamic_cast<const StoryboardSignal&>(value));
+    }
+    std::vector<StoryboardSignal> signals;
+};
+
+class StoryboardTest : public testing::Test {
+protected:
+    StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(7, &log)) {
+        board.setControllerFactory([this](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
+        sim.subscribe(Storyboard::signalEmitted, probe);
+    }
+
+    void step(double t, std::vector<VehicleSnapshot::Vehicle> vehicles, std::vector<std::string> left = {}) {
+        snapshot.assign(std::move(vehicles), SimTime::fromSeconds(t));
+        board.update(snapshot, std::move(left));
+    }
+
+    std::vector<std::string> lines() {
+        std::vector<std::string> out;
+        std::istringstream in(this->out.str());
+        for (std::string line; std::getline(in, line);) out.push_back(line);
+        this->out.str("");
+        return out;
+    }
+
+    std::ostringstream out;
+    EventLog log;
+    kernel::Simulation sim;
+    Storyboard& board;
+    Commands commands;
+    SignalProbe probe;
+    VehicleSnapshot snapshot;
+};
+
+TEST_F(StoryboardTest, ActivatesByVehicleIdThenStoryOrderAndNamesUnnamedStories) {
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0),
+                                                std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "fast"));
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionLess>(100.0), std::vector<EffectPtr>{}));
+    step(1, {car("b", 10), car("a", 10), car("B", 1)});
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t": 1, "type": "activate", "story": "story1", "vehicle": "B"})",
+                           R"({"t": 1, "type": "activate", "story": "fast", "vehicle": "a"})",
+                           R"({"t": 1, "type": "activate", "story": "story1", "vehicle": "a"})",
+                           R"({"t": 1, "type": "activate", "story": "fast", "vehicle": "b"})",
+                           R"({"t": 1, "type": "activate", "story": "story1", "vehicle": "b"})",
+                       }));
+    EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 3.0);
+    EXPECT_EQ(board.stories()[0]->activations(), 2u);
+}
+
+TEST_F(StoryboardTest, DeactivatesWhenTheConditionTurnsFalseAndRestores) {
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0),
+                                                std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "fast"));
+    step(1, {car("a", 10)});
+    step(2, {car("a", 4)});
+    EXPECT_EQ(lines().back(), R"({"t": 2, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})");
+    EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 50.0);
+    EXPECT_FALSE(board.isActive("a", *board.stories()[0]));
+}
+
+TEST_F(StoryboardTest, VehiclesThatLeftAreDeactivatedFirstWithoutCommands) {
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0),
+                                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "s1"));
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(6.0),
+                                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "s2"));
+    step(1, {car("x", 10), car("y", 10)});
+    lines();
+    const auto stopsBefore = commands.setSpeed.at("y").size();
+    step(2, {car("a", 10)}, {"y", "x"});
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t": 2, "type": "deactivate", "story": "s1", "vehicle": "x", "reason": "vehicle_left"})",
+                           R"({"t": 2, "type": "deactivate", "story": "s2", "vehicle": "x", "reason": "vehicle_left"})",
+                           R"({"t": 2, "type": "deactivate", "story": "s1", "vehicle": "y", "reason": "vehicle_left"})",
+                           R"({"t": 2, "type": "deactivate", "story": "s2", "vehicle": "y", "reason": "vehicle_left"})",
+                           R"({"t": 2, "type": "activate", "story": "s1", "vehicle": "a"})",
+                           R"({"t": 2, "type": "activate", "story": "s2", "vehicle": "a"})",
+                       }));
+    EXPECT_EQ(commands.setSpeed.at("y").size(), stopsBefore) << "no SUMO command for a vehicle that left";
+    EXPECT_FALSE(board.isActive("x", *board.stories()[0]));
+}
+
+TEST_F(StoryboardTest, SignalComesRightAfterItsActivationWithSortedOthers) {
+    // A condition whose result is a set of other vehicles: ego's id in {"c"} ∧ "all others slower than 100".
+    class OthersCondition : public Condition {
+    public:
+        ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override {
+            std::vector<VehicleIndex> others;
+            for (VehicleIndex i = 0; i < ctx.snapshot().size(); ++i) {
+                if (i != ego) others.push_back(i);
+            }
+            return ConditionResult::ofOthers(std::move(others));
+        }
+    };
+    board.registerStory(std::make_shared<Story>(
+        std::make_shared<AndCondition>(std::make_shared<CarSetCondition>(std::set<std::string>{"c"}),
+                                       std::make_shared<OthersCondition>()),
+        std::vector<EffectPtr>{std::make_shared<SignalEffect>("siren on")}, "siren"));
+    step(3, {car("z", 1), car("c", 1), car("a", 1)});
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t": 3, "type": "activate", "story": "siren", "vehicle": "c"})",
+                           R"({"t": 3, "type": "signal", "story": "siren", "vehicle": "c", "cause": "siren on", "others": ["a", "z"]})",
+                       }));
+    ASSERT_EQ(probe.signals.size(), 1u);
+    EXPECT_EQ(probe.signals[0].ego, "c");
+    EXPECT_EQ(probe.signals[0].story, "siren");
+    EXPECT_EQ(probe.signals[0].others, (std::vector<std::string>{"a", "z"}));
+    step(4, {car("z", 1), car("c", 1), car("a", 1)});
+    EXPECT_EQ(probe.signals.size(), 1u) << "a signal goes out once, when the story activates";
+}
+
+TEST_F(StoryboardTest, SharedLimitConditionKeepsItsStateAcrossStories) {
+    const auto limit = std::make_shared<LimitCondition>(2);
+    board.registerStory(std::make_shared<Story>(limit, std::vector<EffectPtr>{}, "first"));
+    board.registerStory(std::make_shared<Story>(limit, std::vector<EffectPtr>{}, "second"));
+    step(1, {car("a", 1), car("b", 1), car("c", 1)});
+    const auto events = lines();
+    EXPECT_EQ(events.size(), 4u);  // a and b, each in both stories; c never
+    for (const std::string& e : events) EXPECT_EQ(e.find("\"c\""), std::string::npos) << e;
+}
+
+TEST_F(StoryboardTest, TwoStopStoriesHoldUntilTheLastEnds) {
+    board.registerStory(std::make_shared<Story>(
+        std::make_shared<TimeCondition>(SimTime::fromSeconds(1), SimTime::fromSeconds(3)),
+        std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "early"));
+    board.registerStory(std::make_shared<Story>(
+        std::make_shared<TimeCondition>(SimTime::fromSeconds(2), SimTime::fromSeconds(5)),
+        std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "late"));
+    for (int t = 1; t <= 6; ++t) step(t, {car("a", 1)});
+    // Held once at t=1 (0), released once at t=6 (-1): the first story ending at t=4 sends nothing.
+    EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
+}
+
+}  // namespace
+}  // namespace sbsim::storyboard

@@ -1,0 +1,195 @@
+#include "storyboard/conditions/TtcCondition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include "StoryboardTestSupport.h"
+
+namespace sbsim::storyboard::test {
+namespace {
+
+using geometry::Footprint;
+using V = Eigen::Vector2d;
+
+/// The definition: every sample time i·dt, i = 1..ceil(ttc/dt).
+bool naiveConflict(const Footprint& a, double va, const Footprint& b, double vb, double ttc) {
+    if (va == 0 && vb == 0) return false;
+    double dt = std::numeric_limits<double>::infinity();
+    if (va != 0) dt = 2 * a.halfLength() / std::abs(va);
+    if (vb != 0) dt = std::min(dt, 2 * b.halfLength() / std::abs(vb));
+    const auto steps = static_cast<long>(std::ceil(ttc / dt));
+    for (long i = 1; i <= steps; ++i) {
+        const double t = static_cast<double>(i) * dt;
+        if (overlaps(a.movedFor(va, t), b.movedFor(vb, t))) return true;
+    }
+    return false;
+}
+
+TEST(TtcCondition, HeadOn) {
+    // Fronts 40 m apart, closing at 20 m/s: they touch at t = 2 s.
+    Scene scene({car("north", 0, 0, 10, 0), car("south", 0, 40, 10, 180)});
+    TtcCondition soon(3);
+    EXPECT_EQ(scene.others(scene.test(soon, "north")), (Ids{"south"}));
+    EXPECT_EQ(scene.others(scene.test(soon, "south")), (Ids{"north"}));
+    TtcCondition exactly(2);  // touching at the last sample counts
+    EXPECT_EQ(scene.others(scene.test(exactly, "north")), (Ids{"south"}));
+    TtcCondition tooShort(1.5);
+    const ConditionResult r = scene.test(tooShort, "north");
+    EXPECT_TRUE(r.isSet());
+    EXPECT_FALSE(r.isTrue());
+}
+
+TEST(TtcCondition, RearEnd) {
+    // The leader's rear is 25 m ahead; the follower closes at 10 m/s, touching at t = 2.5 s.
+    // dt = min(5/20, 5/10) = 0.25 s.
+    Scene scene({car("follower", 0, 0, 20, 0), car("leader", 0, 30, 10, 0)});
+    TtcCondition enough(2.5);
+    EXPECT_EQ(scene.others(scene.test(enough, "follower")), (Ids{"leader"}));
+    EXPECT_EQ(scene.others(scene.test(enough, "leader")), (Ids{"follower"}));
+    TtcCondition justShort(2.2);  // samples up to 2.25 s
+    EXPECT_FALSE(scene.test(justShort, "follower"));
+    TtcCondition roundedUp(2.4);  // ceil(2.4 / 0.25) = 10 samples reach 2.5 s
+    EXPECT_TRUE(scene.test(roundedUp, "follower"));
+}
+
+TEST(TtcCondition, SameSpeedFollowingNeverConflicts) {
+    Scene scene({car("a", 0, 0, 20, 0), car("b", 0, 5.5, 20, 0)});
+    TtcCondition c(30);
+    EXPECT_FALSE(scene.test(c, "a"));
+    EXPECT_FALSE(scene.test(c, "b"));
+}
+
+TEST(TtcCondition, Crossing) {
+    // Both fronts reach the crossing point (0, 0) at t = 2 s.
+    Scene scene({car("east", -20, 0, 10, 90), car("northbound", 0, -20, 10, 0)});
+    TtcCondition c(3);
+    EXPECT_EQ(scene.others(scene.test(c, "east")), (Ids{"northbound"}));
+    EXPECT_EQ(scene.others(scene.test(c, "northbound")), (Ids{"east"}));
+    TtcCondition tooShort(1);
+    EXPECT_FALSE(scene.test(tooShort, "east"));
+    // The crossing car passes well before: it is 40 m further ahead.
+    Scene passed({car("east", -20, 0, 10, 90), car("northbound", 0, 20, 10, 0)});
+    EXPECT_FALSE(passed.test(c, "east"));
+}
+
+TEST(TtcCondition, ParallelLanesDoNotConflict) {
+    // Overtaking in the next lane (3.2 m apart, 1.8 m wide cars): no overlap ever.
+    Scene scene({car("fast", 0, 0, 30, 0), car("slow", 3.2, 10, 10, 0), car("oncoming", -3.2, 60, 15, 180)});
+    TtcCondition c(10);
+    EXPECT_FALSE(scene.test(c, "fast"));
+    EXPECT_FALSE(scene.test(c, "slow"));
+    EXPECT_FALSE(scene.test(c, "oncoming"));
+}
+
+TEST(TtcCondition, TouchingCountsAsOverlap) {
+    // Side by side, exactly one width apart, same speed: touching at every sample.
+    Scene scene({car("left", 0, 0, 10, 0), car("right", 1.8, 0, 10, 0), car("gap", 5.6001, 0, 10, 0)});
+    TtcCondition c(1);
+    EXPECT_EQ(scene.others(scene.test(c, "left")), (Ids{"right"}));
+    EXPECT_EQ(scene.others(scene.test(c, "right")), (Ids{"left"}));
+    EXPECT_FALSE(scene.test(c, "gap"));
+}
+
+TEST(TtcCondition, StandingVehicles) {
+    // Two standing vehicles never conflict, even overlapping.
+    Scene standing({car("a", 0, 0, 0, 0), car("b", 0, 1, 0, 0)});
+    TtcCondition c(5);
+    EXPECT_FALSE(standing.test(c, "a"));
+    // A moving car runs into a standing one; dt comes from the moving car alone (5 m / 10 m/s).
+    Scene obstacle({car("mover", 0, 0, 10, 0), car("parked", 0, 25, 0, 0), car("parkedAside", 3, 25, 0, 0)});
+    EXPECT_EQ(obstacle.others(obstacle.test(c, "mover")), (Ids{"parked"}));
+    EXPECT_EQ(obstacle.others(obstacle.test(c, "parked")), (Ids{"mover"}));
+    // A standing car across the path.
+    Scene crossingObstacle({car("mover", -20, 0, 10, 90), car("blocking", 0, 2.5, 0, 0)});
+    EXPECT_TRUE(crossingObstacle.test(c, "mover"));
+}
+
+TEST(TtcCondition, DistanceIsInclusivePositionToPosition) {
+    // Head-on, fronts exactly 40 m apart.
+    Scene scene({car("north", 0, 0, 10, 0), car("south", 0, 40, 10, 180)});
+    TtcCondition within(3, 40);
+    EXPECT_EQ(within.neighbourRadius(), 40.0);
+    EXPECT_TRUE(scene.test(within, "north"));
+    TtcCondition outside(3, 39.999);
+    EXPECT_FALSE(scene.test(outside, "north"));
+    TtcCondition defaultDistance(3);
+    EXPECT_EQ(defaultDistance.distance(), 100.0);
+}
+
+TEST(TtcCondition, RejectsBadParameters) {
+    EXPECT_THROW(TtcCondition(0), std::invalid_argument);
+    EXPECT_THROW(TtcCondition(-1), std::invalid_argument);
+    EXPECT_THROW(TtcCondition(std::nan("")), std::invalid_argument);
+    EXPECT_THROW(TtcCondition(1, -5), std::invalid_argument);
+    EXPECT_THROW(TtcCondition(1, std::numeric_limits<double>::infinity()), std::invalid_argument);
+}
+
+TEST(TtcCondition, ConflictEqualsSamplingEveryStep) {
+    std::mt19937_64 rng(4242);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int conflicts = 0;
+    int touchingCases = 0;
+    constexpr int kPairs = 40'000;
+    for (int k = 0; k < kPairs; ++k) {
+        const auto angle = [&] { return unit(rng) < 0.5 ? 90.0 * std::floor(unit(rng) * 4) : 360 * unit(rng); };
+        const auto speed = [&] { return unit(rng) < 0.2 ? 0.0 : std::round(40 * unit(rng) * 4) / 4; };
+        const Footprint a = Footprint::fromSumo(V(0, 0), angle(), 3 + std::round(9 * unit(rng)), 1.5 + unit(rng));
+        Footprint b = Footprint::fromSumo(V(120 * unit(rng) - 60, 120 * unit(rng) - 60), angle(),
+                                          3 + std::round(9 * unit(rng)), 1.5 + unit(rng));
+        if (k % 4 == 0) {
+            // Parallel and exactly touching sideways: the delicate case for the interval search.
+            b = Footprint(a.centre() + (a.halfWidth() + b.halfWidth()) * a.right() + 20 * unit(rng) * a.heading(),
+                          a.heading(), 2 * b.halfLength(), 2 * b.halfWidth());
+            ++touchingCases;
+        }
+        const double va = speed();
+        const double vb = speed();
+        const double ttc = std::vector<double>{0.3, 1, 2.5, 6, 12}[k % 5];
+        const bool expected = naiveConflict(a, va, b, vb, ttc);
+        ASSERT_EQ(TtcCondition::conflict(a, va, b, vb, ttc), expected)
+            << "pair " << k << ": a " << a.centre().transpose() << " h " << a.heading().transpose() << " v " << va
+            << "; b " << b.centre().transpose() << " h " << b.heading().transpose() << " v " << vb << "; ttc " << ttc;
+        conflicts += expected;
+    }
+    EXPECT_GT(touchingCases, 0);
+    EXPECT_GT(conflicts, kPairs / 20);  // both outcomes are well represented
+    EXPECT_LT(conflicts, kPairs * 19 / 20);
+}
+
+TEST(TtcCondition, MatchesAllPairsOnRandomTraffic) {
+    std::mt19937_64 rng(77);
+    std::uniform_real_distribution<double> coordinate(0, 250);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<Vehicle> vehicles;
+    for (int k = 0; k < 400; ++k) {
+        vehicles.push_back(car("v" + std::to_string(k), coordinate(rng), coordinate(rng),
+                               unit(rng) < 0.2 ? 0 : 30 * unit(rng), 360 * unit(rng), 4 + 3 * unit(rng),
+                               1.6 + 0.8 * unit(rng)));
+    }
+    Scene scene(vehicles, SimTime::fromSeconds(3), 40);
+    const traffic::VehicleSnapshot& s = scene.snapshot();
+    TtcCondition c(4, 40);
+    c.prepare(scene.ctx());
+    std::size_t total = 0;
+    for (VehicleIndex ego = 0; ego < s.size(); ++ego) {
+        std::vector<VehicleIndex> expected;
+        const Footprint fe =
+            Footprint::fromSumo(s.positions().col(ego), s.angles()[ego], s.lengths()[ego], s.widths()[ego]);
+        for (VehicleIndex o = 0; o < s.size(); ++o) {
+            if (o == ego || (s.positions().col(o) - s.positions().col(ego)).squaredNorm() > 40.0 * 40.0) continue;
+            const Footprint fo =
+                Footprint::fromSumo(s.positions().col(o), s.angles()[o], s.lengths()[o], s.widths()[o]);
+            if (naiveConflict(fe, s.speeds()[ego], fo, s.speeds()[o], 4)) expected.push_back(o);
+        }
+        ASSERT_EQ(c.test(scene.ctx(), ego).others(), expected) << "ego " << ego;
+        total += expected.size();
+    }
+    EXPECT_GT(total, 20u);
+}
+
+}  // namespace
+}  // namespace sbsim::storyboard::test
