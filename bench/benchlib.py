@@ -1,0 +1,90 @@
+"""Shared pieces of the benchmarks: scenario cache, timed runs, medians and tables."""
+
+from __future__ import annotations
+
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+OUT = ROOT / "bench" / "out"
+sys.path.insert(0, str(ROOT / "tools"))
+
+from make_grid import make_preset, sumo_binary  # noqa: E402
+
+
+def scenario(preset: str) -> Path:
+    """The preset's .sumocfg, generated once into bench/out/<preset>/."""
+    folder = OUT / preset
+    cfg = folder / f"{preset}.sumocfg"
+    if not cfg.exists():
+        print(f"generating {preset} scenario in {folder} ...", flush=True)
+        make_preset(folder, preset)
+    return cfg
+
+
+def sumo() -> str:
+    return str(sumo_binary("sumo"))
+
+
+def sbsim() -> str:
+    """The installed program (run ./sbsim once to build it), or $SBSIM_EXECUTABLE."""
+    override = os.environ.get("SBSIM_EXECUTABLE")
+    if override:
+        return override
+    candidate = Path(sys.prefix) / "bin" / "sbsim"
+    if not candidate.exists():
+        sys.exit("sbsim is not installed in this Python's environment: run ./sbsim once first")
+    return str(candidate)
+
+
+@dataclass(frozen=True)
+class Run:
+    wall: float  # seconds
+    cpu: float  # user + system seconds of the process
+    rss_mb: float  # peak resident memory
+    stdout: str
+
+
+def timed(cmd: Sequence[str]) -> Run:
+    """Runs cmd to completion; os.wait4 gives this child's own CPU time and peak memory."""
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        start = time.perf_counter()
+        proc = subprocess.Popen(cmd, stdout=out, stderr=err, text=True)
+        _, status, usage = os.wait4(proc.pid, 0)
+        wall = time.perf_counter() - start
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        out.seek(0)
+        err.seek(0)
+        if proc.returncode != 0:
+            sys.exit(f"command failed ({proc.returncode}): {' '.join(cmd)}\n{err.read()[-2000:]}")
+        return Run(wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0, out.read())
+
+
+def alternate(commands: dict[str, Sequence[str]], runs: int) -> dict[str, list[Run]]:
+    """Runs each command `runs` times, interleaved (A B C A B C ...), so drift hits all alike."""
+    results: dict[str, list[Run]] = {name: [] for name in commands}
+    for i in range(runs):
+        for name, cmd in commands.items():
+            r = timed(cmd)
+            results[name].append(r)
+            print(f"  run {i + 1}/{runs} {name:<22} wall {r.wall:7.2f} s  cpu {r.cpu:7.2f} s", flush=True)
+    return results
+
+
+def median(values: Sequence[float]) -> float:
+    return statistics.median(values)
+
+
+def summary_value(stdout: str, key: str) -> float:
+    """A number from sbsim's summary line `key: <number> ...`."""
+    for line in stdout.splitlines():
+        if line.startswith(key + ":"):
+            return float(line.split(":", 1)[1].split()[0])
+    raise KeyError(key)

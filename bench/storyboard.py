@@ -1,0 +1,69 @@
+"""Storyboard benchmark: the six-story set (bench/stories/six_stories.py) against plain `sumo` on
+grids with 1,000 to 20,000 running vehicles. Prints, per grid, medians of interleaved runs, the
+wall-time ratio, and the storyboard's own time per step and per vehicle-step (which should stay
+flat if the storyboard's time grows linearly with the number of vehicles).
+Targets: at most 1.10x sumo at 5,000 vehicles, 1.15x at 20,000.
+
+    .venv/bin/python bench/storyboard.py [--presets bench1k bench5k bench20k] [--end 300] [--runs 3]
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from benchlib import alternate, median, sbsim, scenario, summary_value, sumo
+
+STORY = Path(__file__).resolve().parent / "stories" / "six_stories.py"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--presets", nargs="+", default=["bench1k", "bench5k", "bench20k"])
+    parser.add_argument("--end", type=float, default=300.0, help="simulated seconds (default 300)")
+    parser.add_argument("--runs", type=int, default=3, help="runs per command (default 3)")
+    args = parser.parse_args()
+
+    rows = []
+    for preset in args.presets:
+        cfg = str(scenario(preset))
+        end = repr(args.end)
+        print(f"{preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
+        results = alternate(
+            {
+                "sumo": [sumo(), "-c", cfg, "--end", end],
+                "sbsim + six stories": [sbsim(), "--sumocfg", cfg, "--end", end, "--story", str(STORY)],
+            },
+            args.runs,
+        )
+        story_runs = results["sbsim + six stories"]
+        steps = summary_value(story_runs[0].stdout, "steps")
+        # Vehicle-steps: the grids hold their full count after the 100 s ramp, so use the peak.
+        running = summary_value(story_runs[0].stdout, "peak running")
+        board = median([summary_value(r.stdout, "time in storyboard") for r in story_runs])
+        reading = median([summary_value(r.stdout, "time reading vehicles") for r in story_runs])
+        rows.append(
+            (
+                preset,
+                running,
+                median([r.wall for r in results["sumo"]]),
+                median([r.wall for r in story_runs]),
+                1000 * board / steps,
+                1e6 * board / (steps * running),
+                1000 * reading / steps,
+            )
+        )
+
+    print(
+        f"\n{'grid':<10} {'vehicles':>8} {'sumo':>9} {'sbsim':>9} {'ratio':>7} "
+        f"{'storyboard/step':>16} {'per vehicle-step':>17} {'reading/step':>13}"
+    )
+    for preset, running, base, wall, per_step, per_vehicle, reading in rows:
+        print(
+            f"{preset:<10} {running:8.0f} {base:7.2f} s {wall:7.2f} s {wall / base:6.3f}x "
+            f"{per_step:13.2f} ms {per_vehicle:14.3f} us {reading:10.2f} ms"
+        )
+
+
+if __name__ == "__main__":
+    main()
