@@ -23,7 +23,7 @@ def main() -> None:
     end = repr(args.end)
     commands = {
         "sumo": [sumo(), "-c", cfg, "--end", end],
-        "sbsim": [sbsim(), "--sumocfg", cfg, "--end", end, "--quiet"],
+        "sbsim": [sbsim(), "--sumocfg", cfg, "--end", end],
         "sbsim --threads 1": [sbsim(), "--sumocfg", cfg, "--end", end, "--threads", "1"],
     }
     print(f"{args.preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
