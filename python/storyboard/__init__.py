@@ -9,7 +9,7 @@ Inside a story run by ``sbsim --story``, ``import storyboard`` gives Artery's st
 from __future__ import annotations
 
 from functools import reduce
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 __version__ = "0.1.0"
 
@@ -51,8 +51,43 @@ try:  # the C++ core exists only inside the sbsim program
 except ImportError:  # imported by a plain Python (tests, tools, the runner)
     IN_SBSIM = False
 
-if TYPE_CHECKING:
-    from _sbsim import Condition as _Condition  # noqa: F401
+__all__ = [
+    "AndCondition",
+    "CarSetCondition",
+    "Condition",
+    "Coord",
+    "DeferringCondition",
+    "Effect",
+    "EmergencyStopEffect",
+    "LikelihoodCondition",
+    "LimitCondition",
+    "OrCondition",
+    "PolygonCondition",
+    "RandomNumberGenerator",
+    "SignalEffect",
+    "SignalEffectFactory",
+    "SimTime",
+    "Snapshot",
+    "SpeedConditionGreater",
+    "SpeedConditionLess",
+    "SpeedDifferenceConditionFaster",
+    "SpeedDifferenceConditionSlower",
+    "SpeedEffect",
+    "SpeedEffectFactory",
+    "StopEffect",
+    "StopEffectFactory",
+    "Story",
+    "Storyboard",
+    "TimeCondition",
+    "TtcCondition",
+    "Vehicle",
+    "VehicleController",
+    "IN_SBSIM",
+    "all_of",
+    "any_of",
+    "milliseconds",
+    "seconds",
+]
 
 
 def _require_sbsim(name: str) -> None:

@@ -1,0 +1,181 @@
+# Types of the story API that sbsim provides to story scripts (implemented in C++).
+from collections.abc import Iterable
+from typing import Protocol
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+IN_SBSIM: bool
+
+class SimTime:
+    def __init__(self, seconds: float | SimTime = 0.0) -> None: ...
+    @property
+    def seconds(self) -> float: ...
+    def __float__(self) -> float: ...
+    def __add__(self, other: Seconds) -> SimTime: ...
+    def __radd__(self, other: Seconds) -> SimTime: ...
+    def __sub__(self, other: Seconds) -> SimTime: ...
+    def __rsub__(self, other: Seconds) -> SimTime: ...
+    def __lt__(self, other: Seconds) -> bool: ...
+    def __le__(self, other: Seconds) -> bool: ...
+    def __gt__(self, other: Seconds) -> bool: ...
+    def __ge__(self, other: Seconds) -> bool: ...
+
+class Coord:
+    """A point in Artery's canvas frame: x = x_sumo - xmin, y = ymax - y_sumo."""
+
+    x: float
+    y: float
+    def __init__(self, x: float, y: float) -> None: ...
+
+Seconds = SimTime | float | int
+Point = Coord | tuple[float, float]
+
+class RandomNumberGenerator:
+    @property
+    def index(self) -> int: ...
+    def uniform(self, a: float = 0.0, b: float = 1.0) -> float: ...
+
+class Vehicle:
+    """One vehicle of the current step's snapshot (valid during the call it is passed to)."""
+
+    id: str
+    index: int
+    x: float
+    y: float
+    position: tuple[float, float]
+    speed: float
+    angle: float
+    acceleration: float
+    length: float
+    width: float
+    max_speed: float
+    road: str
+    lane: str
+    type: str
+    time: float
+
+class Snapshot:
+    """All running vehicles after a step, ascending id order; arrays are read-only views."""
+
+    time: float
+    ids: list[str]
+    positions: npt.NDArray[np.float64]  # shape (N, 2)
+    speeds: npt.NDArray[np.float64]
+    angles: npt.NDArray[np.float64]
+    accelerations: npt.NDArray[np.float64]
+    lengths: npt.NDArray[np.float64]
+    widths: npt.NDArray[np.float64]
+    max_speeds: npt.NDArray[np.float64]
+    def __len__(self) -> int: ...
+    def index_of(self, id: str) -> int | None: ...
+
+class VehicleController:
+    id: str
+    type_id: str
+    road_id: str
+    lane_id: str
+    lane_index: int
+    speed: float
+    max_speed: float
+    speed_mode: int
+    def set_max_speed(self, mps: float) -> None: ...
+    def set_speed(self, mps: float) -> None: ...
+    def slow_down(self, mps: float, seconds: float) -> None: ...
+    def set_speed_mode(self, mode: int) -> None: ...
+    def change_lane(self, lane_index: int, seconds: float) -> None: ...
+
+class Condition:
+    """Base of custom conditions: override test() or the vectorised test_all()."""
+
+    def __init__(self) -> None: ...
+
+class _CustomCondition(Protocol):
+    def test(self, vehicle: Vehicle) -> bool | set[str]: ...
+    def test_all(self, snapshot: Snapshot) -> npt.NDArray[np.bool_]: ...
+
+class TimeCondition(Condition):
+    def __init__(self, begin: Seconds, end: Seconds | None = None) -> None: ...
+
+class SpeedConditionGreater(Condition):
+    def __init__(self, mps: float) -> None: ...
+
+class SpeedConditionLess(Condition):
+    def __init__(self, mps: float) -> None: ...
+
+class CarSetCondition(Condition):
+    def __init__(self, ids: str | Iterable[str]) -> None: ...
+
+class PolygonCondition(Condition):
+    def __init__(self, points: Iterable[Point]) -> None: ...
+
+class SpeedDifferenceConditionFaster(Condition):
+    def __init__(self, delta: float, distance: float | None = None) -> None: ...
+
+class SpeedDifferenceConditionSlower(Condition):
+    def __init__(self, delta: float, distance: float | None = None) -> None: ...
+
+class TtcCondition(Condition):
+    def __init__(self, ttc: float, distance: float = 100.0) -> None: ...
+
+class AndCondition(Condition):
+    def __init__(self, a: Condition, b: Condition) -> None: ...
+
+class OrCondition(Condition):
+    def __init__(self, a: Condition, b: Condition) -> None: ...
+
+class LimitCondition(Condition):
+    def __init__(self, n: int) -> None: ...
+
+class LikelihoodCondition(Condition):
+    def __init__(self, rng: RandomNumberGenerator, p: float) -> None: ...
+
+class DeferringCondition(Condition):
+    def __init__(self, rng: RandomNumberGenerator, min: Seconds, max: Seconds) -> None: ...
+
+class Effect:
+    """Base of custom effects: override apply(self, vehicle) and remove(self, vehicle)."""
+
+    def __init__(self) -> None: ...
+
+class SpeedEffect(Effect):
+    speed: float
+    def __init__(self, mps: float) -> None: ...
+
+class StopEffect(Effect):
+    def __init__(self) -> None: ...
+
+class EmergencyStopEffect(Effect):
+    def __init__(self) -> None: ...
+
+class SignalEffect(Effect):
+    cause: str
+    def __init__(self, cause: str) -> None: ...
+
+SpeedEffectFactory = SpeedEffect
+StopEffectFactory = StopEffect
+SignalEffectFactory = SignalEffect
+
+class Story:
+    name: str
+    activations: int
+    def __init__(
+        self, condition: Condition, effects: Iterable[Effect] | None = None, name: str | None = None
+    ) -> None: ...
+
+class Storyboard:
+    stories: list[Story]
+    warmup_end_time: SimTime
+    def registerStory(self, story: Story) -> None: ...
+    def register_story(self, story: Story) -> None: ...
+    def getRandomNumberGenerator(self, k: int = 0) -> RandomNumberGenerator: ...
+    def random_generator(self, k: int = 0) -> RandomNumberGenerator: ...
+    def getWarmupEndTime(self) -> SimTime: ...
+    def convertTraciPosition(self, x: float, y: float) -> Coord: ...
+    def convert_traci_position(self, x: float, y: float) -> Coord: ...
+
+def all_of(*conditions: Condition) -> Condition: ...
+def any_of(*conditions: Condition) -> Condition: ...
+def seconds(x: float) -> SimTime: ...
+def milliseconds(x: float) -> SimTime: ...
