@@ -1,0 +1,12 @@
+#pragma once
+
+#include <ostream>
+
+#include "kernel/SimTime.h"
+
+namespace sbsim::kernel {
+
+/// Lets GoogleTest print times in failure messages as seconds instead of raw bytes.
+inline void PrintTo(const SimTime& t, std::ostream* os) { *os << t.str() << " s"; }
+
+}  // namespace sbsim::kernel
