@@ -23,8 +23,10 @@ std::int32_t SnapshotBuilder::roadOfLane(std::int32_t lane) {
 
 void SnapshotBuilder::addVehicles(const std::vector<std::string>& ids) {
     for (const std::string& id : ids) {
-        Record r{libsumo::Vehicle::getLength(id), libsumo::Vehicle::getWidth(id),
-                 intern(libsumo::Vehicle::getTypeID(id))};
+        Record r;
+        r.length = libsumo::Vehicle::getLength(id);
+        r.width = libsumo::Vehicle::getWidth(id);
+        r.type = intern(libsumo::Vehicle::getTypeID(id));
         running_.insert_or_assign(id, std::move(r));
     }
     orderStale_ = orderStale_ || !ids.empty();

@@ -35,9 +35,9 @@ public:
 
 private:
     struct Record {
-        double length;
-        double width;
-        std::int32_t type;
+        double length = 0;
+        double width = 0;
+        std::int32_t type = 0;
         std::string lane;          // last lane id read
         std::int32_t laneIndex = -1;  // interned index of `lane`; -1: changed, intern it
         std::int32_t road = -1;

@@ -13,6 +13,8 @@ StderrCapture::StderrCapture() {
     if (file_ == nullptr) return;  // cannot capture: errors simply stay on stderr
     savedFd_ = dup(STDERR_FILENO);
     if (savedFd_ < 0 || dup2(fileno(file_), STDERR_FILENO) < 0) {
+        if (savedFd_ >= 0) close(savedFd_);
+        savedFd_ = -1;
         std::fclose(file_);
         file_ = nullptr;
     }

@@ -4,6 +4,7 @@
 #include <libsumo/Vehicle.h>
 
 #include <algorithm>
+#include <limits>
 #include <chrono>
 #include <cstdio>
 
@@ -46,6 +47,7 @@ const kernel::SignalId SumoBridge::stepSignal = kernel::registerSignal("sumoStep
 SumoBridge::SumoBridge(SumoSettings settings)
     : kernel::Module("sumo"), settings_(std::move(settings)), builder_(settings_.threads) {
     stepMessage_.setPriority(kStepPriority);
+    endMessage_.setPriority(std::numeric_limits<int>::max());
 }
 
 SumoBridge::~SumoBridge() { close(); }
@@ -93,18 +95,21 @@ void SumoBridge::initialize() {
     std::sort(present.begin(), present.end());
     builder_.addVehicles(present);
     vehiclesSeen_ += present.size();
+    peakRunning_ = builder_.running();
     builder_.fill(snapshot_, begin_);
     scheduleNextStep();
 }
 
 void SumoBridge::scheduleNextStep() {
     const kernel::SimTime next = begin_ + stepLength_ * static_cast<kernel::SimTime::rep>(steps_ + 1);
-    if (end_ && next > *end_) {
-        endReason_ = EndReason::EndTime;
-        simulation().stop();
-        return;
-    }
+    if (end_ && next > *end_) return endRun(EndReason::EndTime);
     scheduleAt(next, stepMessage_);
+}
+
+void SumoBridge::endRun(EndReason reason) {
+    endReason_ = reason;
+    // Everything else due now (services, radio messages) still happens before the run stops.
+    scheduleAt(simTime(), endMessage_);
 }
 
 void SumoBridge::announce(const std::vector<std::string>& ids, kernel::SignalId signal) {
@@ -112,6 +117,7 @@ void SumoBridge::announce(const std::vector<std::string>& ids, kernel::SignalId 
 }
 
 void SumoBridge::handleMessage(kernel::Message& msg) {
+    if (&msg == &endMessage_) return simulation().stop();
     if (&msg != &stepMessage_) return kernel::Module::handleMessage(msg);
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
@@ -134,11 +140,7 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     announce(arrived, arrivedSignal);
     emit(stepSignal, static_cast<const kernel::Object&>(snapshot_));
 
-    if (libsumo::Simulation::getMinExpectedNumber() <= 0) {
-        endReason_ = EndReason::NoMoreVehicles;
-        simulation().stop();
-        return;
-    }
+    if (libsumo::Simulation::getMinExpectedNumber() <= 0) return endRun(EndReason::NoMoreVehicles);
     scheduleNextStep();
 }
 

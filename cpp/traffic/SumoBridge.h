@@ -32,8 +32,9 @@ public:
 /// Drives SUMO through libsumo as a kernel module: one self-message per SUMO step. After each step
 /// it refreshes the vehicle snapshot and emits, in this order, `departedSignal` (one per vehicle,
 /// value: id), `arrivedSignal` (one per vehicle, value: id) and `stepSignal` (value: the snapshot).
-/// Vehicles are reported in ascending byte order of id. SUMO is closed in finish() or, at the
-/// latest, by the destructor, whatever happened.
+/// Vehicles are reported in ascending byte order of id. The run stops after the step that reaches
+/// the end time, or when SUMO expects no more vehicles, once every other event due at that time has
+/// been delivered. SUMO is closed in finish() or, at the latest, by the destructor, whatever happened.
 class SumoBridge : public kernel::Module {
 public:
     static const kernel::SignalId departedSignal;
@@ -75,6 +76,7 @@ public:
 private:
     void close();
     void scheduleNextStep();
+    void endRun(EndReason reason);
     void announce(const std::vector<std::string>& ids, kernel::SignalId signal);
 
     SumoSettings settings_;
@@ -84,6 +86,7 @@ private:
     std::optional<kernel::SimTime> end_;
     Eigen::Matrix2d boundary_ = Eigen::Matrix2d::Zero();
     kernel::Message stepMessage_{"sumo step"};
+    kernel::Message endMessage_{"end of run"};
     SnapshotBuilder builder_;
     VehicleSnapshot snapshot_;
     EndReason endReason_ = EndReason::Running;

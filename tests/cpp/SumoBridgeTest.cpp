@@ -1,5 +1,7 @@
 // SumoBridge as a kernel module: loading, errors, end time, step timing among other events.
 #include <gtest/gtest.h>
+
+#include <optional>
 #include <libsumo/Simulation.h>
 #include <unistd.h>
 
@@ -208,7 +210,30 @@ TEST(SumoBridge, EndBeforeTheFirstStepRunsNoEvent) {
     EXPECT_EQ(sim.run(sec(1000)), Simulation::StopReason::Requested);
     EXPECT_EQ(bridge.steps(), 0u);
     EXPECT_EQ(bridge.endReason(), SumoBridge::EndReason::EndTime);
-    EXPECT_EQ(sim.eventCount(), 0u);
+    EXPECT_EQ(sim.eventCount(), 1u);  // only the end-of-run event itself
+}
+
+TEST(SumoBridge, EventsDueAtTheEndTimeStillHappen) {
+    // A timer at exactly the end time comes after that step (steps go first) but before the stop.
+    class AtEnd : public kernel::Module {
+    public:
+        AtEnd() : Module("at end") {}
+        void initialize() override { scheduleAt(sec(30), timer_); }
+        void handleMessage(kernel::Message&) override { fired = simTime(); }
+        std::optional<SimTime> fired;
+
+    private:
+        kernel::Message timer_{"at end"};
+    };
+    traffic::SumoSettings settings = scenarioSettings();
+    settings.end = sec(30);
+    Simulation sim;
+    auto& bridge = sim.emplaceModule<SumoBridge>(settings);
+    auto& atEnd = sim.emplaceModule<AtEnd>();
+    EXPECT_EQ(sim.run(), Simulation::StopReason::Requested);
+    EXPECT_EQ(bridge.steps(), 30u);
+    ASSERT_TRUE(atEnd.fired.has_value());
+    EXPECT_EQ(*atEnd.fired, sec(30));
 }
 
 TEST(SumoBridge, SubSecondStepsKeepExactTime) {
