@@ -18,11 +18,17 @@ T parseNumber(const std::string& option, const std::string& text) {
     return value;
 }
 
+double positive(const std::string& option, double value) {
+    if (!std::isfinite(value) || value <= 0) throw UsageError("option " + option + " expects a number > 0");
+    return value;
+}
+
 }  // namespace
 
 std::string CommandLine::usage() {
     return R"(usage: sbsim [--sumocfg FILE] [--story FILE.py] [--events FILE.jsonl] [--end SECONDS]
-             [--seed N] [--sumo-option "..."]... [--quiet] [--version] [--help]
+             [--seed N] [--sumo-option "..."]... [--services FILE.xml] [--plugin LIB.so]...
+             [--quiet] [--version] [--help]
 
 Runs SUMO through libsumo, with an Artery-style storyboard making traffic dynamic.
 Without --sumocfg, runs the bundled scenario (stories/grid-rain).
@@ -33,6 +39,16 @@ Without --sumocfg, runs the bundled scenario (stories/grid-rain).
   --end SECONDS        stop after the step reaching this time (default: the sumocfg's end)
   --seed N             seed for SUMO (--seed) and the storyboard's random generators
   --sumo-option "..."  extra SUMO options, split into words as a shell would; repeatable
+  --services FILE.xml  per-vehicle services (Artery's services file format)
+  --plugin LIB.so      load service modules built with sbsim_add_service_module; repeatable
+  --middleware-interval SECONDS
+                       time between service triggers (default 0.1)
+  --v2x-range METRES   broadcast range (default 500)
+  --v2x-latency SECONDS
+                       broadcast latency (default 0.001)
+  --v2x-fade-start METRES
+                       packet errors: reception certain up to here, falling linearly to 0 at
+                       the range (default: no packet errors)
   --threads N          threads reading vehicle states after each step (default 0: all cores)
   --quiet              no progress, no summary, no SUMO warnings
   --version            print the version and exit
@@ -77,6 +93,20 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
             } catch (const std::invalid_argument& e) {
                 throw UsageError(std::string("option --sumo-option: ") + e.what());
             }
+        } else if (option == "--services") {
+            cl.services = value();
+        } else if (option == "--plugin") {
+            cl.plugins.emplace_back(value());
+        } else if (option == "--middleware-interval") {
+            cl.middlewareInterval = positive(option, parseNumber<double>(option, value()));
+        } else if (option == "--v2x-range") {
+            cl.v2xRange = positive(option, parseNumber<double>(option, value()));
+        } else if (option == "--v2x-latency") {
+            cl.v2xLatency = parseNumber<double>(option, value());
+            if (!std::isfinite(cl.v2xLatency) || cl.v2xLatency < 0) throw UsageError("option --v2x-latency expects seconds >= 0");
+        } else if (option == "--v2x-fade-start") {
+            cl.v2xFadeStart = parseNumber<double>(option, value());
+            if (!std::isfinite(*cl.v2xFadeStart) || *cl.v2xFadeStart < 0) throw UsageError("option --v2x-fade-start expects metres >= 0");
         } else if (option == "--threads") {
             const auto threads = parseNumber<std::int64_t>(option, value());
             if (threads < 0 || threads > 256) throw UsageError("option --threads expects 0 (all cores) to 256");

@@ -22,6 +22,12 @@ struct CommandLine {
     std::optional<double> end;  ///< seconds
     std::optional<std::int64_t> seed;
     std::vector<std::string> sumoOptions;  ///< already split into words
+    std::optional<std::filesystem::path> services;  ///< Artery-format services file
+    std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
+    double middlewareInterval = 0.1;                ///< s between service triggers
+    double v2xRange = 500;                          ///< m
+    double v2xLatency = 0.001;                      ///< s
+    std::optional<double> v2xFadeStart;             ///< m; none: no packet errors
     bool quiet = false;
     bool help = false;
     bool version = false;

@@ -12,7 +12,12 @@
 #include "app/BundledScenario.h"
 #include "app/CommandLine.h"
 #include "app/ProgressDisplay.h"
+#include "app/PluginLibrary.h"
 #include "kernel/Simulation.h"
+#include "services/Medium.h"
+#include "services/ServiceManager.h"
+#include "services/ServiceRegistry.h"
+#include "services/ServicesConfig.h"
 #include "storyboard/CanvasFrame.h"
 #include "storyboard/EventLog.h"
 #include "storyboard/StoryError.h"
@@ -67,6 +72,33 @@ int run(const CommandLine& cl) {
     }
     requireReadableFile("--sumocfg", sumocfg);
     if (story) requireReadableFile("--story", *story);
+    if (cl.services) requireReadableFile("--services", *cl.services);
+    // Plugins first: their services must be registered before the services file is checked.
+    std::vector<std::unique_ptr<PluginLibrary>> plugins;
+    for (const fs::path& plugin : cl.plugins) {
+        requireReadableFile("--plugin", plugin);
+        try {
+            plugins.push_back(std::make_unique<PluginLibrary>(plugin));
+        } catch (const std::exception& e) {
+            throw InputError("--plugin: cannot load '" + plugin.string() + "': " + e.what());
+        }
+    }
+    std::optional<services::ServicesConfig> servicesConfig;
+    if (cl.services) {
+        try {
+            servicesConfig = services::ServicesConfig::load(*cl.services);
+        } catch (const std::exception& e) {
+            throw InputError(std::string("--services: ") + e.what());
+        }
+        for (const services::ServiceSpec& spec : servicesConfig->services()) {
+            if (!services::ServiceRegistry::instance().contains(spec.type)) {
+                std::string known;
+                for (const std::string& n : services::ServiceRegistry::instance().names()) known += (known.empty() ? "" : ", ") + n;
+                throw InputError("--services: " + cl.services->string() + ":" + std::to_string(spec.line) +
+                                 ": unknown service type '" + spec.type + "' (known: " + known + ")");
+            }
+        }
+    }
     std::ofstream events;
     if (cl.events) {
         events.open(*cl.events, std::ios::out | std::ios::trunc);
@@ -107,6 +139,26 @@ int run(const CommandLine& cl) {
         }
     }
 
+    services::ServiceManager* serviceManager = nullptr;
+    services::Medium* medium = nullptr;
+    if (servicesConfig) {
+        serviceManager = &sim.emplaceModule<services::ServiceManager>(
+            std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval), sumo.snapshot());
+        services::MediumSettings radio;
+        radio.range = cl.v2xRange;
+        radio.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
+        radio.fadeStart = cl.v2xFadeStart;
+        radio.seed = static_cast<std::uint64_t>(cl.seed.value_or(kDefaultSeed));
+        try {
+            medium = &sim.emplaceModule<services::Medium>(
+                radio, sumo.snapshot(), [serviceManager](const std::string& id) { return serviceManager->middlewareOf(id); });
+        } catch (const std::invalid_argument& e) {
+            throw InputError(e.what());
+        }
+        serviceManager->setMedium(*medium);
+        serviceManager->attach(sumo);
+    }
+
     std::unique_ptr<ProgressDisplay> progress;
     if (!cl.quiet && isatty(STDERR_FILENO)) {
         progress = std::make_unique<ProgressDisplay>(stderr, sumo.endTime());
@@ -131,6 +183,13 @@ int run(const CommandLine& cl) {
         if (board != nullptr) {
             for (const auto& st : board->stories()) {
                 std::printf("activations %s: %llu\n", st->name().c_str(), static_cast<unsigned long long>(st->activations()));
+            }
+        }
+        if (serviceManager != nullptr) {
+            std::printf("services created: %zu\n", serviceManager->servicesCreated());
+            for (const auto& [type, counts] : medium->counts()) {
+                std::printf("messages %s: sent %llu, delivered %llu\n", type.c_str(),
+                            static_cast<unsigned long long>(counts.sent), static_cast<unsigned long long>(counts.delivered));
             }
         }
         std::printf("wall time: %.3f s\n", wall);

@@ -34,6 +34,8 @@ public:
     virtual void finish() {}
 
 protected:
+    /// For modules named after construction (services are named for their vehicle).
+    void setName(std::string name) { name_ = std::move(name); }
     /// Self-message (timer) at absolute time `at`; `msg` stays owned by the caller.
     void scheduleAt(SimTime at, Message& msg);
     void scheduleAfter(SimTime delay, Message& msg) { scheduleAt(simTime() + delay, msg); }

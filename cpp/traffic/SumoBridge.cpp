@@ -97,6 +97,7 @@ void SumoBridge::initialize() {
     vehiclesSeen_ += present.size();
     peakRunning_ = builder_.running();
     builder_.fill(snapshot_, begin_);
+    announce(present, departedSignal);
     scheduleNextStep();
 }
 

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/Module.h"
+#include "services/Service.h"
+#include "traffic/VehicleController.h"
+
+namespace sbsim::services {
+
+class ServiceManager;
+
+/// One vehicle's middleware: created when the vehicle departs, it hosts the vehicle's services
+/// (which the simulation owns, as modules), triggers them every update interval, and hands them
+/// storyboard signals and incoming V2X messages. Removed, services first, when the vehicle arrives.
+class Middleware : public kernel::Module {
+public:
+    /// A V2X message on its way to this middleware.
+    struct Delivery : kernel::Message {
+        explicit Delivery(std::shared_ptr<const V2xMessage> m) : kernel::Message("v2x"), message(std::move(m)) {}
+        std::shared_ptr<const V2xMessage> message;
+    };
+
+    Middleware(ServiceManager& manager, std::string vehicleId);
+
+    const std::string& vehicleId() const { return vehicleId_; }
+    traffic::VehicleController& controller() { return *controller_; }
+    ServiceManager& manager() const { return manager_; }
+    const std::vector<Service*>& services() const { return services_; }
+
+    /// Hosts `service` (already owned by the simulation) with its configuration.
+    void host(Service& service, const ServiceSpec& spec);
+    void signal(const storyboard::StoryboardSignal& signal);
+
+    void initialize() override;
+    void handleMessage(kernel::Message& msg) override;
+
+private:
+    ServiceManager& manager_;
+    std::string vehicleId_;
+    std::unique_ptr<traffic::VehicleController> controller_;
+    std::vector<Service*> services_;
+    kernel::Message triggerTimer_{"middleware trigger"};
+};
+
+}  // namespace sbsim::services

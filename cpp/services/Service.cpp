@@ -1,0 +1,38 @@
+#include "services/Service.h"
+
+#include <stdexcept>
+
+#include "services/Middleware.h"
+#include "services/ServiceManager.h"
+#include "services/ServicesConfig.h"
+
+namespace sbsim::services {
+
+namespace {
+Middleware& hostOf(Middleware* m) {
+    if (m == nullptr) throw std::logic_error("service is not hosted by a middleware yet");
+    return *m;
+}
+}  // namespace
+
+const std::string& Service::vehicleId() const { return hostOf(middleware_).vehicleId(); }
+traffic::VehicleController& Service::vehicle() { return hostOf(middleware_).controller(); }
+const traffic::VehicleSnapshot& Service::snapshot() const { return hostOf(middleware_).manager().snapshot(); }
+
+std::optional<traffic::VehicleSnapshot::Index> Service::selfIndex() const { return snapshot().indexOf(vehicleId()); }
+
+void Service::send(std::unique_ptr<V2xMessage> message) {
+    hostOf(middleware_).manager().medium().broadcast(vehicleId(), std::move(message));
+}
+
+void Service::listenToAllSignals() { hostOf(middleware_).manager().listenToAllSignals(*this); }
+
+std::optional<std::string> Service::parameter(const std::string& name) const {
+    return spec_ == nullptr ? std::nullopt : spec_->parameter(name);
+}
+
+double Service::numberParameter(const std::string& name, double fallback) const {
+    return spec_ == nullptr ? fallback : spec_->number(name, fallback);
+}
+
+}  // namespace sbsim::services

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "kernel/Module.h"
+#include "services/V2xMessage.h"
+#include "storyboard/StoryboardSignal.h"
+#include "traffic/VehicleController.h"
+#include "traffic/VehicleSnapshot.h"
+
+namespace sbsim::services {
+
+class Middleware;
+struct ServiceSpec;
+
+/// Base of per-vehicle V2X applications, in OMNeT++'s style: a kernel module with
+/// initialize() when its vehicle departs, finish() when it arrives (or the run ends), its own
+/// timers (scheduleAt / cancelEvent / handleMessage), plus the middleware's calls below.
+///
+///     class Beacon : public sbsim::services::Service {
+///         void trigger() override { send(std::make_unique<BeaconMessage>()); }
+///     };
+///     SBSIM_REGISTER_SERVICE(Beacon);
+class Service : public kernel::Module {
+public:
+    Service() : kernel::Module("service") {}
+
+    /// Every middleware update interval (default 0.1 s), on the interval's grid.
+    virtual void trigger() {}
+    /// A storyboard SignalEffect fired for this vehicle (or for any, after listenToAllSignals()).
+    virtual void receiveSignal(const storyboard::StoryboardSignal& /*signal*/) {}
+    /// A message another vehicle's service broadcast, arriving here.
+    virtual void indicate(const V2xMessage& /*message*/) {}
+
+    const std::string& vehicleId() const;
+
+protected:
+    /// Commands and live queries for this service's vehicle.
+    traffic::VehicleController& vehicle();
+    /// The current step's snapshot of all vehicles (read-only).
+    const traffic::VehicleSnapshot& snapshot() const;
+    /// This vehicle's index in snapshot(), if it is running.
+    std::optional<traffic::VehicleSnapshot::Index> selfIndex() const;
+
+    /// Broadcasts `message` to the services of every other vehicle in range.
+    void send(std::unique_ptr<V2xMessage> message);
+    /// From now on, also receive storyboard signals meant for other vehicles.
+    void listenToAllSignals();
+
+    /// A parameter from the services file (an attribute of the <service> element).
+    std::optional<std::string> parameter(const std::string& name) const;
+    /// A numeric parameter, or `fallback` when absent; a malformed value is a configuration error.
+    double numberParameter(const std::string& name, double fallback) const;
+
+private:
+    friend class Middleware;
+    Middleware* middleware_ = nullptr;
+    const ServiceSpec* spec_ = nullptr;
+};
+
+}  // namespace sbsim::services

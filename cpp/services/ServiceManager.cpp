@@ -1,0 +1,89 @@
+#include "services/ServiceManager.h"
+
+#include <stdexcept>
+
+#include "kernel/Simulation.h"
+#include "services/ServiceRegistry.h"
+#include "storyboard/Storyboard.h"
+#include "traffic/SumoBridge.h"
+
+namespace sbsim::services {
+
+ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot)
+    : kernel::Module("services"), config_(std::move(config)), interval_(interval), snapshot_(snapshot) {
+    if (interval_ <= kernel::SimTime::zero()) throw std::invalid_argument("the middleware interval must be > 0 s");
+    for (const ServiceSpec& spec : config_.services()) {
+        // Fail before the run, naming the line, rather than at the first matching departure.
+        if (!ServiceRegistry::instance().contains(spec.type)) (void)ServiceRegistry::instance().create(spec.type);
+    }
+}
+
+ServiceManager::~ServiceManager() = default;
+
+void ServiceManager::initialize() { simulation().subscribe(storyboard::Storyboard::signalEmitted, *this); }
+
+void ServiceManager::attach(kernel::Module& sumo) {
+    sumo.subscribe(traffic::SumoBridge::departedSignal, *this);
+    sumo.subscribe(traffic::SumoBridge::arrivedSignal, *this);
+}
+
+Medium& ServiceManager::medium() const {
+    if (medium_ == nullptr) throw std::logic_error("no V2X medium in this simulation");
+    return *medium_;
+}
+
+Middleware* ServiceManager::middlewareOf(const std::string& vehicleId) const {
+    const auto it = middlewares_.find(vehicleId);
+    return it == middlewares_.end() ? nullptr : it->second;
+}
+
+void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, std::string_view value) {
+    if (id == traffic::SumoBridge::departedSignal) {
+        depart(std::string(value));
+    } else if (id == traffic::SumoBridge::arrivedSignal) {
+        arrive(std::string(value));
+    }
+}
+
+void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, const kernel::Object& value) {
+    if (id != storyboard::Storyboard::signalEmitted) return;
+    const auto& signal = dynamic_cast<const storyboard::StoryboardSignal&>(value);
+    Middleware* ego = middlewareOf(signal.ego);
+    if (ego != nullptr) ego->signal(signal);
+    for (Service* s : allSignals_) {
+        if (ego == nullptr || s->vehicleId() != signal.ego) s->receiveSignal(signal);
+    }
+}
+
+void ServiceManager::depart(const std::string& id) {
+    const auto index = snapshot_.indexOf(id);
+    const std::string type = index ? snapshot_.typeId(*index) : std::string();
+    std::vector<const ServiceSpec*> selected;
+    for (const ServiceSpec& spec : config_.services()) {
+        if (spec.matches(id, type)) selected.push_back(&spec);
+    }
+    if (selected.empty()) return;
+    auto& middleware = simulation().emplaceModule<Middleware>(*this, id);
+    middlewares_[id] = &middleware;
+    for (const ServiceSpec* spec : selected) {
+        std::unique_ptr<Service> service = ServiceRegistry::instance().create(spec->type);
+        // Hosted before it joins the simulation: initialize() may already use vehicle() or send().
+        middleware.host(*service, *spec);
+        simulation().addModule(std::move(service));
+        ++servicesCreated_;
+    }
+}
+
+void ServiceManager::arrive(const std::string& id) {
+    const auto it = middlewares_.find(id);
+    if (it == middlewares_.end()) return;
+    Middleware& middleware = *it->second;
+    middlewares_.erase(it);
+    for (Service* s : middleware.services()) {
+        std::erase(allSignals_, s);
+        simulation().removeModule(*s);  // finish(), then its timers are dropped
+    }
+    simulation().removeModule(middleware);
+}
+
+}  // namespace sbsim::services

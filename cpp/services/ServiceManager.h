@@ -1,0 +1,55 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "kernel/Module.h"
+#include "services/Medium.h"
+#include "services/Middleware.h"
+#include "services/ServicesConfig.h"
+#include "traffic/VehicleSnapshot.h"
+
+namespace sbsim::services {
+
+/// Gives each departing vehicle a middleware with the services its filters select, removes them
+/// when it arrives, and routes storyboard signals to the ego vehicle's services (and to services
+/// listening to all). Attach it to the SUMO bridge and the storyboard.
+class ServiceManager : public kernel::Module, private kernel::Listener {
+public:
+    /// Throws std::out_of_range if the configuration names a service type nobody registered.
+    ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot);
+    ~ServiceManager() override;
+
+    /// Listen to vehicles departing and arriving (a SumoBridge).
+    void attach(kernel::Module& sumo);
+    void setMedium(Medium& medium) { medium_ = &medium; }
+
+    kernel::SimTime interval() const { return interval_; }
+    const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
+    Medium& medium() const;
+    Middleware* middlewareOf(const std::string& vehicleId) const;
+    void listenToAllSignals(Service& service) { allSignals_.push_back(&service); }
+    std::size_t servicesCreated() const { return servicesCreated_; }
+
+    void initialize() override;
+
+private:
+    void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
+    void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
+    void depart(const std::string& id);
+    void arrive(const std::string& id);
+
+    ServicesConfig config_;
+    kernel::SimTime interval_;
+    const traffic::VehicleSnapshot& snapshot_;
+    Medium* medium_ = nullptr;
+    std::unordered_map<std::string, Middleware*> middlewares_;
+    std::vector<Service*> allSignals_;
+    std::size_t servicesCreated_ = 0;
+};
+
+}  // namespace sbsim::services

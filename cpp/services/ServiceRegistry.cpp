@@ -1,0 +1,36 @@
+#include "services/ServiceRegistry.h"
+
+#include <stdexcept>
+
+#include "services/Service.h"
+
+namespace sbsim::services {
+
+ServiceRegistry& ServiceRegistry::instance() {
+    static ServiceRegistry registry;
+    return registry;
+}
+
+void ServiceRegistry::add(const std::string& name, Factory factory) {
+    if (!factories_.emplace(name, std::move(factory)).second) {
+        throw std::logic_error("service type '" + name + "' is registered twice");
+    }
+}
+
+std::unique_ptr<Service> ServiceRegistry::create(const std::string& name) const {
+    const auto it = factories_.find(name);
+    if (it == factories_.end()) {
+        std::string known;
+        for (const auto& [n, f] : factories_) known += (known.empty() ? "" : ", ") + n;
+        throw std::out_of_range("unknown service type '" + name + "' (known: " + (known.empty() ? "none" : known) + ")");
+    }
+    return it->second();
+}
+
+std::vector<std::string> ServiceRegistry::names() const {
+    std::vector<std::string> out;
+    for (const auto& [n, f] : factories_) out.push_back(n);
+    return out;
+}
+
+}  // namespace sbsim::services

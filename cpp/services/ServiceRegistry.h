@@ -1,0 +1,48 @@
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sbsim::services {
+
+class Service;
+
+/// Service types by name, like OMNeT++'s module registry: a services file names a type, the
+/// registry makes an instance. Types register themselves with SBSIM_REGISTER_SERVICE next to the
+/// class, in the program or in a plugin loaded with --plugin.
+class ServiceRegistry {
+public:
+    using Factory = std::function<std::unique_ptr<Service>()>;
+
+    static ServiceRegistry& instance();
+
+    /// Registers `factory` under `name`; a second type with the same name is an error.
+    void add(const std::string& name, Factory factory);
+    bool contains(const std::string& name) const { return factories_.count(name) != 0; }
+    /// Throws std::out_of_range naming the known types if `name` is unknown.
+    std::unique_ptr<Service> create(const std::string& name) const;
+    std::vector<std::string> names() const;
+
+private:
+    std::map<std::string, Factory> factories_;
+};
+
+namespace detail {
+struct ServiceRegistration {
+    ServiceRegistration(const std::string& name, ServiceRegistry::Factory factory) {
+        ServiceRegistry::instance().add(name, std::move(factory));
+    }
+};
+}  // namespace detail
+
+}  // namespace sbsim::services
+
+/// Registers service class `Class` under its own name (OMNeT++'s Define_Module).
+#define SBSIM_REGISTER_SERVICE(Class) SBSIM_REGISTER_SERVICE_AS(Class, #Class)
+/// Registers service class `Class` under `name`.
+#define SBSIM_REGISTER_SERVICE_AS(Class, name)                                                          \
+    static const ::sbsim::services::detail::ServiceRegistration sbsimServiceRegistration_##Class{ \
+        name, [] { return std::make_unique<Class>(); }}

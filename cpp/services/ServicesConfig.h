@@ -1,0 +1,93 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <regex>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sbsim::services {
+
+/// A services file that cannot be read, is not well-formed XML, or does not follow the format.
+/// what() is "<file>:<line>: <message>" ("<file>: cannot read" for an unreadable file).
+class ServicesConfigError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// One <name> or <type> rule of a service's <filters>.
+struct ServiceFilter {
+    enum class Subject { VehicleId, VehicleType };
+
+    Subject subject = Subject::VehicleId;
+    std::string pattern;   ///< as written, for messages
+    std::regex regex;      ///< ECMAScript, compiled once at load; must match the whole id or type
+    bool inverse = false;  ///< match="inverse": the filter passes when the pattern does not match
+    int line = 0;
+
+    bool matches(std::string_view vehicleId, std::string_view vehicleType) const;
+};
+
+/// One <service> of a services file: which module to run, its settings, and on which vehicles.
+struct ServiceSpec {
+    /// How the filters combine: all must pass (the default) or any one (<filters operator="or">).
+    enum class Combine { All, Any };
+
+    std::string type;  ///< the service's type name, the `type` attribute
+    /// Every other attribute of <service>, verbatim; std::less<> allows lookups by string_view.
+    std::map<std::string, std::string, std::less<>> parameters;
+    std::vector<ServiceFilter> filters;
+    Combine combine = Combine::All;
+    std::string source;  ///< the file, for messages
+    int line = 0;        ///< of the <service> start tag
+
+    /// Whether the service runs on this vehicle. No filters: every vehicle.
+    bool matches(std::string_view vehicleId, std::string_view vehicleType) const;
+
+    std::optional<std::string> parameter(std::string_view name) const;
+    /// The parameter as a finite number (surrounding blanks allowed), `fallback` if absent; throws
+    /// ServicesConfigError naming the file, line, service and text if it is not one.
+    double number(std::string_view name, double fallback) const;
+    /// "true"/"1" or "false"/"0", `fallback` if absent; throws ServicesConfigError otherwise.
+    bool boolean(std::string_view name, bool fallback) const;
+
+private:
+    [[noreturn]] void badParameter(std::string_view name, std::string_view expected) const;
+};
+
+/// An Artery-format services file:
+///
+///     <services>
+///       <service type="ClearLaneService" interval="0.5">
+///         <listener port="2001"/>          <!-- Artery's; accepted and ignored -->
+///         <filters operator="or">          <!-- optional; "and" (the default) or "or" -->
+///           <name pattern="police\d+"/>    <!-- regex on the vehicle id -->
+///           <type pattern="bus" match="inverse"/>  <!-- regex on the SUMO vehicle type -->
+///         </filters>
+///       </service>
+///     </services>
+///
+/// Anything else (an unknown element or filter attribute, a bad regex, Artery's random
+/// <penetration> filter) is an error, so that a typo cannot silently change which vehicles run what.
+class ServicesConfig {
+public:
+    ServicesConfig() = default;
+
+    static ServicesConfig load(const std::filesystem::path& path);
+    /// `source` names the text in error messages.
+    static ServicesConfig parse(std::string_view text, const std::string& source);
+
+    /// In file order, which is the order services are created in on each vehicle.
+    const std::vector<ServiceSpec>& services() const { return services_; }
+    /// The services that run on this vehicle, in file order.
+    std::vector<const ServiceSpec*> matching(std::string_view vehicleId, std::string_view vehicleType) const;
+
+private:
+    std::vector<ServiceSpec> services_;
+};
+
+}  // namespace sbsim::services

@@ -1,0 +1,23 @@
+#include "services/highway/ClearLaneService.h"
+
+#include "services/ServiceRegistry.h"
+#include "services/highway/ClearLaneMessage.h"
+
+namespace sbsim::services {
+
+SBSIM_REGISTER_SERVICE(ClearLaneService);
+
+void ClearLaneService::initialize() { speed_ = numberParameter("speed", 25.0); }
+
+void ClearLaneService::indicate(const V2xMessage& message) {
+    const auto* clear = dynamic_cast<const ClearLaneMessage*>(&message);
+    if (clear == nullptr || slowed_) return;
+    const auto self = selfIndex();
+    if (!self || snapshot().roadId(*self) != clear->road()) return;
+    const std::string& lane = snapshot().laneId(*self);
+    if (lane == clear->road() + "_" + std::to_string(clear->lane())) return;
+    vehicle().setMaxSpeed(speed_);
+    slowed_ = true;
+}
+
+}  // namespace sbsim::services
