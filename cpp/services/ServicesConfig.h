@@ -34,14 +34,15 @@ struct ServiceFilter {
 
 /// One <service> of a services file: which module to run, its settings, and on which vehicles.
 struct ServiceSpec {
-    /// How the filters combine: all must pass (the default) or any one (<filters operator="or">).
+    /// How the filters combine: any one passing is enough (the default, as in Artery), or all must
+    /// pass (<filters operator="and">).
     enum class Combine { All, Any };
 
     std::string type;  ///< the service's type name, the `type` attribute
     /// Every other attribute of <service>, verbatim; std::less<> allows lookups by string_view.
     std::map<std::string, std::string, std::less<>> parameters;
     std::vector<ServiceFilter> filters;
-    Combine combine = Combine::All;
+    Combine combine = Combine::Any;
     std::string source;  ///< the file, for messages
     int line = 0;        ///< of the <service> start tag
 

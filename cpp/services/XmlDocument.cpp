@@ -1,6 +1,7 @@
 #include "services/XmlDocument.h"
 
 #include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <iterator>
 
@@ -126,7 +127,9 @@ private:
         const std::size_t start = pos_;
         const std::size_t dashes = text_.find("--", pos_ + 4);
         if (dashes == std::string_view::npos) fail(start, "unterminated comment");
-        if (dashes + 2 >= text_.size() || text_[dashes + 2] != '>') fail(dashes, "'--' is not allowed inside a comment");
+        if (dashes + 2 >= text_.size() || text_[dashes + 2] != '>') {
+            fail(dashes, "'--' is not allowed inside a comment");
+        }
         pos_ = dashes + 3;
     }
 
@@ -134,7 +137,9 @@ private:
         const std::size_t start = pos_;
         pos_ += 2;
         std::string target = readName();
-        std::transform(target.begin(), target.end(), target.begin(), [](char c) { return c | 0x20; });
+        if (target.empty()) fail(start, "expected a processing instruction's name after '<?'");
+        std::transform(target.begin(), target.end(), target.begin(),
+                       [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
         if (target == "xml") fail(start, "the XML declaration is only allowed at the very start of the document");
         const std::size_t end = text_.find("?>", pos_);
         if (end == std::string_view::npos) fail(start, "unterminated processing instruction");
@@ -320,7 +325,9 @@ private:
             if (cp > 0x10FFFF) break;  // keeps the value bounded; rejected below
         }
         if (!valid) fail(rawPos + amp, "malformed character reference '&" + std::string(ref) + ";'");
-        if (!isXmlChar(cp)) fail(rawPos + amp, "character reference '&" + std::string(ref) + ";' is not an XML character");
+        if (!isXmlChar(cp)) {
+            fail(rawPos + amp, "character reference '&" + std::string(ref) + ";' is not an XML character");
+        }
         appendUtf8(out, cp);
         return semi;
     }

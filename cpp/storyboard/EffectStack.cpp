@@ -46,9 +46,19 @@ void EffectStack::applyCap(std::optional<double> before) {
     vehicle_->setMaxSpeed(now ? *now : recordedMaxSpeed_);
 }
 
+void EffectStack::settle(double speed) {
+    // A few cm/s: SUMO's standing vehicles report exactly 0, braking ones clearly more.
+    constexpr double kStanding = 0.01;
+    if (effectiveHold() == Hold::EmergencyStop && !emergencyHeld_ && speed <= kStanding) {
+        vehicle_->setSpeed(0);
+        emergencyHeld_ = true;
+    }
+}
+
 void EffectStack::applyHold(std::optional<Hold> before) {
     const auto now = effectiveHold();
     if (now == before) return;
+    emergencyHeld_ = false;
     if (!now) {
         vehicle_->setSpeed(-1);
         if (recordedSpeedMode_) vehicle_->setSpeedMode(*recordedSpeedMode_);
@@ -67,6 +77,7 @@ void EffectStack::applyHold(std::optional<Hold> before) {
             vehicle_->slowDown(0, v / decel);
         } else {
             vehicle_->setSpeed(0);
+            emergencyHeld_ = true;
         }
     }
 }

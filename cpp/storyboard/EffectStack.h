@@ -28,6 +28,9 @@ public:
     void pushHold(Token token, Hold hold);
     /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
     void remove(Token token);
+    /// Called each step with the vehicle's speed: an EmergencyStop braking with slowDown() is
+    /// turned into a hold once the vehicle stands, since SUMO lets it drive on after slowDown.
+    void settle(double speed);
 
     bool empty() const { return caps_.empty() && holds_.empty(); }
     std::optional<double> effectiveCap() const;
@@ -42,6 +45,7 @@ private:
     std::vector<std::pair<Token, Hold>> holds_;   // activation order
     double recordedMaxSpeed_ = 0;
     std::optional<int> recordedSpeedMode_;
+    bool emergencyHeld_ = false;  // the EmergencyStop's vehicle stands and is held at 0
 };
 
 }  // namespace sbsim::storyboard

@@ -147,8 +147,10 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
                 deactivate(*state, s, id);
             }
         }
+        if (state == nullptr) continue;
+        state->stack->settle(snapshot.speeds()[i]);
         // A vehicle with no active story and no composed effect needs no state.
-        if (state != nullptr && state->activeCount == 0 && state->stack->empty()) vehicles_.erase(id);
+        if (state->activeCount == 0 && state->stack->empty()) vehicles_.erase(id);
     }
     if (log_ != nullptr) log_->flush();
     updateSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

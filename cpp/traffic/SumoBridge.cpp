@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "kernel/OneLine.h"
 #include "traffic/StderrCapture.h"
 
 namespace sbsim::traffic {
@@ -36,7 +37,7 @@ std::string sumoErrorLine(const std::string& printed, const std::string& fallbac
         if (!line.empty()) line += ' ';
         line += text.substr(first);
     }
-    return line.empty() ? fallback : line;
+    return kernel::oneLine(line.empty() ? fallback : line);
 }
 }  // namespace
 
@@ -102,9 +103,10 @@ void SumoBridge::initialize() {
 }
 
 void SumoBridge::scheduleNextStep() {
-    const kernel::SimTime next = begin_ + stepLength_ * static_cast<kernel::SimTime::rep>(steps_ + 1);
-    if (end_ && next > *end_) return endRun(EndReason::EndTime);
-    scheduleAt(next, stepMessage_);
+    // The run ends after the step that reaches the end time (as SUMO's own --end does).
+    const kernel::SimTime current = begin_ + stepLength_ * static_cast<kernel::SimTime::rep>(steps_);
+    if (end_ && current >= *end_) return endRun(EndReason::EndTime);
+    scheduleAt(current + stepLength_, stepMessage_);
 }
 
 void SumoBridge::endRun(EndReason reason) {

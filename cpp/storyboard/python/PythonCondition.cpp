@@ -22,10 +22,13 @@ void PythonCondition::prepare(const EvaluationContext& ctx) {
         const py::function testAll = py::get_override(static_cast<const Condition*>(this), "test_all");
         vectorised_ = static_cast<bool>(testAll);
         if (!vectorised_) return;
-        const auto mask = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(testAll(SnapshotView{&ctx.snapshot()}));
+        const py::object result = testAll(SnapshotView{&ctx.snapshot()});
+        const auto mask = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(result);
+        PyErr_Clear();  // ensure() leaves a conversion error behind for None and the like
         if (!mask || mask.ndim() != 1 || mask.shape(0) != ctx.snapshot().size()) {
-            throw py::value_error(className(this) + ".test_all must return one boolean per vehicle (" +
-                                  std::to_string(ctx.snapshot().size()) + ")");
+            throwContractError(py::cast(static_cast<const Condition*>(this)),
+                               className(this) + ".test_all must return one boolean per vehicle (" +
+                                   std::to_string(ctx.snapshot().size()) + " this step)");
         }
         mask_.assign(mask.data(), mask.data() + mask.shape(0));
     } catch (py::error_already_set& e) {
@@ -37,17 +40,21 @@ ConditionResult PythonCondition::test(const EvaluationContext& ctx, VehicleIndex
     if (vectorised_) return mask_[ego] != 0;
     try {
         const py::function test = py::get_override(static_cast<const Condition*>(this), "test");
-        if (!test) {
-            throw py::type_error(className(this) + " must define test(self, vehicle) or test_all(self, snapshot)");
-        }
+        const py::handle self = py::cast(static_cast<const Condition*>(this));
+        if (!test) throwContractError(self, className(this) + " must define test(self, vehicle) or test_all(self, snapshot)");
         const py::object result = test(VehicleView{&ctx.snapshot(), ego});
         if (py::isinstance<py::bool_>(result)) return result.cast<bool>();
-        if (py::isinstance<py::str>(result) || !py::hasattr(result, "__iter__")) {
-            throw py::type_error(className(this) + ".test must return a bool or a set of vehicle ids, got " +
-                                 py::repr(result).cast<std::string>());
+        if (py::str(py::type::of(result).attr("__name__")).cast<std::string>() == "bool_") {
+            return py::bool_(result).cast<bool>();  // numpy's bool
         }
+        const auto wrongResult = [&] {
+            throwContractError(self, className(this) + ".test must return a bool or a set of vehicle ids, got " +
+                                         py::repr(result).cast<std::string>());
+        };
+        if (py::isinstance<py::str>(result) || !py::hasattr(result, "__iter__")) wrongResult();
         std::vector<VehicleIndex> others;
         for (const py::handle id : result) {
+            if (!py::isinstance<py::str>(id)) wrongResult();
             if (const auto i = ctx.snapshot().indexOf(id.cast<std::string>()); i && *i != ego) others.push_back(*i);
         }
         std::sort(others.begin(), others.end());

@@ -12,7 +12,11 @@ void PythonEffect::call(const char* method, EffectScope& scope) {
                               "." + method + " (story " + scope.story().name() + ", vehicle " + scope.vehicleId() + ")";
     try {
         const py::function f = py::get_override(static_cast<const Effect*>(this), method);
-        if (!f) throw py::type_error(std::string("custom effect must define ") + method + "(self, vehicle)");
+        if (!f) {
+            const py::handle self = py::cast(static_cast<const Effect*>(this));
+            throwContractError(self, py::str(py::type::of(self).attr("__name__")).cast<std::string>() +
+                                         " must define " + method + "(self, vehicle)");
+        }
         f(py::cast(&scope.vehicle(), py::return_value_policy::reference));
     } catch (py::error_already_set& e) {
         throwStoryError(e, where);

@@ -1,5 +1,6 @@
 #include "storyboard/python/ScriptContext.h"
 
+#include "kernel/OneLine.h"
 #include "storyboard/StoryError.h"
 
 namespace py = pybind11;
@@ -10,25 +11,6 @@ ScriptContext& ScriptContext::current() {
     static ScriptContext context;
     return context;
 }
-
-namespace {
-
-std::string oneLine(const std::string& text) {
-    std::string out;
-    bool space = false;
-    for (const char c : text) {
-        if (c == '\n' || c == '\r' || c == '\t' || c == ' ') {
-            space = !out.empty();
-            continue;
-        }
-        if (space) out.push_back(' ');
-        space = false;
-        out.push_back(c);
-    }
-    return out;
-}
-
-}  // namespace
 
 void throwStoryError(py::error_already_set& error, const std::string& during) {
     const std::string script = ScriptContext::current().script.string();
@@ -57,10 +39,24 @@ void throwStoryError(py::error_already_set& error, const std::string& during) {
         where = script;  // formatting failed: still name the script
     }
     const std::string type = error.type() ? py::str(error.type().attr("__name__")).cast<std::string>() : "Error";
-    const std::string message = oneLine(py::str(error.value()).cast<std::string>());
+    const std::string message = kernel::oneLine(py::str(error.value()).cast<std::string>());
     error.restore();
     PyErr_Clear();
     throw StoryError(where + ": " + type + ": " + message + " (" + during + ")", details);
+}
+
+void throwContractError(const py::handle& object, const std::string& message) {
+    std::string where = ScriptContext::current().script.string();
+    try {
+        const py::module_ inspect = py::module_::import("inspect");
+        const py::object cls = py::type::of(object);
+        const py::object file = inspect.attr("getsourcefile")(cls);
+        const py::tuple lines = inspect.attr("getsourcelines")(cls);
+        if (!file.is_none()) where = file.cast<std::string>() + ":" + py::str(lines[1]).cast<std::string>();
+    } catch (const std::exception&) {
+        PyErr_Clear();  // no source to point at: the script's name must do
+    }
+    throw StoryError(where + ": " + kernel::oneLine(message));
 }
 
 }  // namespace sbsim::storyboard

@@ -24,4 +24,8 @@ struct ScriptContext {
 /// (the innermost frame in the story script, else in any file) plus the full traceback.
 [[noreturn]] void throwStoryError(pybind11::error_already_set& error, const std::string& during);
 
+/// A custom condition or effect broke the story API's contract (say, test() returned an int):
+/// a StoryError naming the file and line where the object's class is defined.
+[[noreturn]] void throwContractError(const pybind11::handle& object, const std::string& message);
+
 }  // namespace sbsim::storyboard

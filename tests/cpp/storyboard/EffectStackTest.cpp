@@ -216,6 +216,34 @@ TEST(EffectStack, EmergencyStopOfAStandingVehicleHoldsItWithSetSpeed) {
     EXPECT_FALSE(v.held_.has_value());
 }
 
+TEST(EffectStack, AnEmergencyStopHoldsTheVehicleOnceItStands) {
+    ModelVehicle v;
+    EffectStack stack(v);
+    stack.pushHold(1, EffectStack::Hold::EmergencyStop);
+    ASSERT_TRUE(v.slowingTo_.has_value());
+    stack.settle(6.0);  // still braking: nothing to do
+    EXPECT_FALSE(v.held_.has_value());
+    const int commands = v.commands;
+    stack.settle(0.0);
+    ASSERT_TRUE(v.held_.has_value());
+    EXPECT_DOUBLE_EQ(*v.held_, 0.0);
+    EXPECT_EQ(v.speedMode_, 0) << "still an emergency stop: SUMO's checks stay off";
+    stack.settle(0.0);
+    EXPECT_EQ(v.commands, commands + 1) << "held once, not every step";
+    stack.remove(1);
+    EXPECT_FALSE(v.held_.has_value());
+    EXPECT_EQ(v.speedMode_, kOwnSpeedMode);
+}
+
+TEST(EffectStack, SettleLeavesAPlainStopAlone) {
+    ModelVehicle v;
+    EffectStack stack(v);
+    stack.pushHold(1, EffectStack::Hold::Stop);
+    const int commands = v.commands;
+    stack.settle(0.0);
+    EXPECT_EQ(v.commands, commands);
+}
+
 TEST(EffectStack, UnknownTokensAreIgnored) {
     ModelVehicle v;
     EffectStack stack(v);

@@ -1,0 +1,397 @@
+#include "services/ServicesConfig.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace sbsim::services {
+namespace {
+
+ServicesConfig parse(std::string_view text) { return ServicesConfig::parse(text, "s.xml"); }
+
+// The message ServicesConfig::parse gives for `text` (source "s.xml"), or "no error".
+std::string errorOf(std::string_view text) {
+    try {
+        parse(text);
+    } catch (const ServicesConfigError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+// A <services> document with one service whose body is `body`; the service starts on line 2.
+std::string oneService(std::string_view body, std::string_view attributes = "type=\"S\"") {
+    return "<services>\n<service " + std::string(attributes) + ">\n" + std::string(body) + "</service>\n</services>\n";
+}
+
+// The config's one service; a reference into `config`, so copy it when `config` is a temporary.
+const ServiceSpec& onlyService(const ServicesConfig& config) {
+    EXPECT_EQ(config.services().size(), 1u);
+    return config.services().at(0);
+}
+
+// Artery's scenarios/artery/services.xml layout (tabs, XML declaration, listeners), plus a comment.
+constexpr std::string_view kArteryExample =
+    "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+    "<services>\n"
+    "\t<!-- every vehicle except persons runs the CA service -->\n"
+    "\t<service type=\"artery.application.CaService\">\n"
+    "\t\t<listener port=\"2001\" />\n"
+    "\t\t<filters>\n"
+    "\t\t\t<type pattern=\"artery.inet.Person\" match=\"inverse\" />\n"
+    "\t\t</filters>\n"
+    "\t</service>\n"
+    "\t<service type=\"artery.application.ExampleService\" name=\"Example\">\n"
+    "\t\t<listener port=\"4711\" />\n"
+    "\t\t<filters>\n"
+    "\t\t\t<name pattern=\"flow0\\.1.*\" />\n"
+    "\t\t</filters>\n"
+    "\t</service>\n"
+    "\t<service type=\"artery.application.DenService\">\n"
+    "\t\t<listener port=\"2002\" />\n"
+    "\t</service>\n"
+    "</services>\n";
+
+TEST(ServicesConfig, ArteryExample) {
+    const ServicesConfig config = parse(kArteryExample);
+    const auto& services = config.services();
+    ASSERT_EQ(services.size(), 3u);
+
+    EXPECT_EQ(services[0].type, "artery.application.CaService");
+    EXPECT_EQ(services[0].line, 4);
+    EXPECT_EQ(services[0].source, "s.xml");
+    EXPECT_TRUE(services[0].parameters.empty());
+    ASSERT_EQ(services[0].filters.size(), 1u);
+    EXPECT_EQ(services[0].filters[0].subject, ServiceFilter::Subject::VehicleType);
+    EXPECT_EQ(services[0].filters[0].pattern, "artery.inet.Person");
+    EXPECT_TRUE(services[0].filters[0].inverse);
+    EXPECT_EQ(services[0].filters[0].line, 7);
+    EXPECT_TRUE(services[0].matches("flow0.1", "passenger"));
+    EXPECT_FALSE(services[0].matches("walker", "artery.inet.Person"));
+
+    EXPECT_EQ(services[1].type, "artery.application.ExampleService");
+    EXPECT_EQ(services[1].parameter("name"), "Example");
+    EXPECT_TRUE(services[1].matches("flow0.1", "car"));
+    EXPECT_TRUE(services[1].matches("flow0.12", "car"));
+    EXPECT_FALSE(services[1].matches("flow0.2", "car"));
+    EXPECT_FALSE(services[1].matches("flow001", "car"));  // the escaped dot is literal
+
+    EXPECT_EQ(services[2].type, "artery.application.DenService");
+    EXPECT_TRUE(services[2].filters.empty());
+    EXPECT_TRUE(services[2].matches("anything", ""));
+}
+
+TEST(ServicesConfig, EmptyServicesAndDefaultConfig) {
+    EXPECT_TRUE(parse("<services/>").services().empty());
+    EXPECT_TRUE(parse("<services>\n  <!-- nothing yet -->\n</services>").services().empty());
+    EXPECT_TRUE(ServicesConfig().services().empty());
+}
+
+TEST(ServicesConfig, ParametersAreAllAttributesButType) {
+    const ServicesConfig config = parse(oneService("", R"(interval="0.5" type="ClearLaneService" range="300")"));
+    const ServiceSpec& spec = onlyService(config);
+    EXPECT_EQ(spec.type, "ClearLaneService");
+    EXPECT_EQ(spec.parameters.size(), 2u);
+    EXPECT_EQ(spec.parameter("interval"), "0.5");
+    EXPECT_EQ(spec.parameter("range"), "300");
+    EXPECT_EQ(spec.parameter("type"), std::nullopt);
+    EXPECT_EQ(spec.parameter("missing"), std::nullopt);
+}
+
+TEST(ServicesConfig, ParameterValuesAreEntityDecoded) {
+    const ServiceSpec spec = onlyService(parse(oneService("", R"(type="S" cause="a &amp; b &lt;3")")));
+    EXPECT_EQ(spec.parameter("cause"), "a & b <3");
+}
+
+TEST(ServicesConfig, NumberParameters) {
+    const ServicesConfig config =
+        parse(oneService("", R"(type="S" a="0.5" b=" 300 " c="-2e3" d="+7" e=".25" i="10")"));
+    const ServiceSpec& spec = onlyService(config);
+    EXPECT_DOUBLE_EQ(spec.number("a", 0), 0.5);
+    EXPECT_DOUBLE_EQ(spec.number("b", 0), 300);
+    EXPECT_DOUBLE_EQ(spec.number("c", 0), -2000);
+    EXPECT_DOUBLE_EQ(spec.number("d", 0), 7);
+    EXPECT_DOUBLE_EQ(spec.number("e", 0), 0.25);
+    EXPECT_DOUBLE_EQ(spec.number("i", 0), 10);
+    EXPECT_DOUBLE_EQ(spec.number("missing", 42.5), 42.5);
+}
+
+TEST(ServicesConfig, MalformedNumberNamesFileLineServiceAndText) {
+    const ServicesConfig config = parse(
+        "<services>\n\n"
+        "  <service type=\"T\" x=\"abc\" y=\"\" z=\"1.5m\" w=\"inf\" v=\"nan\" u=\"1e999\" t=\"++1\" s=\"0x10\"/>\n"
+        "</services>\n");
+    const ServiceSpec& spec = onlyService(config);
+    for (const std::string name : {"x", "y", "z", "w", "v", "u", "t", "s"}) {
+        try {
+            spec.number(name, 0);
+            ADD_FAILURE() << name << ": no error";
+        } catch (const ServicesConfigError& e) {
+            const std::string expected = "s.xml:3: parameter '" + name + "' of service 'T' must be a number, got '" +
+                                         *spec.parameter(name) + "'";
+            EXPECT_EQ(std::string(e.what()), expected);
+        }
+    }
+}
+
+TEST(ServicesConfig, BooleanParameters) {
+    const ServiceSpec spec = onlyService(parse(oneService("", R"(type="T" a="true" b="0" c=" false " d="yes")")));
+    EXPECT_TRUE(spec.boolean("a", false));
+    EXPECT_FALSE(spec.boolean("b", true));
+    EXPECT_FALSE(spec.boolean("c", true));
+    EXPECT_TRUE(spec.boolean("missing", true));
+    try {
+        spec.boolean("d", false);
+        FAIL() << "no error";
+    } catch (const ServicesConfigError& e) {
+        EXPECT_EQ(std::string(e.what()), "s.xml:2: parameter 'd' of service 'T' must be true or false, got 'yes'");
+    }
+}
+
+TEST(ServicesConfigFilters, NameFilterMustMatchTheWholeId) {
+    const ServiceSpec spec = onlyService(parse(oneService(R"(<filters><name pattern="police\d+"/></filters>)")));
+    ASSERT_EQ(spec.filters.size(), 1u);
+    EXPECT_EQ(spec.filters[0].subject, ServiceFilter::Subject::VehicleId);
+    EXPECT_FALSE(spec.filters[0].inverse);
+    EXPECT_TRUE(spec.matches("police1", "car"));
+    EXPECT_TRUE(spec.matches("police42", "truck"));
+    EXPECT_FALSE(spec.matches("police", "car"));
+    EXPECT_FALSE(spec.matches("police1x", "car"));
+    EXPECT_FALSE(spec.matches("xpolice1", "car"));
+    EXPECT_FALSE(spec.matches("", "police1"));  // the type is not looked at
+}
+
+TEST(ServicesConfigFilters, TypeFilterLooksAtTheVehicleType) {
+    const ServiceSpec spec = onlyService(parse(oneService(R"(<filters><type pattern="truck|bus"/></filters>)")));
+    EXPECT_TRUE(spec.matches("v1", "truck"));
+    EXPECT_TRUE(spec.matches("v1", "bus"));
+    EXPECT_FALSE(spec.matches("v1", "trucks"));
+    EXPECT_FALSE(spec.matches("truck", "car"));
+}
+
+TEST(ServicesConfigFilters, InverseNegatesOneFilter) {
+    const ServiceSpec spec =
+        onlyService(parse(oneService(R"(<filters><name pattern="veh1" match="inverse"/></filters>)")));
+    EXPECT_TRUE(spec.filters.at(0).inverse);
+    EXPECT_FALSE(spec.matches("veh1", "car"));
+    EXPECT_TRUE(spec.matches("veh10", "car"));
+    EXPECT_TRUE(spec.matches("veh", "car"));
+}
+
+TEST(ServicesConfigFilters, AnyFilterPassesByDefaultAsInArtery) {
+    const ServiceSpec spec = onlyService(parse(oneService(
+        "<filters><name pattern=\"police\\d+\"/><type pattern=\"ambulance\"/></filters>")));
+    EXPECT_EQ(spec.combine, ServiceSpec::Combine::Any);
+    EXPECT_TRUE(spec.matches("police3", "car"));
+    EXPECT_TRUE(spec.matches("veh3", "ambulance"));
+    EXPECT_FALSE(spec.matches("veh3", "car"));
+}
+
+TEST(ServicesConfigFilters, AndOperatorNeedsAllFilters) {
+    const ServiceSpec spec = onlyService(parse(oneService(
+        "<filters operator=\"and\">\n"
+        "  <name pattern=\"police\\d+\"/>\n"
+        "  <name pattern=\"police1\" match=\"inverse\"/>\n"
+        "  <type pattern=\"truck|bus\"/>\n"
+        "</filters>\n")));
+    EXPECT_EQ(spec.combine, ServiceSpec::Combine::All);
+    ASSERT_EQ(spec.filters.size(), 3u);
+    EXPECT_EQ(spec.filters[2].line, 6);
+    EXPECT_TRUE(spec.matches("police2", "bus"));
+    EXPECT_FALSE(spec.matches("police1", "bus"));  // the inverse filter fails
+    EXPECT_FALSE(spec.matches("police2", "car"));  // the type filter fails
+    EXPECT_FALSE(spec.matches("veh2", "bus"));     // the first name filter fails
+}
+
+TEST(ServicesConfigFilters, ExplicitAndOperator) {
+    const ServiceSpec spec = onlyService(
+        parse(oneService(R"(<filters operator="and"><name pattern="a.*"/><type pattern="bus"/></filters>)")));
+    EXPECT_EQ(spec.combine, ServiceSpec::Combine::All);
+    EXPECT_TRUE(spec.matches("a1", "bus"));
+    EXPECT_FALSE(spec.matches("a1", "car"));
+}
+
+TEST(ServicesConfigFilters, OrOperatorNeedsOnePassingFilter) {
+    const ServiceSpec spec = onlyService(parse(oneService(
+        R"(<filters operator="or"><name pattern="police\d+"/><type pattern="ambulance"/>
+           <name pattern=".*" match="inverse"/></filters>)")));
+    EXPECT_EQ(spec.combine, ServiceSpec::Combine::Any);
+    EXPECT_TRUE(spec.matches("police3", "car"));
+    EXPECT_TRUE(spec.matches("veh3", "ambulance"));
+    EXPECT_TRUE(spec.matches("police3", "ambulance"));
+    EXPECT_FALSE(spec.matches("veh3", "car"));
+}
+
+TEST(ServicesConfigFilters, NoFiltersOrEmptyFiltersSelectEveryVehicle) {
+    for (const std::string body : {"", "<filters/>", "<filters operator=\"or\"></filters>"}) {
+        const ServiceSpec spec = onlyService(parse(oneService(body)));
+        EXPECT_TRUE(spec.filters.empty()) << body;
+        EXPECT_TRUE(spec.matches("v", "t")) << body;
+        EXPECT_TRUE(spec.matches("", "")) << body;
+    }
+}
+
+TEST(ServicesConfigFilters, MatchingListsServicesInFileOrder) {
+    const ServicesConfig config = parse(
+        "<services>\n"
+        "  <service type=\"A\"><filters><name pattern=\"p.*\"/></filters></service>\n"
+        "  <service type=\"B\"/>\n"
+        "  <service type=\"C\"><filters><type pattern=\"bus\"/></filters></service>\n"
+        "  <service type=\"A\" variant=\"2\"/>\n"
+        "</services>\n");
+    const auto types = [&](std::string_view id, std::string_view type) {
+        std::string out;
+        for (const ServiceSpec* spec : config.matching(id, type)) out += spec->type;
+        return out;
+    };
+    EXPECT_EQ(types("p1", "bus"), "ABCA");
+    EXPECT_EQ(types("v1", "car"), "BA");
+}
+
+TEST(ServicesConfigFilters, CopiesAndMovesKeepWorkingRegexes) {
+    ServicesConfig original = parse(oneService(R"(<filters><name pattern="x\d"/></filters>)"));
+    const ServicesConfig copy = original;
+    const ServicesConfig moved = std::move(original);
+    EXPECT_TRUE(onlyService(copy).matches("x1", ""));
+    EXPECT_FALSE(onlyService(moved).matches("x", ""));
+    EXPECT_TRUE(onlyService(moved).matches("x2", ""));
+}
+
+// --- errors ---
+
+TEST(ServicesConfigErrors, WrongRoot) {
+    EXPECT_EQ(errorOf("<?xml version='1.0'?>\n<service type='S'/>"),
+              "s.xml:2: the root element must be <services>, found <service>");
+    EXPECT_EQ(errorOf("<services version='1'/>"), "s.xml:1: unexpected attribute 'version' on <services>");
+    EXPECT_EQ(errorOf("<services>\nCaService\n</services>"), "s.xml:1: unexpected text in <services>");
+}
+
+TEST(ServicesConfigErrors, UnknownElements) {
+    EXPECT_EQ(errorOf("<services>\n  <service type='S'/>\n  <servce type='T'/>\n</services>"),
+              "s.xml:3: unexpected element <servce> in <services> (expected <service>)");
+    EXPECT_EQ(errorOf(oneService("<listener port='1'/>\n<filter/>\n")),
+              "s.xml:4: unexpected element <filter> in <service> (expected <filters> or <listener>)");
+    EXPECT_EQ(errorOf(oneService("<filters/>\n<filters/>\n")), "s.xml:4: a <service> may have only one <filters>");
+    EXPECT_EQ(errorOf(oneService("interval\n")), "s.xml:2: unexpected text in <service>");
+}
+
+TEST(ServicesConfigErrors, MissingOrEmptyType) {
+    EXPECT_EQ(errorOf("<services>\n\n<service interval='1'/>\n</services>"),
+              "s.xml:3: <service> has no 'type' attribute");
+    EXPECT_EQ(errorOf("<services>\n<service type=' '/>\n</services>"),
+              "s.xml:2: <service> has an empty 'type' attribute");
+}
+
+TEST(ServicesConfigErrors, UnknownFilter) {
+    EXPECT_EQ(errorOf(oneService("<filters>\n  <name pattern='a'/>\n  <speed max='3'/>\n</filters>\n")),
+              "s.xml:5: unknown filter <speed> (expected <name> or <type>)");
+}
+
+TEST(ServicesConfigErrors, ArteryRandomFiltersAreRejected) {
+    EXPECT_EQ(errorOf(oneService("<filters>\n<penetration rate='0.1'/>\n</filters>\n")),
+              "s.xml:4: <penetration> filters are not supported (they need a random draw per vehicle)");
+    EXPECT_EQ(errorOf(oneService("<filters>\n<type pattern='car' rate='0.5'/>\n</filters>\n")),
+              "s.xml:4: the 'rate' attribute of <type> filters is not supported");
+}
+
+TEST(ServicesConfigErrors, MissingPattern) {
+    EXPECT_EQ(errorOf(oneService("<filters>\n<name/>\n</filters>\n")),
+              "s.xml:4: <name> filter has no 'pattern' attribute");
+    EXPECT_EQ(errorOf(oneService("<filters>\n\n<type match='inverse'/>\n</filters>\n")),
+              "s.xml:5: <type> filter has no 'pattern' attribute");
+}
+
+TEST(ServicesConfigErrors, UnknownMatchOrAttribute) {
+    EXPECT_EQ(errorOf(oneService("<filters>\n<name pattern='a' match='inverted'/>\n</filters>\n")),
+              "s.xml:4: unknown match 'inverted' in <name> filter (the only value is 'inverse')");
+    EXPECT_EQ(errorOf(oneService("<filters>\n<name patern='a'/>\n</filters>\n")),
+              "s.xml:4: unexpected attribute 'patern' on <name> filter");
+    EXPECT_EQ(errorOf(oneService("<filters>\n<name pattern='a'>x</name>\n</filters>\n")),
+              "s.xml:4: unexpected text in <name>");
+}
+
+TEST(ServicesConfigErrors, UnknownOperator) {
+    EXPECT_EQ(errorOf(oneService("<filters operator='xor'/>\n")),
+              "s.xml:3: unknown filter operator 'xor' (expected 'and' or 'or')");
+    EXPECT_EQ(errorOf(oneService("<filters op='or'/>\n")), "s.xml:3: unexpected attribute 'op' on <filters>");
+}
+
+TEST(ServicesConfigErrors, BadPatternNamesFileLineAndPattern) {
+    const std::string message = errorOf(oneService("<filters>\n\n<name pattern='police(\\d+'/>\n</filters>\n"));
+    const std::string prefix = "s.xml:5: invalid pattern 'police(\\d+' in <name> filter: ";
+    EXPECT_EQ(message.substr(0, prefix.size()), prefix) << message;
+    EXPECT_GT(message.size(), prefix.size()) << "the regex library's reason follows";
+    EXPECT_NE(errorOf(oneService("<filters><type pattern='[a-'/></filters>")).find("invalid pattern '[a-'"),
+              std::string::npos);
+}
+
+TEST(ServicesConfigErrors, XmlErrorsBecomeServicesConfigErrors) {
+    EXPECT_EQ(errorOf("<services>\n<service type='S'>\n</services>"),
+              "s.xml:3: mismatched end tag </services>, expected </service> (opened on line 2)");
+    EXPECT_EQ(errorOf("<services>\n<service type='S' type='T'/>\n</services>"),
+              "s.xml:2: duplicate attribute 'type' in <service>");
+}
+
+// A file in the temporary directory, removed again when the test ends.
+class TempFile {
+public:
+    TempFile(const std::string& stem, std::string_view contents)
+        : path_(std::filesystem::temp_directory_path() /
+                ("sbsim_services_" + stem + "_" + std::to_string(::getpid()) + ".xml")) {
+        std::ofstream(path_) << contents;
+    }
+    ~TempFile() {
+        std::error_code ec;
+        std::filesystem::remove(path_, ec);
+    }
+    const std::filesystem::path& path() const { return path_; }
+
+private:
+    std::filesystem::path path_;
+};
+
+TEST(ServicesConfigFile, LoadsAFile) {
+    const TempFile file("load", kArteryExample);
+    const ServicesConfig config = ServicesConfig::load(file.path());
+    ASSERT_EQ(config.services().size(), 3u);
+    EXPECT_EQ(config.services()[1].source, file.path().string());
+}
+
+TEST(ServicesConfigFile, ErrorsNameTheFile) {
+    const TempFile file("broken", "<services>\n<service/>\n</services>\n");
+    try {
+        ServicesConfig::load(file.path());
+        FAIL() << "no error";
+    } catch (const ServicesConfigError& e) {
+        EXPECT_EQ(std::string(e.what()), file.path().string() + ":2: <service> has no 'type' attribute");
+    }
+}
+
+TEST(ServicesConfigFile, UnreadableFile) {
+    const std::filesystem::path missing = std::filesystem::temp_directory_path() / "sbsim_no_such_services.xml";
+    try {
+        ServicesConfig::load(missing);
+        FAIL() << "no error";
+    } catch (const ServicesConfigError& e) {
+        EXPECT_EQ(std::string(e.what()), missing.string() + ": cannot read");
+    }
+}
+
+TEST(ServicesConfigFile, MalformedNumberInALoadedFileNamesTheFile) {
+    const TempFile file("number", "<services>\n  <service type=\"ClearLaneService\" range=\"far\"/>\n</services>\n");
+    const ServicesConfig config = ServicesConfig::load(file.path());
+    try {
+        config.services().at(0).number("range", 300);
+        FAIL() << "no error";
+    } catch (const ServicesConfigError& e) {
+        EXPECT_EQ(std::string(e.what()), file.path().string() +
+                                             ":2: parameter 'range' of service 'ClearLaneService' must be a number, "
+                                             "got 'far'");
+    }
+}
+
+}  // namespace
+}  // namespace sbsim::services

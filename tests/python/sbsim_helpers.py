@@ -1,0 +1,178 @@
+"""Helpers shared by sbsim's Python tests: running stories, reading event logs and SUMO's FCD output."""
+
+from __future__ import annotations
+
+import os
+import textwrap
+import xml.etree.ElementTree as ET
+from collections import defaultdict
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from storyboard.runner import RunResult, read_events, run
+
+#: convBoundary written into the offset scenario's net (conftest.offset_cfg): xmin, ymin, xmax, ymax.
+OFFSET_BOUNDARY = (-100.0, -50.0, 700.0, 650.0)
+
+#: Summary lines that differ from run to run even with the same seed.
+TIMING_KEYS = ("wall time:", "real-time factor:")
+
+#: What a C++ crash looks like on stderr.
+CRASH_MARKERS = ("terminate called", "Aborted", "core dumped", "Segmentation fault", "what():")
+
+
+def stable_stdout(stdout: str) -> str:
+    """stdout without the wall-time and real-time-factor lines."""
+    return "\n".join(line for line in stdout.splitlines() if not line.startswith(TIMING_KEYS))
+
+
+def assert_no_crash(result: RunResult) -> None:
+    for marker in CRASH_MARKERS:
+        assert marker not in result.stderr, f"sbsim crashed ({marker!r}):\n{result.stderr}"
+    assert result.returncode >= 0, f"sbsim was killed by signal {-result.returncode}:\n{result.stderr}"
+
+
+def write_story(directory: Path, source: str, name: str = "story.py") -> Path:
+    path = Path(directory) / name
+    path.write_text(textwrap.dedent(source), encoding="utf-8")
+    return path
+
+
+@dataclass
+class FcdTrace:
+    """Per-vehicle states from SUMO's ``--fcd-output``, keyed by sbsim time.
+
+    SUMO labels a state with the time at the *start* of the step that produced it, while sbsim (and its
+    event log) uses the time *after* the step; so FCD time ``T`` is sbsim time ``T + step``.
+    """
+
+    times: list[float] = field(default_factory=list)
+    running: dict[float, set[str]] = field(default_factory=dict)
+    speed: dict[str, dict[float, float]] = field(default_factory=lambda: defaultdict(dict))
+    pos: dict[str, dict[float, tuple[float, float]]] = field(default_factory=lambda: defaultdict(dict))
+
+    def speeds(self, vehicle: str, t0: float = float("-inf"), t1: float = float("inf")) -> dict[float, float]:
+        """Speeds of ``vehicle`` at sbsim times in [t0, t1] (only where it was running)."""
+        return {t: v for t, v in self.speed.get(vehicle, {}).items() if t0 <= t <= t1}
+
+
+def read_fcd(path: Path, step: float = 1.0) -> FcdTrace:
+    trace = FcdTrace()
+    for timestep in ET.parse(path).getroot().iter("timestep"):
+        t = round(float(timestep.attrib["time"]) + step, 3)
+        trace.times.append(t)
+        trace.running[t] = set()
+        for v in timestep.iter("vehicle"):
+            vid = v.attrib["id"]
+            trace.running[t].add(vid)
+            trace.speed[vid][t] = float(v.attrib["speed"])
+            trace.pos[vid][t] = (float(v.attrib["x"]), float(v.attrib["y"]))
+    return trace
+
+
+@dataclass
+class StoryRun:
+    result: RunResult
+    events: list[dict[str, Any]]
+    fcd: FcdTrace | None
+    story: Path
+
+    @property
+    def returncode(self) -> int:
+        return self.result.returncode
+
+    def of(self, **match: Any) -> list[dict[str, Any]]:
+        """Events whose fields equal all of ``match``."""
+        return [e for e in self.events if all(e.get(k) == v for k, v in match.items())]
+
+    def activated(self, story: str) -> list[str]:
+        return [e["vehicle"] for e in self.of(type="activate", story=story)]
+
+
+def run_story(
+    sumocfg: Path,
+    source: str,
+    directory: Path,
+    *,
+    end: float | None = None,
+    seed: int | None = None,
+    fcd: bool = False,
+    sumo_options: tuple[str, ...] = (),
+    extra: tuple[str, ...] = (),
+    name: str = "story.py",
+    check: bool = True,
+) -> StoryRun:
+    """Writes ``source`` as a story into ``directory`` and runs it with ``--events`` (and FCD output if asked)."""
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    story = write_story(directory, source, name)
+    events_path = directory / (Path(name).stem + ".events.jsonl")
+    options = list(sumo_options)
+    fcd_path = directory / (Path(name).stem + ".fcd.xml")
+    if fcd:
+        options += [f"--fcd-output {fcd_path}", "--precision 6"]
+    result = run(
+        sumocfg, story=story, events=events_path, end=end, seed=seed, sumo_options=options, extra=extra, timeout=120
+    )
+    assert_no_crash(result)
+    if check:
+        assert result.returncode == 0, f"sbsim failed ({result.returncode}):\n{result.stderr}"
+    events = read_events(events_path) if events_path.exists() else []
+    trace = read_fcd(fcd_path) if fcd and result.returncode == 0 else None
+    return StoryRun(result, events, trace, story)
+
+
+def byte_key(vehicle_id: str) -> bytes:
+    return vehicle_id.encode("utf-8")
+
+
+def env_without(*names: str) -> dict[str, str]:
+    return {k: v for k, v in os.environ.items() if k not in names}
+
+
+def active_timeline(events: list[dict[str, Any]], story: str, times: list[float]) -> dict[float, frozenset[str]]:
+    """The vehicles for which ``story`` is active after the evaluation at each of ``times``, from the event log."""
+    by_time: dict[float, list[dict[str, Any]]] = defaultdict(list)
+    for e in events:
+        if e["story"] == story:
+            by_time[float(e["t"])].append(e)
+    active: set[str] = set()
+    out: dict[float, frozenset[str]] = {}
+    for t in sorted(set(times) | set(by_time)):
+        for e in by_time.get(t, []):
+            if e["type"] == "activate":
+                assert e["vehicle"] not in active, f"{story}: {e['vehicle']} activated twice at {t}"
+                active.add(e["vehicle"])
+            elif e["type"] == "deactivate":
+                assert e["vehicle"] in active, f"{story}: {e['vehicle']} deactivated while inactive at {t}"
+                active.remove(e["vehicle"])
+        out[t] = frozenset(active)
+    return {t: out[t] for t in times}
+
+
+def assert_active_as_predicted(
+    run: StoryRun,
+    story: str,
+    predicate: Any,
+    *,
+    ambiguous: Any = None,
+) -> int:
+    """At every step, ``story`` is active for exactly the running vehicles (per FCD) where
+    ``predicate(vehicle, t)`` holds; vehicles where ``ambiguous(vehicle, t)`` are not checked.
+    Returns how many (vehicle, step) pairs were predicted active (so tests can require some)."""
+    assert run.fcd is not None
+    timeline = active_timeline(run.events, story, run.fcd.times)
+    positives = 0
+    for t in run.fcd.times:
+        running = run.fcd.running[t]
+        considered = {v for v in running if not (ambiguous and ambiguous(v, t))}
+        predicted = {v for v in considered if predicate(v, t)}
+        actual = timeline[t] & considered
+        positives += len(predicted)
+        assert actual == predicted, (
+            f"{story} at t={t}: active but not predicted {sorted(actual - predicted)}, "
+            f"predicted but not active {sorted(predicted - actual)}"
+        )
+        assert timeline[t] <= running, f"{story} at t={t}: active for vehicles not running {timeline[t] - running}"
+    return positives
