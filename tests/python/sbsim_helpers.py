@@ -16,14 +16,14 @@ from storyboard.runner import RunResult, read_events, run
 OFFSET_BOUNDARY = (-100.0, -50.0, 700.0, 650.0)
 
 #: Summary lines that differ from run to run even with the same seed.
-TIMING_KEYS = ("wall time:", "real-time factor:")
+TIMING_KEYS = ("wall time:", "real-time factor:", "time in sumo:", "time reading vehicles:", "time in storyboard:")
 
 #: What a C++ crash looks like on stderr.
 CRASH_MARKERS = ("terminate called", "Aborted", "core dumped", "Segmentation fault", "what():")
 
 
 def stable_stdout(stdout: str) -> str:
-    """stdout without the wall-time and real-time-factor lines."""
+    """stdout without the timing lines (wall time, time in SUMO and so on, real-time factor)."""
     return "\n".join(line for line in stdout.splitlines() if not line.startswith(TIMING_KEYS))
 
 

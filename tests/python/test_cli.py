@@ -142,7 +142,6 @@ def test_end_stops_at_the_step_reaching_it(trips_cfg: Path, end: int) -> None:
     assert "end time" in summary["end"]
 
 
-@pytest.mark.xfail(strict=True, reason="--end between two steps stops one step early (before reaching it)")
 def test_end_between_steps_runs_the_step_reaching_it(trips_cfg: Path) -> None:
     # Step length 1 s: t = 10 has not reached 10.5 s yet; the step to 11 s reaches it (as SUMO's own --end).
     result = run(trips_cfg, end=10.5)

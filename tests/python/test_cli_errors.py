@@ -141,7 +141,6 @@ def _routes_with(trips_cfg: Path, tmp_path: Path, vehicle: str, first: bool) -> 
     return tmp_path / trips_cfg.name
 
 
-@pytest.mark.xfail(strict=True, reason="SUMO's multi-line load error is passed on as two stderr lines")
 def test_sumo_route_error_at_load_is_one_line(trips_cfg: Path, tmp_path: Path) -> None:
     # SUMO reads the first routes while loading: its message ("The edge 'nowhere' within the route for
     # vehicle 'lost' is not known.\n The route can not be build.") spans two lines.

@@ -146,11 +146,6 @@ BAD_CUSTOM_CLASSES = {
 }
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a custom condition/effect breaking the API contract exits 1 (std::exception "
-    "path) without naming the script, instead of exit 2 naming it",
-)
 @pytest.mark.parametrize("case", sorted(BAD_CUSTOM_CLASSES))
 def test_custom_class_breaking_the_contract_names_the_script(trips_cfg: Path, tmp_path: Path, case: str) -> None:
     base, body = BAD_CUSTOM_CLASSES[case]
