@@ -16,7 +16,11 @@ BundledScenario BundledScenario::locate() {
     std::vector<fs::path> roots;
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) roots.push_back(exe.parent_path().parent_path() / "share" / "sbsim" / "stories");
+    if (!ec) {
+        const fs::path prefix = exe.parent_path().parent_path();
+        roots.push_back(prefix / SBSIM_SITE_PACKAGES / "sbsim" / "share" / "stories");  // pip install
+        roots.push_back(prefix / "share" / "sbsim" / "stories");                      // cmake --install
+    }
     roots.emplace_back(fs::path(SBSIM_SOURCE_DIR) / "stories");
 
     std::string searched;

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 #include "app/ShellWords.h"
 
@@ -21,6 +22,16 @@ T parseNumber(const std::string& option, const std::string& text) {
 double positive(const std::string& option, double value) {
     if (!std::isfinite(value) || value <= 0) throw UsageError("option " + option + " expects a number > 0");
     return value;
+}
+
+/// Times must fit sbsim's clock: whole nanoseconds, at most about a century.
+constexpr double kMaxSeconds = 3.0e9;
+double duration(const std::string& option, double seconds, bool allowZero) {
+    if (!std::isfinite(seconds) || seconds < 0 || (!allowZero && seconds < 1e-9) || seconds > kMaxSeconds) {
+        throw UsageError("option " + option + " expects seconds " + (allowZero ? ">= 0" : "> 0 (at least 1e-9)") +
+                         " and at most 3e9");
+    }
+    return seconds;
 }
 
 }  // namespace
@@ -81,9 +92,7 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
         } else if (option == "--events") {
             cl.events = value();
         } else if (option == "--end") {
-            const double end = parseNumber<double>(option, value());
-            if (!std::isfinite(end) || end < 0) throw UsageError("option --end expects a time >= 0 in seconds");
-            cl.end = end;
+            cl.end = duration(option, parseNumber<double>(option, value()), true);
         } else if (option == "--seed") {
             cl.seed = parseNumber<std::int64_t>(option, value());
         } else if (option == "--sumo-option") {
@@ -98,12 +107,11 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
         } else if (option == "--plugin") {
             cl.plugins.emplace_back(value());
         } else if (option == "--middleware-interval") {
-            cl.middlewareInterval = positive(option, parseNumber<double>(option, value()));
+            cl.middlewareInterval = duration(option, parseNumber<double>(option, value()), false);
         } else if (option == "--v2x-range") {
             cl.v2xRange = positive(option, parseNumber<double>(option, value()));
         } else if (option == "--v2x-latency") {
-            cl.v2xLatency = parseNumber<double>(option, value());
-            if (!std::isfinite(cl.v2xLatency) || cl.v2xLatency < 0) throw UsageError("option --v2x-latency expects seconds >= 0");
+            cl.v2xLatency = duration(option, parseNumber<double>(option, value()), true);
         } else if (option == "--v2x-fade-start") {
             cl.v2xFadeStart = parseNumber<double>(option, value());
             if (!std::isfinite(*cl.v2xFadeStart) || *cl.v2xFadeStart < 0) throw UsageError("option --v2x-fade-start expects metres >= 0");
@@ -122,6 +130,12 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
         } else {
             throw UsageError("unexpected argument '" + option + "' (see sbsim --help)");
         }
+    }
+    if (cl.v2xFadeStart && *cl.v2xFadeStart > cl.v2xRange) {
+        char text[160];
+        std::snprintf(text, sizeof text, "option --v2x-fade-start: the fade start (%g m) must not exceed --v2x-range (%g m)",
+                      *cl.v2xFadeStart, cl.v2xRange);
+        throw UsageError(text);
     }
     return cl;
 }

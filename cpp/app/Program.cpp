@@ -82,6 +82,10 @@ int run(const CommandLine& cl) {
         } catch (const std::exception& e) {
             throw InputError("--plugin: cannot load '" + plugin.string() + "': " + e.what());
         }
+        if (const auto name = services::ServiceRegistry::instance().takeConflict()) {
+            throw InputError("--plugin: '" + plugin.string() + "' registers service type '" + *name +
+                             "', which is already registered");
+        }
     }
     std::optional<services::ServicesConfig> servicesConfig;
     if (cl.services) {
@@ -149,12 +153,8 @@ int run(const CommandLine& cl) {
         radio.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
         radio.fadeStart = cl.v2xFadeStart;
         radio.seed = static_cast<std::uint64_t>(cl.seed.value_or(kDefaultSeed));
-        try {
-            medium = &sim.emplaceModule<services::Medium>(
-                radio, sumo.snapshot(), [serviceManager](const std::string& id) { return serviceManager->middlewareOf(id); });
-        } catch (const std::invalid_argument& e) {
-            throw InputError(e.what());
-        }
+        medium = &sim.emplaceModule<services::Medium>(
+            radio, sumo.snapshot(), [serviceManager](const std::string& id) { return serviceManager->middlewareOf(id); });
         serviceManager->setMedium(*medium);
         serviceManager->attach(sumo);
     }
@@ -168,6 +168,9 @@ int run(const CommandLine& cl) {
         sim.run();
     } catch (const libsumo::TraCIException& e) {
         throw std::runtime_error("SUMO error at t=" + sim.now().str() + " s: " + e.what());
+    } catch (const services::ServicesConfigError& e) {
+        // A service reads its parameters when its first vehicle departs: still bad input.
+        throw InputError(std::string("--services: ") + e.what());
     }
     sim.finish();
     if (progress) progress->clear();

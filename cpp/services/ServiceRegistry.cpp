@@ -1,6 +1,7 @@
 #include "services/ServiceRegistry.h"
 
 #include <stdexcept>
+#include <utility>
 
 #include "services/Service.h"
 
@@ -12,10 +13,10 @@ ServiceRegistry& ServiceRegistry::instance() {
 }
 
 void ServiceRegistry::add(const std::string& name, Factory factory) {
-    if (!factories_.emplace(name, std::move(factory)).second) {
-        throw std::logic_error("service type '" + name + "' is registered twice");
-    }
+    if (!factories_.emplace(name, std::move(factory)).second && !conflict_) conflict_ = name;
 }
+
+std::optional<std::string> ServiceRegistry::takeConflict() { return std::exchange(conflict_, std::nullopt); }
 
 std::unique_ptr<Service> ServiceRegistry::create(const std::string& name) const {
     const auto it = factories_.find(name);

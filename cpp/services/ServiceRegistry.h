@@ -3,6 +3,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,8 +20,12 @@ public:
 
     static ServiceRegistry& instance();
 
-    /// Registers `factory` under `name`; a second type with the same name is an error.
+    /// Registers `factory` under `name`. A second type with the same name is kept out and noted:
+    /// registration runs while a library loads, where an exception would abort the program, so
+    /// the loader asks takeConflict() afterwards.
     void add(const std::string& name, Factory factory);
+    /// The first name registered twice since the last call, if any.
+    std::optional<std::string> takeConflict();
     bool contains(const std::string& name) const { return factories_.count(name) != 0; }
     /// Throws std::out_of_range naming the known types if `name` is unknown.
     std::unique_ptr<Service> create(const std::string& name) const;
@@ -28,6 +33,7 @@ public:
 
 private:
     std::map<std::string, Factory> factories_;
+    std::optional<std::string> conflict_;
 };
 
 namespace detail {

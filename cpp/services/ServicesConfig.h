@@ -65,7 +65,7 @@ private:
 ///     <services>
 ///       <service type="ClearLaneService" interval="0.5">
 ///         <listener port="2001"/>          <!-- Artery's; accepted and ignored -->
-///         <filters operator="or">          <!-- optional; "and" (the default) or "or" -->
+///         <filters operator="or">          <!-- optional; "or" (the default, as in Artery) or "and" -->
 ///           <name pattern="police\d+"/>    <!-- regex on the vehicle id -->
 ///           <type pattern="bus" match="inverse"/>  <!-- regex on the SUMO vehicle type -->
 ///         </filters>

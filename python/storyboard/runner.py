@@ -7,6 +7,7 @@ import os
 import shutil
 import subprocess
 import sys
+import sysconfig
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -76,7 +77,33 @@ def run(
     return RunResult(done.returncode, done.stdout, done.stderr)
 
 
+def cmake_prefix() -> Path:
+    """Where pip put sbsim's C++ SDK (libsbsim, headers, the CMake package): pass it to CMake as
+    ``-DCMAKE_PREFIX_PATH`` so that ``find_package(sbsim)`` works for out-of-tree service modules."""
+    return Path(sysconfig.get_paths()["platlib"]) / "sbsim"
+
+
 def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
     """The events of an ``--events`` file, one dict per line (``pandas.read_json(path, lines=True)`` works too)."""
     with open(path, encoding="utf-8") as f:
         return [json.loads(line) for line in f if line.strip()]
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """``python -m storyboard.runner --cmake-prefix`` prints :func:`cmake_prefix`."""
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="python -m storyboard.runner", description=main.__doc__)
+    parser.add_argument(
+        "--cmake-prefix", action="store_true", help="print the CMAKE_PREFIX_PATH for find_package(sbsim)"
+    )
+    args = parser.parse_args(argv)
+    if args.cmake_prefix:
+        print(cmake_prefix())
+    else:
+        parser.print_help()
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

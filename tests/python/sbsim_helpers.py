@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 import textwrap
 import xml.etree.ElementTree as ET
 from collections import defaultdict
@@ -11,6 +12,10 @@ from pathlib import Path
 from typing import Any
 
 from storyboard.runner import RunResult, read_events, run
+
+#: The repository's root and its ready scenarios.
+REPO = Path(__file__).resolve().parents[2]
+STORIES = REPO / "stories"
 
 #: convBoundary written into the offset scenario's net (conftest.offset_cfg): xmin, ymin, xmax, ymax.
 OFFSET_BOUNDARY = (-100.0, -50.0, 700.0, 650.0)
@@ -51,6 +56,8 @@ class FcdTrace:
     running: dict[float, set[str]] = field(default_factory=dict)
     speed: dict[str, dict[float, float]] = field(default_factory=lambda: defaultdict(dict))
     pos: dict[str, dict[float, tuple[float, float]]] = field(default_factory=lambda: defaultdict(dict))
+    #: SUMO lane id (``<edge>_<index>``) per vehicle and sbsim time.
+    lane: dict[str, dict[float, str]] = field(default_factory=lambda: defaultdict(dict))
 
     def speeds(self, vehicle: str, t0: float = float("-inf"), t1: float = float("inf")) -> dict[float, float]:
         """Speeds of ``vehicle`` at sbsim times in [t0, t1] (only where it was running)."""
@@ -68,6 +75,8 @@ def read_fcd(path: Path, step: float = 1.0) -> FcdTrace:
             trace.running[t].add(vid)
             trace.speed[vid][t] = float(v.attrib["speed"])
             trace.pos[vid][t] = (float(v.attrib["x"]), float(v.attrib["y"]))
+            if "lane" in v.attrib:
+                trace.lane[vid][t] = v.attrib["lane"]
     return trace
 
 
@@ -176,3 +185,28 @@ def assert_active_as_predicted(
         )
         assert timeline[t] <= running, f"{story} at t={t}: active for vehicles not running {timeline[t] - running}"
     return positives
+
+
+def message_counts(stdout: str) -> dict[str, tuple[int, int]]:
+    """The summary's ``messages <Type>: sent N, delivered M`` lines, as {type: (sent, delivered)}."""
+    out: dict[str, tuple[int, int]] = {}
+    for line in stdout.splitlines():
+        m = re.fullmatch(r"messages (\S+): sent (\d+), delivered (\d+)", line.strip())
+        if m:
+            out[m.group(1)] = (int(m.group(2)), int(m.group(3)))
+    return out
+
+
+def assert_bad_input(result: RunResult, *needles: str) -> str:
+    """Exit 2, nothing on stdout, exactly one stderr line (starting with "sbsim") that contains every
+    needle; returns the line."""
+    assert_no_crash(result)
+    assert result.returncode == 2, f"exit {result.returncode}, stderr:\n{result.stderr}"
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1, f"expected one line on stderr, got {len(lines)}:\n{result.stderr}"
+    line = lines[0]
+    assert line.startswith("sbsim"), line
+    for needle in needles:
+        assert needle in line, f"{needle!r} not in {line!r}"
+    assert result.stdout == "", f"unexpected stdout:\n{result.stdout}"
+    return line
