@@ -17,19 +17,15 @@ void Middleware::host(Service& service, const ServiceSpec& spec) {
     services_.push_back(&service);
 }
 
-void Middleware::initialize() {
-    // Triggers sit on the interval's grid (the next multiple after now), so all vehicles'
-    // services run at the same instants, in departure order.
-    const kernel::SimTime interval = manager_.interval();
-    const kernel::SimTime next = interval * (simTime() / interval + 1);
-    scheduleAt(next, triggerTimer_);
+void Middleware::trigger() {
+    // A vehicle departing in the step at a grid time has just been initialized: its first
+    // trigger is the next one.
+    if (simTime() <= departedAt_) return;
+    for (Service* s : services_) s->trigger();
 }
 
 void Middleware::handleMessage(kernel::Message& msg) {
-    if (&msg == &triggerTimer_) {
-        scheduleAfter(manager_.interval(), triggerTimer_);
-        for (Service* s : services_) s->trigger();
-    } else if (auto* delivery = dynamic_cast<Delivery*>(&msg)) {
+    if (auto* delivery = dynamic_cast<Delivery*>(&msg)) {
         manager_.medium().delivered(*delivery->message);
         for (Service* s : services_) s->indicate(*delivery->message);
     } else {

@@ -13,8 +13,8 @@ namespace sbsim::services {
 class ServiceManager;
 
 /// One vehicle's middleware: created when the vehicle departs, it hosts the vehicle's services
-/// (which the simulation owns, as modules), triggers them every update interval, and hands them
-/// storyboard signals and incoming V2X messages. Removed, services first, when the vehicle arrives.
+/// (which the simulation owns, as modules) and hands them triggers, storyboard signals and incoming
+/// V2X messages. Removed, services first, when the vehicle arrives.
 class Middleware : public kernel::Module {
 public:
     /// A V2X message on its way to this middleware.
@@ -32,9 +32,11 @@ public:
 
     /// Hosts `service` (already owned by the simulation) with its configuration.
     void host(Service& service, const ServiceSpec& spec);
+    /// Triggers the services, from the first interval after the vehicle departed on.
+    void trigger();
     void signal(const storyboard::StoryboardSignal& signal);
 
-    void initialize() override;
+    void initialize() override { departedAt_ = simTime(); }
     void handleMessage(kernel::Message& msg) override;
 
 private:
@@ -42,7 +44,7 @@ private:
     std::string vehicleId_;
     std::unique_ptr<traffic::VehicleController> controller_;
     std::vector<Service*> services_;
-    kernel::Message triggerTimer_{"middleware trigger"};
+    kernel::SimTime departedAt_;
 };
 
 }  // namespace sbsim::services

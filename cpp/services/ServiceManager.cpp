@@ -1,5 +1,6 @@
 #include "services/ServiceManager.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "kernel/Simulation.h"
@@ -20,7 +21,22 @@ ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval, 
 
 ServiceManager::~ServiceManager() = default;
 
-void ServiceManager::initialize() { simulation().subscribe(storyboard::Storyboard::signalEmitted, *this); }
+void ServiceManager::initialize() {
+    simulation().subscribe(storyboard::Storyboard::signalEmitted, *this);
+    scheduleAt(interval_ * (simTime() / interval_ + 1), triggerTimer_);
+}
+
+void ServiceManager::handleMessage(kernel::Message& msg) {
+    if (&msg != &triggerTimer_) return kernel::Module::handleMessage(msg);
+    scheduleAfter(interval_, triggerTimer_);
+    // Index loop: services may not end vehicles, but the list must not be walked by iterator
+    // across anything that could grow it.
+    for (std::size_t i = 0; i < departureOrder_.size(); ++i) departureOrder_[i]->trigger();
+}
+
+void ServiceManager::listenToAllSignals(Service& service) {
+    if (std::find(allSignals_.begin(), allSignals_.end(), &service) == allSignals_.end()) allSignals_.push_back(&service);
+}
 
 void ServiceManager::attach(kernel::Module& sumo) {
     sumo.subscribe(traffic::SumoBridge::departedSignal, *this);
@@ -50,7 +66,10 @@ void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, const k
     const auto& signal = dynamic_cast<const storyboard::StoryboardSignal&>(value);
     Middleware* ego = middlewareOf(signal.ego);
     if (ego != nullptr) ego->signal(signal);
-    for (Service* s : allSignals_) {
+    // Index loop over the listeners present now: a listener may start listening to all meanwhile.
+    const std::size_t listeners = allSignals_.size();
+    for (std::size_t i = 0; i < listeners && i < allSignals_.size(); ++i) {
+        Service* s = allSignals_[i];
         if (ego == nullptr || s->vehicleId() != signal.ego) s->receiveSignal(signal);
     }
 }
@@ -65,6 +84,7 @@ void ServiceManager::depart(const std::string& id) {
     if (selected.empty()) return;
     auto& middleware = simulation().emplaceModule<Middleware>(*this, id);
     middlewares_[id] = &middleware;
+    departureOrder_.push_back(&middleware);
     for (const ServiceSpec* spec : selected) {
         std::unique_ptr<Service> service = ServiceRegistry::instance().create(spec->type);
         // Hosted before it joins the simulation: initialize() may already use vehicle() or send().
@@ -79,6 +99,7 @@ void ServiceManager::arrive(const std::string& id) {
     if (it == middlewares_.end()) return;
     Middleware& middleware = *it->second;
     middlewares_.erase(it);
+    std::erase(departureOrder_, &middleware);
     for (Service* s : middleware.services()) {
         std::erase(allSignals_, s);
         simulation().removeModule(*s);  // finish(), then its timers are dropped

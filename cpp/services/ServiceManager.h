@@ -16,8 +16,9 @@
 namespace sbsim::services {
 
 /// Gives each departing vehicle a middleware with the services its filters select, removes them
-/// when it arrives, and routes storyboard signals to the ego vehicle's services (and to services
-/// listening to all). Attach it to the SUMO bridge and the storyboard.
+/// when it arrives, triggers all services every interval — on the interval's grid, vehicles in
+/// departure order, one kernel event for all — and routes storyboard signals to the ego vehicle's
+/// services (and to services listening to all). Attach it to the SUMO bridge.
 class ServiceManager : public kernel::Module, private kernel::Listener {
 public:
     /// Throws std::out_of_range if the configuration names a service type nobody registered.
@@ -32,10 +33,11 @@ public:
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     Medium& medium() const;
     Middleware* middlewareOf(const std::string& vehicleId) const;
-    void listenToAllSignals(Service& service) { allSignals_.push_back(&service); }
+    void listenToAllSignals(Service& service);
     std::size_t servicesCreated() const { return servicesCreated_; }
 
     void initialize() override;
+    void handleMessage(kernel::Message& msg) override;
 
 private:
     void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
@@ -48,6 +50,8 @@ private:
     const traffic::VehicleSnapshot& snapshot_;
     Medium* medium_ = nullptr;
     std::unordered_map<std::string, Middleware*> middlewares_;
+    std::vector<Middleware*> departureOrder_;
+    kernel::Message triggerTimer_{"service trigger"};
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;
 };

@@ -147,7 +147,9 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     scheduleNextStep();
 }
 
-void SumoBridge::finish() { close(); }
+// SUMO stays loaded until the bridge is destroyed, so other modules' finish() can still ask it
+// about their vehicles; the destructor closes it whatever happened.
+void SumoBridge::finish() {}
 
 void SumoBridge::close() {
     if (!loaded_) return;

@@ -34,7 +34,8 @@ public:
 /// value: id), `arrivedSignal` (one per vehicle, value: id) and `stepSignal` (value: the snapshot).
 /// Vehicles are reported in ascending byte order of id. The run stops after the step that reaches
 /// the end time, or when SUMO expects no more vehicles, once every other event due at that time has
-/// been delivered. SUMO is closed in finish() or, at the latest, by the destructor, whatever happened.
+/// been delivered. SUMO is closed by the destructor, whatever happened (not in finish(): other
+/// modules' finish() may still ask SUMO about their vehicles).
 class SumoBridge : public kernel::Module {
 public:
     static const kernel::SignalId departedSignal;

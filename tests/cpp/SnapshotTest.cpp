@@ -163,10 +163,10 @@ TEST_P(SnapshotTest, MatchesLibsumoAtEveryStep) {
     EXPECT_GT(checker.departedTotal, 100);
     EXPECT_GT(checker.arrivedTotal, 10);
     EXPECT_GT(checker.checkedVehicles, 2000u);
-    EXPECT_TRUE(libsumo::Simulation::isLoaded());
     sim.finish();
-    EXPECT_FALSE(bridge.loaded());
-    EXPECT_FALSE(libsumo::Simulation::isLoaded());
+    // Still loaded: other modules' finish() may ask SUMO about their vehicles; the destructor closes it.
+    EXPECT_TRUE(bridge.loaded());
+    EXPECT_TRUE(libsumo::Simulation::isLoaded());
 }
 
 INSTANTIATE_TEST_SUITE_P(Threads, SnapshotTest, testing::Values(1u, 0u),
