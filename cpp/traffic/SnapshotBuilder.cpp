@@ -3,7 +3,28 @@
 #include <libsumo/Lane.h>
 #include <libsumo/Vehicle.h>
 
+#include <mutex>
+
 namespace sbsim::traffic {
+
+namespace {
+/// Vehicles whose max speed a command changed since the last fill (any builder's; there is one
+/// SUMO per process).
+struct MaxSpeedChanges {
+    std::mutex mutex;
+    std::vector<std::string> ids;
+};
+MaxSpeedChanges& maxSpeedChanges() {
+    static MaxSpeedChanges changes;
+    return changes;
+}
+}  // namespace
+
+void SnapshotBuilder::maxSpeedChanged(const std::string& id) {
+    MaxSpeedChanges& changes = maxSpeedChanges();
+    const std::lock_guard lock(changes.mutex);
+    changes.ids.push_back(id);
+}
 
 std::int32_t SnapshotBuilder::intern(const std::string& s) {
     const auto [it, inserted] = internIndex_.try_emplace(s, static_cast<std::int32_t>(strings_.size()));
@@ -27,6 +48,7 @@ void SnapshotBuilder::addVehicles(const std::vector<std::string>& ids) {
         r.length = libsumo::Vehicle::getLength(id);
         r.width = libsumo::Vehicle::getWidth(id);
         r.type = intern(libsumo::Vehicle::getTypeID(id));
+        r.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
         running_.insert_or_assign(id, std::move(r));
     }
     orderStale_ = orderStale_ || !ids.empty();
@@ -61,6 +83,14 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
     }
     out.time_ = time;
     resize(out, order_.size());
+    {
+        MaxSpeedChanges& changes = maxSpeedChanges();
+        const std::lock_guard lock(changes.mutex);
+        for (const std::string& id : changes.ids) {
+            if (const auto it = running_.find(id); it != running_.end()) it->second.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
+        }
+        changes.ids.clear();
+    }
 
     // Independent per vehicle: each index is written by exactly one thread.
     parallel_.run(order_.size(), [&](std::size_t begin, std::size_t end) {
@@ -74,8 +104,11 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
             out.position_(1, i) = p.y;
             out.speed_[i] = libsumo::Vehicle::getSpeed(id);
             out.angle_[i] = libsumo::Vehicle::getAngle(id);
-            out.acceleration_[i] = libsumo::Vehicle::getAcceleration(id);
-            out.maxSpeed_[i] = libsumo::Vehicle::getMaxSpeed(id);
+            const double speed = out.speed_[i];
+            out.acceleration_[i] = r.hasSpeed ? (speed - r.speed) / stepSeconds_ : libsumo::Vehicle::getAcceleration(id);
+            r.speed = speed;
+            r.hasSpeed = true;
+            out.maxSpeed_[i] = r.maxSpeed;
             out.length_[i] = r.length;
             out.width_[i] = r.width;
             out.type_[k] = r.type;

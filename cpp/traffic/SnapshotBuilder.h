@@ -16,9 +16,12 @@ namespace sbsim::traffic {
 /// libsumo's per-vehicle getters were measured against variable subscriptions
 /// (Vehicle::subscribe + getAllSubscriptionResults, which allocates a result object per value):
 /// getters won clearly (bench/README.md), so getters it is. Each getter looks the vehicle up by id,
-/// and that lookup dominates; the reads are independent per vehicle and read-only, so they are
-/// spread over the machine's cores. Values that never change for a vehicle (length, width, type)
-/// are read once, at departure; a vehicle's lane is interned only when it changes.
+/// and that lookup dominates, so the builder asks as little as it can: length, width and type are
+/// read once, at departure; max speed at departure and again only after VehicleController changed
+/// it (maxSpeedChanged()); acceleration is derived from the speed change over the step, exactly as
+/// SUMO computes it (the getter only for a vehicle's first step). The reads are independent per
+/// vehicle and read-only, so they are spread over the machine's cores. A vehicle's lane is interned
+/// only when it changes.
 class SnapshotBuilder {
 public:
     /// `threads`: total threads for reading (0 = all cores).
@@ -30,8 +33,13 @@ public:
     void removeVehicles(const std::vector<std::string>& ids);
     /// Reads every running vehicle's per-step values into `out`.
     void fill(VehicleSnapshot& out, kernel::SimTime time);
+    void setStepLength(double seconds) { stepSeconds_ = seconds; }
 
     std::size_t running() const { return running_.size(); }
+
+    /// Tells every builder that `id`'s max speed was changed by a command: it is read again at
+    /// the next fill. Called by VehicleController::setMaxSpeed.
+    static void maxSpeedChanged(const std::string& id);
 
 private:
     struct Record {
@@ -41,12 +49,16 @@ private:
         std::string lane;          // last lane id read
         std::int32_t laneIndex = -1;  // interned index of `lane`; -1: changed, intern it
         std::int32_t road = -1;
+        double speed = 0;       // at the previous step
+        bool hasSpeed = false;
+        double maxSpeed = 0;
     };
     std::int32_t intern(const std::string& s);
     std::int32_t roadOfLane(std::int32_t lane);
     void resize(VehicleSnapshot& out, std::size_t n) const;
 
     kernel::ParallelFor parallel_;
+    double stepSeconds_ = 1;
     std::map<std::string, Record> running_;  // ascending byte order
     std::vector<std::pair<const std::string*, Record*>> order_;  // running_ as an indexable list
     bool orderStale_ = true;

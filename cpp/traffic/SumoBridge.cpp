@@ -81,6 +81,7 @@ void SumoBridge::load() {
     loaded_ = true;
 
     stepLength_ = kernel::SimTime::fromSeconds(libsumo::Simulation::getDeltaT());
+    builder_.setStepLength(libsumo::Simulation::getDeltaT());
     begin_ = kernel::SimTime::fromMilliseconds(libsumo::Simulation::getCurrentTime());
     const double configuredEnd = libsumo::Simulation::getEndTime();
     end_ = settings_.end;

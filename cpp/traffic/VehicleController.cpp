@@ -1,5 +1,7 @@
 #include "traffic/VehicleController.h"
 
+#include "traffic/SnapshotBuilder.h"
+
 #include <libsumo/Vehicle.h>
 
 namespace sbsim::traffic {
@@ -15,7 +17,10 @@ double VehicleController::maxSpeed() const { return Vehicle::getMaxSpeed(id_); }
 double VehicleController::emergencyDecel() const { return Vehicle::getEmergencyDecel(id_); }
 int VehicleController::speedMode() const { return Vehicle::getSpeedMode(id_); }
 
-void VehicleController::setMaxSpeed(double mps) { Vehicle::setMaxSpeed(id_, mps); }
+void VehicleController::setMaxSpeed(double mps) {
+    Vehicle::setMaxSpeed(id_, mps);
+    SnapshotBuilder::maxSpeedChanged(id_);  // the snapshot reads max speed only when it changes
+}
 void VehicleController::setSpeed(double mps) { Vehicle::setSpeed(id_, mps); }
 void VehicleController::slowDown(double mps, double seconds) { Vehicle::slowDown(id_, mps, seconds); }
 void VehicleController::setSpeedMode(int mode) { Vehicle::setSpeedMode(id_, mode); }

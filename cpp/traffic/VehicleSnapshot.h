@@ -39,6 +39,8 @@ public:
 
     const std::string& roadId(Index i) const { return strings_[road_[i]]; }
     const std::string& laneId(Index i) const { return strings_[lane_[i]]; }
+    /// The vehicle type it departed with (SUMO's own copy "<type>@<id>", made when a command
+    /// changes one vehicle, is not reported).
     const std::string& typeId(Index i) const { return strings_[type_[i]]; }
 
     /// One vehicle's values, for building a snapshot by hand (tests, tools); SUMO runs fill it directly.
