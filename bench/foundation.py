@@ -25,6 +25,8 @@ def main() -> None:
         "sumo": [sumo(), "-c", cfg, "--end", end],
         "sbsim": [sbsim(), "--sumocfg", cfg, "--end", end],
         "sbsim --threads 1": [sbsim(), "--sumocfg", cfg, "--end", end, "--threads", "1"],
+        # libsumo's own cost: stepping only, no vehicle read.
+        "sbsim --no-snapshot": [sbsim(), "--sumocfg", cfg, "--end", end, "--no-snapshot"],
     }
     print(f"{args.preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
     results = alternate(commands, args.runs)

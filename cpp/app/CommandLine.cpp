@@ -61,6 +61,8 @@ Without --sumocfg, runs the bundled scenario (stories/grid-rain).
                        packet errors: reception certain up to here, falling linearly to 0 at
                        the range (default: no packet errors)
   --threads N          threads reading vehicle states after each step (default 0: all cores)
+  --no-snapshot        only step SUMO, reading no vehicle states (a baseline for benchmarks;
+                       not with --story or --services)
   --quiet              no progress, no summary, no SUMO warnings
   --version            print the version and exit
   --help               print this help and exit
@@ -119,6 +121,8 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
             const auto threads = parseNumber<std::int64_t>(option, value());
             if (threads < 0 || threads > 256) throw UsageError("option --threads expects 0 (all cores) to 256");
             cl.threads = static_cast<unsigned>(threads);
+        } else if (option == "--no-snapshot") {
+            cl.noSnapshot = flag();
         } else if (option == "--quiet" || option == "-q") {
             cl.quiet = flag();
         } else if (option == "--help" || option == "-h") {
@@ -130,6 +134,9 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
         } else {
             throw UsageError("unexpected argument '" + option + "' (see sbsim --help)");
         }
+    }
+    if (cl.noSnapshot && (cl.story || cl.services)) {
+        throw UsageError("option --no-snapshot cannot be combined with --story or --services: they read the snapshot");
     }
     if (cl.v2xFadeStart && *cl.v2xFadeStart > cl.v2xRange) {
         char text[160];

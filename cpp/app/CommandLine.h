@@ -32,6 +32,7 @@ struct CommandLine {
     bool help = false;
     bool version = false;
     unsigned threads = 0;  ///< threads reading the per-step snapshot; 0 = all cores
+    bool noSnapshot = false;  ///< step SUMO only (a benchmark baseline)
 
     /// Parses argv (without the program name). Throws UsageError naming the problem.
     static CommandLine parse(const std::vector<std::string>& args);

@@ -68,7 +68,7 @@ int run(const CommandLine& cl) {
     } else {
         const BundledScenario bundled = BundledScenario::locate();
         sumocfg = bundled.sumocfg;
-        if (!story) story = bundled.story;
+        if (!story && !cl.noSnapshot) story = bundled.story;
     }
     requireReadableFile("--sumocfg", sumocfg);
     if (story) requireReadableFile("--story", *story);
@@ -116,6 +116,7 @@ int run(const CommandLine& cl) {
     if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
     settings.quiet = cl.quiet;
     settings.threads = cl.threads;
+    settings.readVehicles = !cl.noSnapshot;
 
     // Declared before the simulation so it outlives the stories' Python objects.
     std::optional<storyboard::PythonRuntime> python;

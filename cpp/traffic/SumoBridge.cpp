@@ -136,7 +136,7 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     builder_.removeVehicles(arrived);
     vehiclesSeen_ += departed.size();
     peakRunning_ = std::max(peakRunning_, builder_.running());
-    builder_.fill(snapshot_, simTime());
+    if (settings_.readVehicles) builder_.fill(snapshot_, simTime());
     sumoSeconds_ += std::chrono::duration<double>(stepped - started).count();
     snapshotSeconds_ += std::chrono::duration<double>(Clock::now() - stepped).count();
 

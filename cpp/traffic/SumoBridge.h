@@ -21,6 +21,9 @@ struct SumoSettings {
     std::optional<kernel::SimTime> end;     ///< default: the configuration's end, else until no vehicle is left
     bool quiet = false;                     ///< also silences SUMO's warnings
     unsigned threads = 0;                   ///< threads reading the snapshot; 0 = all cores
+    /// False: step SUMO without reading vehicle states (the snapshot keeps only ids) — a
+    /// baseline that shows libsumo's own cost against the sumo binary.
+    bool readVehicles = true;
 };
 
 /// Raised when SUMO refuses the configuration; carries SUMO's own message.
