@@ -50,7 +50,7 @@ def createStories(board: storyboard.Storyboard) -> None:
     # 5. Two named cars break down.
     board.registerStory(
         Story(
-            AndCondition(CarSetCondition({"veh10", "veh20"}), TimeCondition(80, 140)),
+            AndCondition(CarSetCondition({"veh0010", "veh0020"}), TimeCondition(80, 140)),
             [StopEffect()],
             name="breakdown",
         )

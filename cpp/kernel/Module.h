@@ -28,6 +28,9 @@ public:
     /// Listen to the signals this module emits.
     void subscribe(SignalId id, Listener& listener) { signals_.subscribe(id, listener); }
     void unsubscribe(SignalId id, Listener& listener) { signals_.unsubscribe(id, listener); }
+    /// Whether an emit of `id` would reach anyone (here or simulation-wide): lets a module skip
+    /// building a payload nobody reads.
+    bool hasListeners(SignalId id) const;
 
     virtual void initialize() {}
     virtual void handleMessage(Message& msg);
@@ -63,6 +66,10 @@ private:
 #include "kernel/Simulation.h"
 
 namespace sbsim::kernel {
+
+inline bool Module::hasListeners(SignalId id) const {
+    return signals_.hasListeners(id) || (simulation_ != nullptr && simulation_->signals().hasListeners(id));
+}
 
 template <typename T>
 void Module::emit(SignalId id, const T& value) {

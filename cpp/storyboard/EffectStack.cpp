@@ -46,7 +46,7 @@ void EffectStack::applyCap(std::optional<double> before) {
     vehicle_->setMaxSpeed(now ? *now : recordedMaxSpeed_);
 }
 
-void EffectStack::settle(double speed) {
+void EffectStack::settleHold(double speed) {
     // A few cm/s: SUMO's standing vehicles report exactly 0, braking ones clearly more.
     constexpr double kStanding = 0.01;
     if (effectiveHold() == Hold::EmergencyStop && !emergencyHeld_ && speed <= kStanding) {

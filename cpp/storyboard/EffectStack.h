@@ -30,13 +30,16 @@ public:
     void remove(Token token);
     /// Called each step with the vehicle's speed: an EmergencyStop braking with slowDown() is
     /// turned into a hold once the vehicle stands, since SUMO lets it drive on after slowDown.
-    void settle(double speed);
+    void settle(double speed) {
+        if (!holds_.empty()) settleHold(speed);
+    }
 
     bool empty() const { return caps_.empty() && holds_.empty(); }
     std::optional<double> effectiveCap() const;
     std::optional<Hold> effectiveHold() const;
 
 private:
+    void settleHold(double speed);
     void applyCap(std::optional<double> before);
     void applyHold(std::optional<Hold> before);
 

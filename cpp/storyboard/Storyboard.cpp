@@ -15,8 +15,8 @@ const kernel::SignalId Storyboard::signalEmitted = kernel::registerSignal("story
 class Storyboard::Scope : public EffectScope {
 public:
     Scope(Storyboard& board, VehicleState& state, const Story& story, const std::string& id,
-          std::vector<std::string> others)
-        : board_(board), state_(state), story_(story), id_(id), others_(std::move(others)) {}
+          const ConditionResult* result = nullptr, const traffic::VehicleSnapshot* snapshot = nullptr)
+        : board_(board), state_(state), story_(story), id_(id), result_(result), snapshot_(snapshot) {}
 
     void setToken(EffectStack::Token token) { token_ = token; }
 
@@ -25,14 +25,25 @@ public:
     traffic::VehicleController& vehicle() override { return *state_.controller; }
     EffectStack& stack() override { return *state_.stack; }
     EffectStack::Token token() const override { return token_; }
-    const std::vector<std::string>& others() const override { return others_; }
+    /// Converted from snapshot indices on first use: most activations never ask.
+    const std::vector<std::string>& others() const override {
+        if (!othersReady_) {
+            if (result_ != nullptr && snapshot_ != nullptr) {
+                others_.reserve(result_->others().size());
+                for (const VehicleIndex o : result_->others()) others_.push_back(snapshot_->ids()[o]);
+            }
+            othersReady_ = true;
+        }
+        return others_;
+    }
     void emitSignal(const std::string& cause) override {
+        if (board_.log_ != nullptr) board_.log_->signal(board_.now_, story_.name(), id_, cause, others());
+        if (!board_.hasListeners(signalEmitted)) return;  // nobody to tell: build nothing
         StoryboardSignal signal;
         signal.cause = cause;
         signal.story = story_.name();
         signal.ego = id_;
-        signal.others = others_;
-        if (board_.log_ != nullptr) board_.log_->signal(board_.now_, story_.name(), id_, cause, others_);
+        signal.others = others();
         board_.emit(signalEmitted, static_cast<const kernel::Object&>(signal));
     }
 
@@ -41,7 +52,10 @@ private:
     VehicleState& state_;
     const Story& story_;
     const std::string& id_;
-    std::vector<std::string> others_;
+    const ConditionResult* result_;
+    const traffic::VehicleSnapshot* snapshot_;
+    mutable std::vector<std::string> others_;
+    mutable bool othersReady_ = false;
     EffectStack::Token token_ = 0;
 };
 
@@ -128,7 +142,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         for (Condition* c : conditions_) c->forget(id);
     }
 
-    if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 1.0));
+    if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 5.0));
     const EvaluationContext ctx(snapshot, grid_);
     for (Condition* c : conditions_) c->prepare(ctx);
 
@@ -147,10 +161,9 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
                 deactivate(*state, s, id);
             }
         }
-        if (state == nullptr) continue;
-        state->stack->settle(snapshot.speeds()[i]);
-        // A vehicle with no active story and no composed effect needs no state.
-        if (state->activeCount == 0 && state->stack->empty()) vehicles_.erase(id);
+        // A vehicle's state is kept until it leaves, even while idle: stories that flip often
+        // (a speed threshold) would otherwise rebuild it again and again.
+        if (state != nullptr) state->stack->settle(snapshot.speeds()[i]);
     }
     if (log_ != nullptr) log_->flush();
     updateSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -163,10 +176,7 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
     ++state.activeCount;
     ++story.activations_;
     if (log_ != nullptr) log_->activate(now_, story.name(), id);
-    std::vector<std::string> others;
-    others.reserve(result.others().size());
-    for (const VehicleIndex o : result.others()) others.push_back(snapshot.ids()[o]);
-    Scope scope(*this, state, story, id, std::move(others));
+    Scope scope(*this, state, story, id, &result, &snapshot);
     for (const EffectPtr& effect : story.effects()) {
         const EffectStack::Token token = nextToken_++;
         scope.setToken(token);
@@ -180,7 +190,7 @@ void Storyboard::deactivate(VehicleState& state, std::size_t s, const std::strin
     state.active[s] = false;
     --state.activeCount;
     if (log_ != nullptr) log_->deactivate(now_, story.name(), id, "condition");
-    Scope scope(*this, state, story, id, {});
+    Scope scope(*this, state, story, id);
     auto& applied = state.applied[s];
     for (auto it = applied.rbegin(); it != applied.rend(); ++it) {
         scope.setToken(it->token);

@@ -61,6 +61,11 @@ bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& 
     constexpr double kMargin = 1e-6;
     const Eigen::Vector2d d0 = b.centre() - a.centre();
     const Eigen::Vector2d w = speedB * b.heading() - speedA * a.heading();
+    // Cheap first: circles around both rectangles that cannot meet within the horizon mean the
+    // rectangles cannot either (most neighbour pairs end here).
+    const double reachAll = std::hypot(a.halfLength(), a.halfWidth()) + std::hypot(b.halfLength(), b.halfWidth()) +
+                            Footprint::kTouchTolerance + kMargin + w.norm() * lastStep * dt;
+    if (d0.squaredNorm() > reachAll * reachAll) return false;
     double from = -std::numeric_limits<double>::infinity();
     double to = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector2d& axis : {a.heading(), a.right(), b.heading(), b.right()}) {
