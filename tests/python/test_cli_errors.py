@@ -7,28 +7,14 @@ import shutil
 from pathlib import Path
 
 import pytest
-from sbsim_helpers import assert_no_crash, write_story
-from storyboard.runner import RunResult, run
+from sbsim_helpers import assert_bad_input, assert_no_crash, write_story
+from storyboard.runner import run
 
 OK_STORY = """
     import storyboard
     def createStories(board):
         board.registerStory(storyboard.Story(storyboard.TimeCondition(1), [storyboard.SignalEffect("x")]))
 """
-
-
-def assert_bad_input(result: RunResult, *needles: str) -> str:
-    """Exit 2, nothing on stdout, exactly one stderr line that contains every needle; returns the line."""
-    assert_no_crash(result)
-    assert result.returncode == 2, f"exit {result.returncode}, stderr:\n{result.stderr}"
-    lines = [line for line in result.stderr.splitlines() if line.strip()]
-    assert len(lines) == 1, f"expected one line on stderr, got {len(lines)}:\n{result.stderr}"
-    line = lines[0]
-    assert line.startswith("sbsim"), line
-    for needle in needles:
-        assert needle in line, f"{needle!r} not in {line!r}"
-    assert result.stdout == "", f"unexpected stdout:\n{result.stdout}"
-    return line
 
 
 def test_missing_sumocfg(tmp_path: Path) -> None:

@@ -220,22 +220,6 @@ TEST(MiddlewareSumo, FiltersUseTheSumoVehicleType) {
     EXPECT_GT(none, 0u) << "some vehicles run no service at all";
 }
 
-/// A story for `ego` from `begin` on, with a SignalEffect of `cause`.
-storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin, const std::string& cause) {
-    using namespace storyboard;
-    return std::make_shared<Story>(
-        std::make_shared<AndCondition>(std::make_shared<CarSetCondition>(std::set<std::string>{ego}),
-                                       std::make_shared<TimeCondition>(secs(begin))),
-        std::vector<EffectPtr>{std::make_shared<SignalEffect>(cause)}, name);
-}
-
-std::vector<std::string> signalsOf(const ProbeRecord* r) {
-    std::vector<std::string> out;
-    if (r == nullptr) return {"no such record"};
-    for (const auto& [t, sig] : r->signals) out.push_back(t.str() + " " + sig.story + " " + sig.ego + " " + sig.cause);
-    return out;
-}
-
 TEST(MiddlewareSumo, StoryboardSignalsReachTheEgoAtActivation) {
     SumoRun s(R"(<services>
         <service type="TestProbe"/>

@@ -208,23 +208,6 @@ TEST(ServiceLifecycle, OwnTimersDieWithTheVehicle) {
 
 // --- storyboard signals ----------------------------------------------------------------------
 
-/// A story for `ego` from `begin` on, with a SignalEffect of `cause`.
-storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin, const std::string& cause) {
-    using namespace storyboard;
-    return std::make_shared<Story>(
-        std::make_shared<AndCondition>(std::make_shared<CarSetCondition>(std::set<std::string>{ego}),
-                                       std::make_shared<TimeCondition>(secs(begin))),
-        std::vector<EffectPtr>{std::make_shared<SignalEffect>(cause)}, name);
-}
-
-/// (time, story, ego, cause) of every signal a record got.
-std::vector<std::string> signalsOf(const ProbeRecord* r) {
-    std::vector<std::string> out;
-    if (r == nullptr) return {"no such record"};
-    for (const auto& [t, s] : r->signals) out.push_back(t.str() + " " + s.story + " " + s.ego + " " + s.cause);
-    return out;
-}
-
 TEST(ServiceSignals, EgoServicesGetTheSignalListenersGetAllOnce) {
     Harness h(R"(<services>
         <service type="TestProbe"><filters><name pattern="d" match="inverse"/></filters></service>

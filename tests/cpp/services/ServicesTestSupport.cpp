@@ -3,9 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 #include <stdexcept>
 
 #include "services/ServiceRegistry.h"
+#include "storyboard/conditions/AndCondition.h"
+#include "storyboard/conditions/CarSetCondition.h"
+#include "storyboard/conditions/TimeCondition.h"
+#include "storyboard/effects/SignalEffect.h"
 #include "services/ServicesConfig.h"
 #include "traffic/SumoBridge.h"
 
@@ -199,6 +204,21 @@ VehicleSnapshot::Vehicle vehicle(std::string id, double x, double y, std::string
     v.y = y;
     v.type = std::move(type);
     return v;
+}
+
+storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin, const std::string& cause) {
+    using namespace storyboard;
+    return std::make_shared<Story>(
+        std::make_shared<AndCondition>(std::make_shared<CarSetCondition>(std::set<std::string>{ego}),
+                                       std::make_shared<TimeCondition>(secs(begin))),
+        std::vector<EffectPtr>{std::make_shared<SignalEffect>(cause)}, name);
+}
+
+std::vector<std::string> signalsOf(const ProbeRecord* r) {
+    std::vector<std::string> out;
+    if (r == nullptr) return {"no such record"};
+    for (const auto& [t, s] : r->signals) out.push_back(t.str() + " " + s.story + " " + s.ego + " " + s.cause);
+    return out;
 }
 
 }  // namespace sbsim::services::test

@@ -18,6 +18,7 @@
 #include "services/Service.h"
 #include "services/ServiceManager.h"
 #include "services/V2xMessage.h"
+#include "storyboard/Story.h"
 #include "storyboard/StoryboardSignal.h"
 #include "traffic/VehicleSnapshot.h"
 
@@ -190,5 +191,11 @@ public:
 };
 
 VehicleSnapshot::Vehicle vehicle(std::string id, double x = 0, double y = 0, std::string type = "car");
+
+/// A story for `ego` from `begin` on, with a SignalEffect of `cause`.
+storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin, const std::string& cause);
+
+/// (time, story, ego, cause) of every signal a record got.
+std::vector<std::string> signalsOf(const ProbeRecord* r);
 
 }  // namespace sbsim::services::test
