@@ -135,7 +135,8 @@ int run(const CommandLine& cl) {
     storyboard::Storyboard* board = nullptr;
     std::unique_ptr<storyboard::StoryScript> script;
     if (story) {
-        board = &sim.emplaceModule<storyboard::Storyboard>(cl.seed.value_or(kDefaultSeed), log ? &*log : nullptr);
+        board = &sim.emplaceModule<storyboard::Storyboard>(cl.seed.value_or(kDefaultSeed), log ? &*log : nullptr,
+                                                            cl.threads);
         board->attach(sumo);
         script = std::make_unique<storyboard::StoryScript>(*python, *story, *board,
                                                            storyboard::CanvasFrame(sumo.netBoundary()));

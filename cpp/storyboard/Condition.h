@@ -26,6 +26,10 @@ public:
     virtual void forget(std::string_view /*vehicleId*/) {}
     /// The radius (m) this condition searches neighbours in, if it uses the neighbour grid.
     virtual std::optional<double> neighbourRadius() const { return std::nullopt; }
+    /// True if test() keeps no state and has no side effects, so it may run for any vehicle, in
+    /// any order, on any thread (after prepare()). The board evaluates stories whose whole tree
+    /// is pure for all vehicles in parallel; the others in Artery's order, one vehicle at a time.
+    virtual bool pure() const { return false; }
     /// Calls `visit` on each direct child (And/Or), so the board can reach every node of a tree.
     virtual void forEachChild(const std::function<void(Condition&)>& /*visit*/) {}
 };

@@ -59,10 +59,11 @@ private:
     EffectStack::Token token_ = 0;
 };
 
-Storyboard::Storyboard(std::uint64_t seed, EventLog* log)
+Storyboard::Storyboard(std::uint64_t seed, EventLog* log, unsigned threads)
     : kernel::Module("storyboard"),
       seed_(seed),
       log_(log),
+      parallel_(threads),
       makeController_([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); }) {}
 
 Storyboard::~Storyboard() = default;
@@ -94,7 +95,9 @@ void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
     if (!story->explicitName_) story->name_ = "story" + std::to_string(stories_.size());
     collectConditions(story->condition());
+    pure_.push_back(story->condition().pure());
     stories_.push_back(std::move(story));
+    precomputed_.resize(stories_.size());
     for (auto& [id, state] : vehicles_) {
         state.applied.resize(stories_.size());
         state.active.resize(stories_.size());
@@ -146,13 +149,27 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     const EvaluationContext ctx(snapshot, grid_);
     for (Condition* c : conditions_) c->prepare(ctx);
 
+    const auto n = static_cast<std::size_t>(snapshot.size());
+    for (std::size_t s = 0; s < stories_.size(); ++s) {
+        if (!pure_[s]) continue;
+        Condition& condition = stories_[s]->condition();
+        std::vector<ConditionResult>& results = precomputed_[s];
+        results.assign(n, ConditionResult(false));
+        parallel_.run(
+            n,
+            [&](std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i) results[i] = condition.test(ctx, static_cast<VehicleIndex>(i));
+            },
+            256);
+    }
+
     const auto& ids = snapshot.ids();
     for (VehicleIndex i = 0; i < snapshot.size(); ++i) {
         const std::string& id = ids[i];
         const auto found = vehicles_.find(id);
         VehicleState* state = found == vehicles_.end() ? nullptr : &found->second;
         for (std::size_t s = 0; s < stories_.size(); ++s) {
-            const ConditionResult result = stories_[s]->condition().test(ctx, i);
+            const ConditionResult result = pure_[s] ? std::move(precomputed_[s][i]) : stories_[s]->condition().test(ctx, i);
             const bool wasActive = state != nullptr && state->active[s];
             if (!wasActive && result.isTrue()) {
                 if (state == nullptr) state = &stateFor(id);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "kernel/Module.h"
+#include "kernel/ParallelFor.h"
 #include "storyboard/EffectStack.h"
 #include "storyboard/EventLog.h"
 #include "storyboard/RandomStream.h"
@@ -26,7 +27,9 @@ namespace sbsim::storyboard {
 /// condition turns true for a vehicle is activated for it (effects applied, in order); one whose
 /// condition turns false is deactivated (effects removed, in reverse order). Before that pass,
 /// every active story of every vehicle that left is deactivated with reason "vehicle_left" and
-/// its state dropped, without commands to SUMO.
+/// its state dropped, without commands to SUMO. Stories whose conditions are all pure (no state,
+/// no side effects) are evaluated for every vehicle up front, in parallel; that changes nothing
+/// but the time, since only the ordered pass acts on the results.
 class Storyboard : public kernel::Module, private kernel::Listener {
 public:
     /// Payload: StoryboardSignal. Emitted by SignalEffect on activation.
@@ -34,8 +37,9 @@ public:
 
     using ControllerFactory = std::function<std::unique_ptr<traffic::VehicleController>(const std::string& id)>;
 
-    /// `seed` seeds the random streams; `log` (optional) receives the event lines.
-    explicit Storyboard(std::uint64_t seed, EventLog* log = nullptr);
+    /// `seed` seeds the random streams; `log` (optional) receives the event lines; `threads`
+    /// evaluate pure stories (0 = all cores).
+    explicit Storyboard(std::uint64_t seed, EventLog* log = nullptr, unsigned threads = 0);
     ~Storyboard() override;
 
     /// Listen to `sumo`'s arrivals and steps (a SumoBridge); without this call, drive update() by hand.
@@ -82,6 +86,9 @@ private:
     EventLog* log_;
     kernel::SimTime now_;
     std::vector<StoryPtr> stories_;
+    std::vector<bool> pure_;                                 // per story: its whole tree is pure
+    std::vector<std::vector<ConditionResult>> precomputed_;  // per pure story, per vehicle of the step
+    kernel::ParallelFor parallel_;
     std::vector<Condition*> conditions_;  // every distinct node of every tree, for prepare/forget
     std::unordered_set<Condition*> knownConditions_;
     std::optional<double> neighbourRadius_;

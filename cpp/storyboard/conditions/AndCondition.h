@@ -18,6 +18,8 @@ public:
     const ConditionPtr& left() const { return a_; }
     const ConditionPtr& right() const { return b_; }
 
+    bool pure() const override { return a_->pure() && b_->pure(); }
+
 private:
     ConditionPtr a_;
     ConditionPtr b_;

@@ -15,6 +15,8 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     const std::set<std::string>& ids() const { return ids_; }
 
+    bool pure() const override { return true; }
+
 private:
     std::set<std::string> ids_;
     VehicleIdSet lookup_;  // the same ids, hashed: one lookup per vehicle and step

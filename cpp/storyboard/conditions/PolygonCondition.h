@@ -17,6 +17,8 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     const geometry::Polygon& polygon() const { return polygon_; }
 
+    bool pure() const override { return true; }
+
 private:
     geometry::Polygon polygon_;
 };

@@ -11,6 +11,8 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     double threshold() const { return threshold_; }
 
+    bool pure() const override { return true; }
+
 private:
     double threshold_;
 };
@@ -21,6 +23,8 @@ public:
     explicit SpeedConditionLess(double mps);
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     double threshold() const { return threshold_; }
+
+    bool pure() const override { return true; }
 
 private:
     double threshold_;

@@ -36,12 +36,12 @@ ConditionResult SpeedDifferenceCondition::test(const EvaluationContext& ctx, Veh
     if (!distance_) return testAll(snapshot, ego);
     const Eigen::VectorXd& speeds = snapshot.speeds();
     const double egoSpeed = speeds[ego];
-    scratch_.clear();
+    std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, *distance_, [&](VehicleIndex o) {
-        if (qualifies(egoSpeed, speeds[o])) scratch_.push_back(o);
+        if (qualifies(egoSpeed, speeds[o])) others.push_back(o);
     });
-    std::sort(scratch_.begin(), scratch_.end());
-    return ConditionResult::ofOthers(std::vector<VehicleIndex>(scratch_.begin(), scratch_.end()));
+    std::sort(others.begin(), others.end());
+    return ConditionResult::ofOthers(std::move(others));
 }
 
 ConditionResult SpeedDifferenceCondition::testAll(const traffic::VehicleSnapshot& snapshot, VehicleIndex ego) {

@@ -25,6 +25,8 @@ protected:
     /// Throws std::invalid_argument for a NaN delta or a negative or non-finite distance.
     SpeedDifferenceCondition(Direction direction, double delta, std::optional<double> distance);
 
+    bool pure() const override { return true; }
+
 private:
     bool qualifies(double egoSpeed, double otherSpeed) const {
         return direction_ == Direction::EgoFaster ? egoSpeed - otherSpeed > delta_ : otherSpeed - egoSpeed > delta_;
@@ -40,7 +42,6 @@ private:
     SnapshotStamp stamp_;
     std::vector<VehicleIndex> bySpeed_;
     std::vector<double> sortedSpeeds_;
-    std::vector<VehicleIndex> scratch_;  // reused between calls
 };
 
 /// The other vehicles the ego is faster than by more than `delta`: speed(ego) - speed(o) > delta.

@@ -18,6 +18,8 @@ public:
     kernel::SimTime begin() const { return begin_; }
     kernel::SimTime end() const { return end_; }
 
+    bool pure() const override { return true; }
+
 private:
     kernel::SimTime begin_;
     kernel::SimTime end_;

@@ -38,12 +38,12 @@ ConditionResult TtcCondition::test(const EvaluationContext& ctx, VehicleIndex eg
     const Eigen::VectorXd& speeds = snapshot.speeds();
     const Footprint& egoFootprint = footprints_[ego];
     const double egoSpeed = speeds[ego];
-    scratch_.clear();
+    std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
-        if (conflict(egoFootprint, egoSpeed, footprints_[o], speeds[o], ttc_)) scratch_.push_back(o);
+        if (conflict(egoFootprint, egoSpeed, footprints_[o], speeds[o], ttc_)) others.push_back(o);
     });
-    std::sort(scratch_.begin(), scratch_.end());
-    return ConditionResult::ofOthers(std::vector<VehicleIndex>(scratch_.begin(), scratch_.end()));
+    std::sort(others.begin(), others.end());
+    return ConditionResult::ofOthers(std::move(others));
 }
 
 bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& b, double speedB, double ttc) {

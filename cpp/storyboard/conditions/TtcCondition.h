@@ -32,6 +32,8 @@ public:
     static bool conflict(const geometry::Footprint& a, double speedA, const geometry::Footprint& b, double speedB,
                          double ttc);
 
+    bool pure() const override { return true; }
+
 private:
     void computeFootprints(const traffic::VehicleSnapshot& snapshot);
 
@@ -39,7 +41,6 @@ private:
     double distance_;
     SnapshotStamp stamp_;
     std::vector<geometry::Footprint> footprints_;  // per vehicle of the step
-    std::vector<VehicleIndex> scratch_;            // reused between calls
 };
 
 }  // namespace sbsim::storyboard

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
@@ -190,6 +191,50 @@ TEST_F(StoryboardTest, TwoStopStoriesHoldUntilTheLastEnds) {
     for (int t = 1; t <= 6; ++t) step(t, {car("a", 1)});
     // Held once at t=1 (0), released once at t=6 (-1): the first story ending at t=4 sends nothing.
     EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
+}
+
+TEST(StoryboardPurity, TreesArePureOnlyWithoutStatefulNodes) {
+    const auto time = std::make_shared<TimeCondition>(SimTime::fromSeconds(1), std::nullopt);
+    const auto fast = std::make_shared<SpeedConditionGreater>(5.0);
+    EXPECT_TRUE(AndCondition(time, fast).pure());
+    EXPECT_FALSE(AndCondition(time, std::make_shared<LimitCondition>(3)).pure());
+    EXPECT_FALSE(AndCondition(std::make_shared<LimitCondition>(3), fast).pure());
+}
+
+/// Every event of a run over many vehicles and steps, with `threads` evaluating the pure stories.
+std::string runWithThreads(unsigned threads) {
+    std::ostringstream out;
+    EventLog log(out);
+    kernel::Simulation sim;
+    auto& board = sim.emplaceModule<Storyboard>(7, &log, threads);
+    Commands commands;
+    board.setControllerFactory([&](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
+    // Pure stories (evaluated in parallel) between impure ones (a Limit shared by two stories).
+    const auto limit = std::make_shared<LimitCondition>(40);
+    board.registerStory(std::make_shared<Story>(std::make_shared<AndCondition>(std::make_shared<SpeedConditionGreater>(7.0), limit),
+                                                std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "first fast"));
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionLess>(4.0),
+                                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "slow"));
+    board.registerStory(std::make_shared<Story>(std::make_shared<AndCondition>(std::make_shared<TimeCondition>(SimTime::fromSeconds(3), std::nullopt), limit),
+                                                std::vector<EffectPtr>{std::make_shared<SignalEffect>("late")}, "late"));
+    VehicleSnapshot snapshot;
+    for (int t = 1; t <= 8; ++t) {
+        std::vector<VehicleSnapshot::Vehicle> vehicles;
+        for (int v = 0; v < 3000; ++v) {
+            if ((v + t) % 11 == 0) continue;  // vehicles come and go
+            vehicles.push_back(car("v" + std::to_string(v), (v * 7 + t * 3) % 13));
+        }
+        snapshot.assign(std::move(vehicles), SimTime::fromSeconds(t));
+        board.update(snapshot, {});
+    }
+    return out.str();
+}
+
+TEST(StoryboardParallel, ThreadsChangeNothingButTheTime) {
+    const std::string one = runWithThreads(1);
+    EXPECT_GT(std::count(one.begin(), one.end(), '\n'), 1000);
+    EXPECT_EQ(runWithThreads(2), one);
+    EXPECT_EQ(runWithThreads(4), one);
 }
 
 }  // namespace
