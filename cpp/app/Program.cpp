@@ -12,6 +12,7 @@
 #include "app/BundledScenario.h"
 #include "app/CommandLine.h"
 #include "app/ProgressDisplay.h"
+#include "app/Interruption.h"
 #include "app/PluginLibrary.h"
 #include "kernel/Simulation.h"
 #include "services/Medium.h"
@@ -166,6 +167,8 @@ int run(const CommandLine& cl) {
         progress = std::make_unique<ProgressDisplay>(stderr, sumo.endTime());
         sim.subscribe(traffic::SumoBridge::stepSignal, *progress);
     }
+    Interruption interruption(sim);
+    sim.subscribe(traffic::SumoBridge::stepSignal, interruption);
     try {
         sim.run();
     } catch (const libsumo::TraCIException& e) {
@@ -181,7 +184,8 @@ int run(const CommandLine& cl) {
     if (!cl.quiet) {
         const double simulated = (sim.now() - sumo.beginTime()).seconds();
         std::printf("sbsim %s: %s\n", SBSIM_VERSION, sumocfg.filename().string().c_str());
-        std::printf("end: %s s (%s)\n", sim.now().str().c_str(), endReasonText(sumo.endReason()));
+        std::printf("end: %s s (%s)\n", sim.now().str().c_str(),
+                    Interruption::requested() ? "interrupted" : endReasonText(sumo.endReason()));
         std::printf("steps: %llu\n", static_cast<unsigned long long>(sumo.steps()));
         std::printf("vehicles seen: %llu\n", static_cast<unsigned long long>(sumo.vehiclesSeen()));
         std::printf("peak running: %zu\n", sumo.peakRunning());
@@ -202,6 +206,10 @@ int run(const CommandLine& cl) {
         std::printf("time reading vehicles: %.3f s\n", sumo.snapshotSeconds());
         if (board != nullptr) std::printf("time in storyboard: %.3f s\n", board->updateSeconds());
         std::printf("real-time factor: %.1f\n", wall > 0 ? simulated / wall : 0.0);
+    }
+    if (Interruption::requested()) {
+        std::fprintf(stderr, "sbsim: interrupted at t=%s s\n", sim.now().str().c_str());
+        return 130;  // the shell's convention for SIGINT
     }
     return 0;
 }

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import signal
 import subprocess
+import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -274,3 +276,52 @@ def test_story_without_sumocfg_runs_on_the_bundled_scenario(tmp_path: Path) -> N
     assert result.returncode == 0, result.stderr
     assert "grid-rain.sumocfg" in result.stdout.splitlines()[0]
     assert result.summary()["activations last"] == "1"
+
+
+def test_ctrl_c_stops_after_the_step_and_closes_sumo(trips_cfg: Path, tmp_path: Path) -> None:
+    # A story that makes every step take 20 ms, so the run is still going when SIGINT arrives.
+    story = write_story(
+        tmp_path,
+        """
+        import time
+        import numpy as np
+        import storyboard
+
+        class Slow(storyboard.Condition):
+            def test_all(self, snapshot):
+                time.sleep(0.02)
+                return np.zeros(len(snapshot), bool)
+
+        def createStories(board):
+            board.registerStory(storyboard.Story(Slow(), []))
+        """,
+    )
+    tripinfo = tmp_path / "tripinfo.xml"
+    proc = subprocess.Popen(
+        [
+            str(executable()),
+            "--sumocfg",
+            str(trips_cfg),
+            "--story",
+            str(story),
+            "--end",
+            "100000",
+            "--sumo-option",
+            f"--tripinfo-output {tripinfo} --tripinfo-output.write-unfinished",
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        time.sleep(1.5)
+        assert proc.poll() is None, "the run ended before it could be interrupted"
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130, err
+    assert "(interrupted)" in out
+    assert "sbsim: interrupted at t=" in err
+    # SUMO was closed properly: its output file is complete XML.
+    ET.parse(tripinfo)

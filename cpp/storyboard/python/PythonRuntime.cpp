@@ -39,6 +39,8 @@ PythonRuntime::PythonRuntime() {
     PyConfig config;
     PyConfig_InitPythonConfig(&config);
     config.parse_argv = 0;
+    // Ctrl-C belongs to sbsim (stop after the step, close SUMO), not to Python's KeyboardInterrupt.
+    config.install_signal_handlers = 0;
     const std::string identity = interpreterIdentity().string();
     check(PyConfig_SetBytesString(&config, &config.program_name, identity.c_str()), "program name");
     check(PyConfig_SetBytesString(&config, &config.executable, identity.c_str()), "executable");
