@@ -58,6 +58,83 @@ const char* endReasonText(traffic::SumoBridge::EndReason r) {
     return "stopped";
 }
 
+std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<fs::path>& paths) {
+    std::vector<std::unique_ptr<PluginLibrary>> plugins;
+    for (const fs::path& plugin : paths) {
+        requireReadableFile("--plugin", plugin);
+        try {
+            plugins.push_back(std::make_unique<PluginLibrary>(plugin));
+        } catch (const std::exception& e) {
+            throw InputError("--plugin: cannot load '" + plugin.string() + "': " + e.what());
+        }
+        if (const auto name = services::ServiceRegistry::instance().takeConflict()) {
+            throw InputError("--plugin: '" + plugin.string() + "' registers service type '" + *name +
+                             "', which is already registered");
+        }
+    }
+    return plugins;
+}
+
+/// The services file, with every service type it names known to the registry.
+services::ServicesConfig loadServicesConfig(const fs::path& path) {
+    requireReadableFile("--services", path);
+    std::optional<services::ServicesConfig> config;
+    try {
+        config = services::ServicesConfig::load(path);
+    } catch (const std::exception& e) {
+        throw InputError(std::string("--services: ") + e.what());
+    }
+    const services::ServiceRegistry& registry = services::ServiceRegistry::instance();
+    for (const services::ServiceSpec& spec : config->services()) {
+        if (registry.contains(spec.type)) continue;
+        std::string known;
+        for (const std::string& n : registry.names()) known += (known.empty() ? "" : ", ") + n;
+        throw InputError("--services: " + path.string() + ":" + std::to_string(spec.line) + ": unknown service type '" +
+                         spec.type + "' (known: " + known + ")");
+    }
+    return std::move(*config);
+}
+
+/// What the final summary reports on.
+struct RunFigures {
+    const fs::path& sumocfg;
+    const kernel::Simulation& sim;
+    const traffic::SumoBridge& sumo;
+    const storyboard::Storyboard* board;
+    const services::ServiceManager* services;
+    const services::Medium* medium;
+    double wall;  ///< s
+};
+
+/// `key: value` lines on stdout: first what the run did (identical for identical runs), then the
+/// timing lines.
+void printSummary(const RunFigures& f) {
+    const auto count = [](std::uint64_t n) { return static_cast<unsigned long long>(n); };
+    std::printf("sbsim %s: %s\n", SBSIM_VERSION, f.sumocfg.filename().string().c_str());
+    std::printf("end: %s s (%s)\n", f.sim.now().str().c_str(),
+                Interruption::requested() ? "interrupted" : endReasonText(f.sumo.endReason()));
+    std::printf("steps: %llu\n", count(f.sumo.steps()));
+    std::printf("vehicles seen: %llu\n", count(f.sumo.vehiclesSeen()));
+    std::printf("peak running: %zu\n", f.sumo.peakRunning());
+    if (f.board != nullptr) {
+        for (const auto& story : f.board->stories()) {
+            std::printf("activations %s: %llu\n", story->name().c_str(), count(story->activations()));
+        }
+    }
+    if (f.services != nullptr) {
+        std::printf("services created: %zu\n", f.services->servicesCreated());
+        for (const auto& [type, counts] : f.medium->counts()) {
+            std::printf("messages %s: sent %llu, delivered %llu\n", type.c_str(), count(counts.sent), count(counts.delivered));
+        }
+    }
+    const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
+    std::printf("wall time: %.3f s\n", f.wall);
+    std::printf("time in sumo: %.3f s\n", f.sumo.sumoSeconds());
+    std::printf("time reading vehicles: %.3f s\n", f.sumo.snapshotSeconds());
+    if (f.board != nullptr) std::printf("time in storyboard: %.3f s\n", f.board->updateSeconds());
+    std::printf("real-time factor: %.1f\n", f.wall > 0 ? simulated / f.wall : 0.0);
+}
+
 int run(const CommandLine& cl) {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
@@ -73,37 +150,10 @@ int run(const CommandLine& cl) {
     }
     requireReadableFile("--sumocfg", sumocfg);
     if (story) requireReadableFile("--story", *story);
-    if (cl.services) requireReadableFile("--services", *cl.services);
     // Plugins first: their services must be registered before the services file is checked.
-    std::vector<std::unique_ptr<PluginLibrary>> plugins;
-    for (const fs::path& plugin : cl.plugins) {
-        requireReadableFile("--plugin", plugin);
-        try {
-            plugins.push_back(std::make_unique<PluginLibrary>(plugin));
-        } catch (const std::exception& e) {
-            throw InputError("--plugin: cannot load '" + plugin.string() + "': " + e.what());
-        }
-        if (const auto name = services::ServiceRegistry::instance().takeConflict()) {
-            throw InputError("--plugin: '" + plugin.string() + "' registers service type '" + *name +
-                             "', which is already registered");
-        }
-    }
+    const std::vector<std::unique_ptr<PluginLibrary>> plugins = loadPlugins(cl.plugins);
     std::optional<services::ServicesConfig> servicesConfig;
-    if (cl.services) {
-        try {
-            servicesConfig = services::ServicesConfig::load(*cl.services);
-        } catch (const std::exception& e) {
-            throw InputError(std::string("--services: ") + e.what());
-        }
-        for (const services::ServiceSpec& spec : servicesConfig->services()) {
-            if (!services::ServiceRegistry::instance().contains(spec.type)) {
-                std::string known;
-                for (const std::string& n : services::ServiceRegistry::instance().names()) known += (known.empty() ? "" : ", ") + n;
-                throw InputError("--services: " + cl.services->string() + ":" + std::to_string(spec.line) +
-                                 ": unknown service type '" + spec.type + "' (known: " + known + ")");
-            }
-        }
-    }
+    if (cl.services) servicesConfig = loadServicesConfig(*cl.services);
     std::ofstream events;
     if (cl.events) {
         events.open(*cl.events, std::ios::out | std::ios::trunc);
@@ -180,32 +230,9 @@ int run(const CommandLine& cl) {
     sim.finish();
     if (progress) progress->clear();
 
-    const double wall = std::chrono::duration<double>(Clock::now() - started).count();
     if (!cl.quiet) {
-        const double simulated = (sim.now() - sumo.beginTime()).seconds();
-        std::printf("sbsim %s: %s\n", SBSIM_VERSION, sumocfg.filename().string().c_str());
-        std::printf("end: %s s (%s)\n", sim.now().str().c_str(),
-                    Interruption::requested() ? "interrupted" : endReasonText(sumo.endReason()));
-        std::printf("steps: %llu\n", static_cast<unsigned long long>(sumo.steps()));
-        std::printf("vehicles seen: %llu\n", static_cast<unsigned long long>(sumo.vehiclesSeen()));
-        std::printf("peak running: %zu\n", sumo.peakRunning());
-        if (board != nullptr) {
-            for (const auto& st : board->stories()) {
-                std::printf("activations %s: %llu\n", st->name().c_str(), static_cast<unsigned long long>(st->activations()));
-            }
-        }
-        if (serviceManager != nullptr) {
-            std::printf("services created: %zu\n", serviceManager->servicesCreated());
-            for (const auto& [type, counts] : medium->counts()) {
-                std::printf("messages %s: sent %llu, delivered %llu\n", type.c_str(),
-                            static_cast<unsigned long long>(counts.sent), static_cast<unsigned long long>(counts.delivered));
-            }
-        }
-        std::printf("wall time: %.3f s\n", wall);
-        std::printf("time in sumo: %.3f s\n", sumo.sumoSeconds());
-        std::printf("time reading vehicles: %.3f s\n", sumo.snapshotSeconds());
-        if (board != nullptr) std::printf("time in storyboard: %.3f s\n", board->updateSeconds());
-        std::printf("real-time factor: %.1f\n", wall > 0 ? simulated / wall : 0.0);
+        printSummary(RunFigures{sumocfg, sim, sumo, board, serviceManager, medium,
+                                std::chrono::duration<double>(Clock::now() - started).count()});
     }
     if (Interruption::requested()) {
         std::fprintf(stderr, "sbsim: interrupted at t=%s s\n", sim.now().str().c_str());
