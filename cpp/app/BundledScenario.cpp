@@ -19,7 +19,7 @@ BundledScenario BundledScenario::locate() {
     if (!ec) {
         const fs::path prefix = exe.parent_path().parent_path();
         roots.push_back(prefix / SBSIM_SITE_PACKAGES / "sbsim" / "share" / "stories");  // pip install
-        roots.push_back(prefix / "share" / "sbsim" / "stories");                      // cmake --install
+        roots.push_back(prefix / "share" / "sbsim" / "stories");                        // cmake --install
     }
     roots.emplace_back(fs::path(SBSIM_SOURCE_DIR) / "stories");
 

@@ -116,7 +116,8 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
             cl.v2xLatency = duration(option, parseNumber<double>(option, value()), true);
         } else if (option == "--v2x-fade-start") {
             cl.v2xFadeStart = parseNumber<double>(option, value());
-            if (!std::isfinite(*cl.v2xFadeStart) || *cl.v2xFadeStart < 0) throw UsageError("option --v2x-fade-start expects metres >= 0");
+            if (!std::isfinite(*cl.v2xFadeStart) || *cl.v2xFadeStart < 0)
+                throw UsageError("option --v2x-fade-start expects metres >= 0");
         } else if (option == "--threads") {
             const auto threads = parseNumber<std::int64_t>(option, value());
             if (threads < 0 || threads > 256) throw UsageError("option --threads expects 0 (all cores) to 256");
@@ -140,7 +141,8 @@ CommandLine CommandLine::parse(const std::vector<std::string>& args) {
     }
     if (cl.v2xFadeStart && *cl.v2xFadeStart > cl.v2xRange) {
         char text[160];
-        std::snprintf(text, sizeof text, "option --v2x-fade-start: the fade start (%g m) must not exceed --v2x-range (%g m)",
+        std::snprintf(text, sizeof text,
+                      "option --v2x-fade-start: the fade start (%g m) must not exceed --v2x-range (%g m)",
                       *cl.v2xFadeStart, cl.v2xRange);
         throw UsageError(text);
     }

@@ -21,7 +21,7 @@ struct CommandLine {
     std::optional<std::filesystem::path> events;
     std::optional<double> end;  ///< seconds
     std::optional<std::int64_t> seed;
-    std::vector<std::string> sumoOptions;  ///< already split into words
+    std::vector<std::string> sumoOptions;           ///< already split into words
     std::optional<std::filesystem::path> services;  ///< Artery-format services file
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
     double middlewareInterval = 0.1;                ///< s between service triggers
@@ -31,7 +31,7 @@ struct CommandLine {
     bool quiet = false;
     bool help = false;
     bool version = false;
-    unsigned threads = 0;  ///< threads reading the per-step snapshot; 0 = all cores
+    unsigned threads = 0;     ///< threads reading the per-step snapshot; 0 = all cores
     bool noSnapshot = false;  ///< step SUMO only (a benchmark baseline)
 
     /// Parses argv (without the program name). Throws UsageError naming the problem.

@@ -11,9 +11,9 @@
 
 #include "app/BundledScenario.h"
 #include "app/CommandLine.h"
-#include "app/ProgressDisplay.h"
 #include "app/Interruption.h"
 #include "app/PluginLibrary.h"
+#include "app/ProgressDisplay.h"
 #include "kernel/Simulation.h"
 #include "services/Medium.h"
 #include "services/ServiceManager.h"
@@ -51,9 +51,12 @@ void requireReadableFile(const std::string& option, const fs::path& path) {
 
 const char* endReasonText(traffic::SumoBridge::EndReason r) {
     switch (r) {
-        case traffic::SumoBridge::EndReason::EndTime: return "end time reached";
-        case traffic::SumoBridge::EndReason::NoMoreVehicles: return "no more vehicles expected";
-        case traffic::SumoBridge::EndReason::Running: break;
+        case traffic::SumoBridge::EndReason::EndTime:
+            return "end time reached";
+        case traffic::SumoBridge::EndReason::NoMoreVehicles:
+            return "no more vehicles expected";
+        case traffic::SumoBridge::EndReason::Running:
+            break;
     }
     return "stopped";
 }
@@ -124,7 +127,8 @@ void printSummary(const RunFigures& f) {
     if (f.services != nullptr) {
         std::printf("services created: %zu\n", f.services->servicesCreated());
         for (const auto& [type, counts] : f.medium->counts()) {
-            std::printf("messages %s: sent %llu, delivered %llu\n", type.c_str(), count(counts.sent), count(counts.delivered));
+            std::printf("messages %s: sent %llu, delivered %llu\n", type.c_str(), count(counts.sent),
+                        count(counts.delivered));
         }
     }
     const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
@@ -187,7 +191,7 @@ int run(const CommandLine& cl) {
     std::unique_ptr<storyboard::StoryScript> script;
     if (story) {
         board = &sim.emplaceModule<storyboard::Storyboard>(cl.seed.value_or(kDefaultSeed), log ? &*log : nullptr,
-                                                            cl.threads);
+                                                           cl.threads);
         board->attach(sumo);
         script = std::make_unique<storyboard::StoryScript>(*python, *story, *board,
                                                            storyboard::CanvasFrame(sumo.netBoundary()));
@@ -206,8 +210,9 @@ int run(const CommandLine& cl) {
         radio.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
         radio.fadeStart = cl.v2xFadeStart;
         radio.seed = static_cast<std::uint64_t>(cl.seed.value_or(kDefaultSeed));
-        medium = &sim.emplaceModule<services::Medium>(
-            radio, sumo.snapshot(), [serviceManager](const std::string& id) { return serviceManager->middlewareOf(id); });
+        medium = &sim.emplaceModule<services::Medium>(radio, sumo.snapshot(), [serviceManager](const std::string& id) {
+            return serviceManager->middlewareOf(id);
+        });
         serviceManager->setMedium(*medium);
         serviceManager->attach(sumo);
     }

@@ -14,7 +14,8 @@ std::vector<std::string> splitShellWords(std::string_view text) {
             inWord = false;
         } else if (c == '\'') {
             const std::size_t close = text.find('\'', i + 1);
-            if (close == std::string_view::npos) throw std::invalid_argument("unterminated ' quote in: " + std::string(text));
+            if (close == std::string_view::npos)
+                throw std::invalid_argument("unterminated ' quote in: " + std::string(text));
             word.append(text.substr(i + 1, close - i - 1));
             i = close;
             inWord = true;
@@ -22,7 +23,9 @@ std::vector<std::string> splitShellWords(std::string_view text) {
             std::size_t j = i + 1;
             for (; j < text.size() && text[j] != '"'; ++j) {
                 // Inside double quotes a backslash escapes only these, as in sh.
-                if (text[j] == '\\' && j + 1 < text.size() && std::string_view("\"\\$`").find(text[j + 1]) != std::string_view::npos) ++j;
+                if (text[j] == '\\' && j + 1 < text.size() &&
+                    std::string_view("\"\\$`").find(text[j + 1]) != std::string_view::npos)
+                    ++j;
                 word.push_back(text[j]);
             }
             if (j >= text.size()) throw std::invalid_argument("unterminated \" quote in: " + std::string(text));

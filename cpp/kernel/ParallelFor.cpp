@@ -25,8 +25,8 @@ ParallelFor::~ParallelFor() {
 }
 
 void ParallelFor::run(std::size_t n, const Body& body, std::size_t minChunk) {
-    const auto parts = static_cast<unsigned>(
-        std::clamp<std::size_t>(n / std::max<std::size_t>(minChunk, 1), 1, workers_.size() + 1));
+    const auto parts =
+        static_cast<unsigned>(std::clamp<std::size_t>(n / std::max<std::size_t>(minChunk, 1), 1, workers_.size() + 1));
     if (parts == 1) {
         body(0, n);
         return;

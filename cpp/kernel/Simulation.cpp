@@ -79,14 +79,16 @@ void Simulation::finish() {
 
 void Simulation::schedule(Message& msg, SimTime at, Module& target) {
     if (at < now_) {
-        throw std::logic_error("message '" + msg.name() + "' scheduled in the past (" + at.str() + " s < " + now_.str() + " s)");
+        throw std::logic_error("message '" + msg.name() + "' scheduled in the past (" + at.str() + " s < " +
+                               now_.str() + " s)");
     }
     fes_.insert(msg, at, &target);
 }
 
 void Simulation::schedule(std::unique_ptr<Message> msg, SimTime at, Module& target) {
     if (at < now_) {
-        throw std::logic_error("message '" + msg->name() + "' scheduled in the past (" + at.str() + " s < " + now_.str() + " s)");
+        throw std::logic_error("message '" + msg->name() + "' scheduled in the past (" + at.str() + " s < " +
+                               now_.str() + " s)");
     }
     fes_.insert(std::move(msg), at, &target);
 }

@@ -19,7 +19,8 @@ Medium::Medium(MediumSettings settings, const traffic::VehicleSnapshot& snapshot
       snapshot_(snapshot),
       directory_(std::move(directory)),
       random_(settings.seed, kMediumStream) {
-    if (!(settings_.range > 0) || !std::isfinite(settings_.range)) throw std::invalid_argument("V2X range must be > 0 m");
+    if (!(settings_.range > 0) || !std::isfinite(settings_.range))
+        throw std::invalid_argument("V2X range must be > 0 m");
     if (settings_.latency < kernel::SimTime::zero()) throw std::invalid_argument("V2X latency must be >= 0 s");
     if (settings_.fadeStart && (*settings_.fadeStart < 0 || *settings_.fadeStart > settings_.range)) {
         throw std::invalid_argument("V2X fade start must be between 0 m and the range");

@@ -18,7 +18,7 @@ class Middleware;
 class V2xMessage;
 
 struct MediumSettings {
-    double range = 500;                                          ///< m
+    double range = 500;  ///< m
     kernel::SimTime latency = kernel::SimTime::fromMilliseconds(1);
     /// Packet errors: reception is certain up to this distance, then falls linearly to 0 at
     /// `range`. None (the default): no losses.

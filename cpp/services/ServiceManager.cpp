@@ -10,7 +10,8 @@
 
 namespace sbsim::services {
 
-ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot)
+ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval,
+                               const traffic::VehicleSnapshot& snapshot)
     : kernel::Module("services"), config_(std::move(config)), interval_(interval), snapshot_(snapshot) {
     if (interval_ <= kernel::SimTime::zero()) throw std::invalid_argument("the middleware interval must be > 0 s");
     for (const ServiceSpec& spec : config_.services()) {
@@ -35,7 +36,8 @@ void ServiceManager::handleMessage(kernel::Message& msg) {
 }
 
 void ServiceManager::listenToAllSignals(Service& service) {
-    if (std::find(allSignals_.begin(), allSignals_.end(), &service) == allSignals_.end()) allSignals_.push_back(&service);
+    if (std::find(allSignals_.begin(), allSignals_.end(), &service) == allSignals_.end())
+        allSignals_.push_back(&service);
 }
 
 void ServiceManager::attach(kernel::Module& sumo) {

@@ -23,7 +23,8 @@ std::unique_ptr<Service> ServiceRegistry::create(const std::string& name) const 
     if (it == factories_.end()) {
         std::string known;
         for (const auto& [n, f] : factories_) known += (known.empty() ? "" : ", ") + n;
-        throw std::out_of_range("unknown service type '" + name + "' (known: " + (known.empty() ? "none" : known) + ")");
+        throw std::out_of_range("unknown service type '" + name + "' (known: " + (known.empty() ? "none" : known) +
+                                ")");
     }
     return it->second();
 }

@@ -49,6 +49,7 @@ struct ServiceRegistration {
 /// Registers service class `Class` under its own name (OMNeT++'s Define_Module).
 #define SBSIM_REGISTER_SERVICE(Class) SBSIM_REGISTER_SERVICE_AS(Class, #Class)
 /// Registers service class `Class` under `name`.
-#define SBSIM_REGISTER_SERVICE_AS(Class, name)                                                          \
-    static const ::sbsim::services::detail::ServiceRegistration sbsimServiceRegistration_##Class{ \
-        name, [] { return std::make_unique<Class>(); }}
+#define SBSIM_REGISTER_SERVICE_AS(Class, name)                                                     \
+    static const ::sbsim::services::detail::ServiceRegistration sbsimServiceRegistration_##Class { \
+        name, [] { return std::make_unique<Class>(); }                                             \
+    }

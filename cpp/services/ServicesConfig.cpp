@@ -44,8 +44,8 @@ ServiceFilter parseFilter(const XmlElement& element, const std::string& source) 
             hasPattern = true;
         } else if (key == "match") {
             if (value != "inverse") {
-                fail(source, element.line, "unknown match '" + value + "' in <" + element.name +
-                                               "> filter (the only value is 'inverse')");
+                fail(source, element.line,
+                     "unknown match '" + value + "' in <" + element.name + "> filter (the only value is 'inverse')");
             }
             filter.inverse = true;
         } else if (key == "rate") {

@@ -10,11 +10,21 @@ std::string EventLog::quote(std::string_view s) {
     out.push_back('"');
     for (const char c : s) {
         switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
+            case '"':
+                out += "\\\"";
+                break;
+            case '\\':
+                out += "\\\\";
+                break;
+            case '\n':
+                out += "\\n";
+                break;
+            case '\r':
+                out += "\\r";
+                break;
+            case '\t':
+                out += "\\t";
+                break;
             default:
                 if (static_cast<unsigned char>(c) < 0x20) {
                     char buf[8];
@@ -46,7 +56,8 @@ void EventLog::activate(kernel::SimTime t, std::string_view story, std::string_v
     out_ << "}\n";
 }
 
-void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view reason) {
+void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::string_view vehicle,
+                          std::string_view reason) {
     begin(t, "deactivate", story, vehicle);
     out_ << ", \"reason\": " << quote(reason) << "}\n";
 }

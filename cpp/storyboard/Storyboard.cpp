@@ -138,7 +138,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     for (const std::string& id : left) {
         if (const auto it = vehicles_.find(id); it != vehicles_.end()) {
             for (std::size_t s = 0; s < stories_.size(); ++s) {
-                if (it->second.active[s] && log_ != nullptr) log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
+                if (it->second.active[s] && log_ != nullptr)
+                    log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
             }
             vehicles_.erase(it);
         }
@@ -158,7 +159,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         parallel_.run(
             n,
             [&](std::size_t begin, std::size_t end) {
-                for (std::size_t i = begin; i < end; ++i) results[i] = condition.test(ctx, static_cast<VehicleIndex>(i));
+                for (std::size_t i = begin; i < end; ++i)
+                    results[i] = condition.test(ctx, static_cast<VehicleIndex>(i));
             },
             256);
     }
@@ -169,7 +171,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         const auto found = vehicles_.find(id);
         VehicleState* state = found == vehicles_.end() ? nullptr : &found->second;
         for (std::size_t s = 0; s < stories_.size(); ++s) {
-            const ConditionResult result = pure_[s] ? std::move(precomputed_[s][i]) : stories_[s]->condition().test(ctx, i);
+            const ConditionResult result =
+                pure_[s] ? std::move(precomputed_[s][i]) : stories_[s]->condition().test(ctx, i);
             const bool wasActive = state != nullptr && state->active[s];
             if (!wasActive && result.isTrue()) {
                 if (state == nullptr) state = &stateFor(id);

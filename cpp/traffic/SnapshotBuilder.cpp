@@ -87,7 +87,8 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
         MaxSpeedChanges& changes = maxSpeedChanges();
         const std::lock_guard lock(changes.mutex);
         for (const std::string& id : changes.ids) {
-            if (const auto it = running_.find(id); it != running_.end()) it->second.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
+            if (const auto it = running_.find(id); it != running_.end())
+                it->second.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
         }
         changes.ids.clear();
     }
@@ -105,7 +106,8 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
             out.speed_[i] = libsumo::Vehicle::getSpeed(id);
             out.angle_[i] = libsumo::Vehicle::getAngle(id);
             const double speed = out.speed_[i];
-            out.acceleration_[i] = r.hasSpeed ? (speed - r.speed) / stepSeconds_ : libsumo::Vehicle::getAcceleration(id);
+            out.acceleration_[i] =
+                r.hasSpeed ? (speed - r.speed) / stepSeconds_ : libsumo::Vehicle::getAcceleration(id);
             r.speed = speed;
             r.hasSpeed = true;
             out.maxSpeed_[i] = r.maxSpeed;

@@ -46,10 +46,10 @@ private:
         double length = 0;
         double width = 0;
         std::int32_t type = 0;
-        std::string lane;          // last lane id read
+        std::string lane;             // last lane id read
         std::int32_t laneIndex = -1;  // interned index of `lane`; -1: changed, intern it
         std::int32_t road = -1;
-        double speed = 0;       // at the previous step
+        double speed = 0;  // at the previous step
         bool hasSpeed = false;
         double maxSpeed = 0;
     };
@@ -59,7 +59,7 @@ private:
 
     kernel::ParallelFor parallel_;
     double stepSeconds_ = 1;
-    std::map<std::string, Record> running_;  // ascending byte order
+    std::map<std::string, Record> running_;                      // ascending byte order
     std::vector<std::pair<const std::string*, Record*>> order_;  // running_ as an indexable list
     bool orderStale_ = true;
     std::unordered_map<std::string, std::int32_t> internIndex_;

@@ -4,9 +4,9 @@
 #include <libsumo/Vehicle.h>
 
 #include <algorithm>
-#include <limits>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 #include "kernel/OneLine.h"
 #include "traffic/StderrCapture.h"

@@ -20,7 +20,8 @@ namespace sbsim::traffic {
 void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time) {
     std::sort(vehicles.begin(), vehicles.end(), [](const Vehicle& a, const Vehicle& b) { return a.id < b.id; });
     for (std::size_t i = 1; i < vehicles.size(); ++i) {
-        if (vehicles[i].id == vehicles[i - 1].id) throw std::invalid_argument("duplicate vehicle id '" + vehicles[i].id + "'");
+        if (vehicles[i].id == vehicles[i - 1].id)
+            throw std::invalid_argument("duplicate vehicle id '" + vehicles[i].id + "'");
     }
     const auto n = static_cast<Eigen::Index>(vehicles.size());
     time_ = time;

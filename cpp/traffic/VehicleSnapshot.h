@@ -29,13 +29,13 @@ public:
     /// Index of `id` in this step's arrays (binary search over the sorted ids), if running.
     std::optional<Index> indexOf(std::string_view id) const;
 
-    const Eigen::Matrix2Xd& positions() const { return position_; }  ///< SUMO network x, y (front bumper)
-    const Eigen::VectorXd& speeds() const { return speed_; }          ///< m/s
-    const Eigen::VectorXd& angles() const { return angle_; }          ///< degrees, SUMO's: 0 = north, clockwise
+    const Eigen::Matrix2Xd& positions() const { return position_; }         ///< SUMO network x, y (front bumper)
+    const Eigen::VectorXd& speeds() const { return speed_; }                ///< m/s
+    const Eigen::VectorXd& angles() const { return angle_; }                ///< degrees, SUMO's: 0 = north, clockwise
     const Eigen::VectorXd& accelerations() const { return acceleration_; }  ///< m/s²
-    const Eigen::VectorXd& lengths() const { return length_; }        ///< m
-    const Eigen::VectorXd& widths() const { return width_; }          ///< m
-    const Eigen::VectorXd& maxSpeeds() const { return maxSpeed_; }    ///< m/s, the vehicle's own cap
+    const Eigen::VectorXd& lengths() const { return length_; }              ///< m
+    const Eigen::VectorXd& widths() const { return width_; }                ///< m
+    const Eigen::VectorXd& maxSpeeds() const { return maxSpeed_; }          ///< m/s, the vehicle's own cap
 
     const std::string& roadId(Index i) const { return strings_[road_[i]]; }
     const std::string& laneId(Index i) const { return strings_[lane_[i]]; }

@@ -3,7 +3,6 @@
 #include <sbsim/services/Service.h>
 #include <sbsim/services/V2xMessage.h>
 
-
 namespace example {
 
 /// "I am braking hard": sent by a vehicle decelerating harder than a threshold.

@@ -211,12 +211,28 @@ TEST(SnapshotCommanded, MatchesLibsumoWhileVehiclesAreCommanded) {
             for (traffic::VehicleSnapshot::Index i = 0; i < s.size(); ++i) {
                 traffic::VehicleController v(s.ids()[i]);
                 switch ((steps + i) % 37) {
-                    case 0: v.setMaxSpeed(3.0 + (i % 5)); ++commands; break;
-                    case 7: v.setSpeed(0.0); ++commands; break;
-                    case 13: v.setSpeed(-1.0); ++commands; break;
-                    case 21: v.slowDown(1.0, 2.0); ++commands; break;
-                    case 29: v.setMaxSpeed(40.0); ++commands; break;
-                    default: break;
+                    case 0:
+                        v.setMaxSpeed(3.0 + (i % 5));
+                        ++commands;
+                        break;
+                    case 7:
+                        v.setSpeed(0.0);
+                        ++commands;
+                        break;
+                    case 13:
+                        v.setSpeed(-1.0);
+                        ++commands;
+                        break;
+                    case 21:
+                        v.slowDown(1.0, 2.0);
+                        ++commands;
+                        break;
+                    case 29:
+                        v.setMaxSpeed(40.0);
+                        ++commands;
+                        break;
+                    default:
+                        break;
                 }
             }
         }
@@ -232,7 +248,7 @@ TEST(SnapshotCommanded, MatchesLibsumoWhileVehiclesAreCommanded) {
     Commander commander;
     sim.subscribe(SumoBridge::departedSignal, checker);
     sim.subscribe(SumoBridge::arrivedSignal, checker);
-    sim.subscribe(SumoBridge::stepSignal, checker);   // checks step k's snapshot...
+    sim.subscribe(SumoBridge::stepSignal, checker);    // checks step k's snapshot...
     sim.subscribe(SumoBridge::stepSignal, commander);  // ...then commands for step k+1
     sim.run();
     EXPECT_EQ(checker.steps, 600);

@@ -1,9 +1,9 @@
 // SumoBridge as a kernel module: loading, errors, end time, step timing among other events.
 #include <gtest/gtest.h>
 
-#include <optional>
 #include <libsumo/Simulation.h>
 #include <unistd.h>
+#include <optional>
 
 #include <filesystem>
 #include <fstream>

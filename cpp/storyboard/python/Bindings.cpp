@@ -95,7 +95,8 @@ std::set<std::string> toIdSet(const py::handle& ids) {
     if (py::isinstance<py::str>(ids)) return {ids.cast<std::string>()};
     std::set<std::string> out;
     for (const py::handle id : py::iter(ids)) {
-        if (!py::isinstance<py::str>(id)) throw py::type_error("vehicle ids must be strings, got " + py::repr(id).cast<std::string>());
+        if (!py::isinstance<py::str>(id))
+            throw py::type_error("vehicle ids must be strings, got " + py::repr(id).cast<std::string>());
         out.insert(id.cast<std::string>());
     }
     return out;
@@ -122,14 +123,16 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
     m.doc() = "sbsim's storyboard API (Artery's names, with Pythonic aliases).";
 
     py::class_<SimTime>(m, "SimTime")
-        .def(py::init([](const py::object& seconds) { return toSimTime(seconds, "SimTime"); }), py::arg("seconds") = 0.0)
+        .def(py::init([](const py::object& seconds) { return toSimTime(seconds, "SimTime"); }),
+             py::arg("seconds") = 0.0)
         .def_property_readonly("seconds", &SimTime::seconds)
         .def("__float__", &SimTime::seconds)
         .def("__add__", [](const SimTime& a, const py::object& b) { return a + toSimTime(b, "operand"); })
         .def("__radd__", [](const SimTime& a, const py::object& b) { return toSimTime(b, "operand") + a; })
         .def("__sub__", [](const SimTime& a, const py::object& b) { return a - toSimTime(b, "operand"); })
         .def("__rsub__", [](const SimTime& a, const py::object& b) { return toSimTime(b, "operand") - a; })
-        .def("__eq__", [](const SimTime& a, const py::object& b) { return py::isinstance<SimTime>(b) && a == b.cast<SimTime>(); })
+        .def("__eq__",
+             [](const SimTime& a, const py::object& b) { return py::isinstance<SimTime>(b) && a == b.cast<SimTime>(); })
         .def("__lt__", [](const SimTime& a, const py::object& b) { return a < toSimTime(b, "operand"); })
         .def("__le__", [](const SimTime& a, const py::object& b) { return a <= toSimTime(b, "operand"); })
         .def("__gt__", [](const SimTime& a, const py::object& b) { return a > toSimTime(b, "operand"); })
@@ -138,16 +141,22 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
         .def("__repr__", [](const SimTime& t) { return "SimTime(" + t.str() + ")"; });
 
     py::class_<Coord>(m, "Coord")
-        .def(py::init([](const py::object& x, const py::object& y) { return Coord{toNumber(x, "x"), toNumber(y, "y")}; }),
+        .def(py::init([](const py::object& x, const py::object& y) {
+                 return Coord{toNumber(x, "x"), toNumber(y, "y")};
+             }),
              py::arg("x"), py::arg("y"))
         .def_readonly("x", &Coord::x)
         .def_readonly("y", &Coord::y)
-        .def("__repr__", [](const Coord& c) { return "Coord(" + py::repr(py::float_(c.x)).cast<std::string>() + ", " +
-                                                     py::repr(py::float_(c.y)).cast<std::string>() + ")"; });
+        .def("__repr__", [](const Coord& c) {
+            return "Coord(" + py::repr(py::float_(c.x)).cast<std::string>() + ", " +
+                   py::repr(py::float_(c.y)).cast<std::string>() + ")";
+        });
 
     py::class_<RandomStream, py::smart_holder>(m, "RandomNumberGenerator")
         .def_property_readonly("index", &RandomStream::index)
-        .def("uniform", [](RandomStream& r, double a, double b) { return r.uniform(a, b); }, py::arg("a") = 0.0, py::arg("b") = 1.0);
+        .def(
+            "uniform", [](RandomStream& r, double a, double b) { return r.uniform(a, b); }, py::arg("a") = 0.0,
+            py::arg("b") = 1.0);
 
     bindSnapshotView(m);
 
@@ -166,10 +175,9 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
         .def("set_speed_mode", &VehicleController::setSpeedMode, py::arg("mode"))
         .def("change_lane", &VehicleController::changeLane, py::arg("lane_index"), py::arg("seconds"));
 
-    py::class_<Condition, PythonCondition, py::smart_holder>(m, "Condition")
-        .def(py::init<>())
-        .doc() = "Base of custom conditions: override test(self, vehicle) -> bool | set[str], or the "
-                 "vectorised test_all(self, snapshot) -> numpy bool array.";
+    py::class_<Condition, PythonCondition, py::smart_holder>(m, "Condition").def(py::init<>()).doc() =
+        "Base of custom conditions: override test(self, vehicle) -> bool | set[str], or the "
+        "vectorised test_all(self, snapshot) -> numpy bool array.";
 
     py::class_<TimeCondition, Condition, py::smart_holder>(m, "TimeCondition")
         .def(py::init([](const py::object& begin, const py::object& end) {
@@ -179,19 +187,23 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
              }),
              py::arg("begin"), py::arg("end") = py::none());
     py::class_<SpeedConditionGreater, Condition, py::smart_holder>(m, "SpeedConditionGreater")
-        .def(py::init([](const py::object& mps) { return std::make_shared<SpeedConditionGreater>(toNumber(mps, "speed")); }),
+        .def(py::init(
+                 [](const py::object& mps) { return std::make_shared<SpeedConditionGreater>(toNumber(mps, "speed")); }),
              py::arg("mps"));
     py::class_<SpeedConditionLess, Condition, py::smart_holder>(m, "SpeedConditionLess")
-        .def(py::init([](const py::object& mps) { return std::make_shared<SpeedConditionLess>(toNumber(mps, "speed")); }),
+        .def(py::init(
+                 [](const py::object& mps) { return std::make_shared<SpeedConditionLess>(toNumber(mps, "speed")); }),
              py::arg("mps"));
     py::class_<CarSetCondition, Condition, py::smart_holder>(m, "CarSetCondition")
-        .def(py::init([](const py::object& ids) { return std::make_shared<CarSetCondition>(toIdSet(ids)); }), py::arg("ids"));
+        .def(py::init([](const py::object& ids) { return std::make_shared<CarSetCondition>(toIdSet(ids)); }),
+             py::arg("ids"));
     py::class_<PolygonCondition, Condition, py::smart_holder>(m, "PolygonCondition")
         .def(py::init([](const py::iterable& points) {
                  std::vector<Eigen::Vector2d> vertices;
                  for (const py::handle p : points) vertices.push_back(toSumoPoint(p));
                  if (vertices.size() < 3) {
-                     throw py::value_error("PolygonCondition needs 3 or more points, got " + std::to_string(vertices.size()));
+                     throw py::value_error("PolygonCondition needs 3 or more points, got " +
+                                           std::to_string(vertices.size()));
                  }
                  return std::make_shared<PolygonCondition>(std::move(vertices));
              }),
@@ -216,10 +228,12 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
     py::class_<LimitCondition, Condition, py::smart_holder>(m, "LimitCondition")
         .def(py::init([](const py::object& n) {
                  if (!py::isinstance<py::int_>(n) || py::isinstance<py::bool_>(n)) {
-                     throw py::type_error("LimitCondition needs a whole number of vehicles, got " + py::repr(n).cast<std::string>());
+                     throw py::type_error("LimitCondition needs a whole number of vehicles, got " +
+                                          py::repr(n).cast<std::string>());
                  }
                  const long long count = n.cast<long long>();
-                 if (count < 0) throw py::value_error("LimitCondition needs a count >= 0, got " + std::to_string(count));
+                 if (count < 0)
+                     throw py::value_error("LimitCondition needs a count >= 0, got " + std::to_string(count));
                  return std::make_shared<LimitCondition>(static_cast<unsigned>(count));
              }),
              py::arg("n"));
@@ -239,12 +253,13 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
              }),
              py::arg("rng"), py::arg("min"), py::arg("max"));
 
-    py::class_<Effect, PythonEffect, py::smart_holder>(m, "Effect")
-        .def(py::init<>())
-        .doc() = "Base of custom effects: override apply(self, vehicle) and remove(self, vehicle); "
-                 "vehicle is a VehicleController.";
+    py::class_<Effect, PythonEffect, py::smart_holder>(m, "Effect").def(py::init<>()).doc() =
+        "Base of custom effects: override apply(self, vehicle) and remove(self, vehicle); "
+        "vehicle is a VehicleController.";
     py::class_<SpeedEffect, Effect, py::smart_holder>(m, "SpeedEffect")
-        .def(py::init([](const py::object& mps) { return std::make_shared<SpeedEffect>(toNumber(mps, "SpeedEffect speed")); }),
+        .def(py::init([](const py::object& mps) {
+                 return std::make_shared<SpeedEffect>(toNumber(mps, "SpeedEffect speed"));
+             }),
              py::arg("mps"))
         .def_property_readonly("speed", &SpeedEffect::speed);
     py::class_<StopEffect, Effect, py::smart_holder>(m, "StopEffect").def(py::init<>());
@@ -264,7 +279,8 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
                  if (!effects.is_none()) {
                      for (const py::handle e : py::iter(effects)) {
                          if (!py::isinstance<Effect>(e)) {
-                             throw py::type_error("Story effects must be storyboard effects, got " + py::repr(e).cast<std::string>());
+                             throw py::type_error("Story effects must be storyboard effects, got " +
+                                                  py::repr(e).cast<std::string>());
                          }
                          list.push_back(e.cast<EffectPtr>());
                      }
@@ -302,9 +318,11 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
 
 PYBIND11_EMBEDDED_MODULE(timeline, m) {
     m.doc() = "Artery's time helpers.";
-    m.def("seconds", [](const py::object& x) { return toSimTime(x, "seconds"); }, py::arg("x"));
-    m.def("milliseconds", [](const py::object& x) { return SimTime::fromSeconds(toNumber(x, "milliseconds") / 1000.0); },
-          py::arg("x"));
+    m.def(
+        "seconds", [](const py::object& x) { return toSimTime(x, "seconds"); }, py::arg("x"));
+    m.def(
+        "milliseconds", [](const py::object& x) { return SimTime::fromSeconds(toNumber(x, "milliseconds") / 1000.0); },
+        py::arg("x"));
 }
 
 }  // namespace sbsim::storyboard

@@ -41,7 +41,8 @@ ConditionResult PythonCondition::test(const EvaluationContext& ctx, VehicleIndex
     try {
         const py::function test = py::get_override(static_cast<const Condition*>(this), "test");
         const py::handle self = py::cast(static_cast<const Condition*>(this));
-        if (!test) throwContractError(self, className(this) + " must define test(self, vehicle) or test_all(self, snapshot)");
+        if (!test)
+            throwContractError(self, className(this) + " must define test(self, vehicle) or test_all(self, snapshot)");
         const py::object result = test(VehicleView{&ctx.snapshot(), ego});
         if (py::isinstance<py::bool_>(result)) return result.cast<bool>();
         if (py::str(py::type::of(result).attr("__name__")).cast<std::string>() == "bool_") {
@@ -67,7 +68,8 @@ ConditionResult PythonCondition::test(const EvaluationContext& ctx, VehicleIndex
 
 void PythonCondition::forget(std::string_view vehicleId) {
     try {
-        if (const py::function f = py::get_override(static_cast<const Condition*>(this), "forget")) f(std::string(vehicleId));
+        if (const py::function f = py::get_override(static_cast<const Condition*>(this), "forget"))
+            f(std::string(vehicleId));
     } catch (py::error_already_set& e) {
         throwStoryError(e, "in " + className(this) + ".forget");
     }

@@ -8,8 +8,10 @@ namespace py = pybind11;
 namespace sbsim::storyboard {
 
 void PythonEffect::call(const char* method, EffectScope& scope) {
-    const std::string where = std::string("in ") + py::str(py::type::of(py::cast(static_cast<const Effect*>(this))).attr("__name__")).cast<std::string>() +
-                              "." + method + " (story " + scope.story().name() + ", vehicle " + scope.vehicleId() + ")";
+    const std::string where =
+        std::string("in ") +
+        py::str(py::type::of(py::cast(static_cast<const Effect*>(this))).attr("__name__")).cast<std::string>() + "." +
+        method + " (story " + scope.story().name() + ", vehicle " + scope.vehicleId() + ")";
     try {
         const py::function f = py::get_override(static_cast<const Effect*>(this), method);
         if (!f) {

@@ -116,7 +116,8 @@ TEST(Medium, LatenciesBelowAMillisecondAndZeroAreExact) {
 
 TEST(Medium, CountsSentAndDeliveredPerType) {
     Harness h(kAllButBare, radio(100));
-    h.step(secs(1), {vehicle("s"), vehicle("r1", 50, 0), vehicle("r2", 0, 50), vehicle("r3", 0, 150), vehicle("bare", 1, 0)});
+    h.step(secs(1),
+           {vehicle("s"), vehicle("r1", 50, 0), vehicle("r2", 0, 50), vehicle("r3", 0, 150), vehicle("bare", 1, 0)});
     for (int i = 0; i < 3; ++i) sendAt(h, secs(1), "s", "Alpha", i);
     for (int i = 0; i < 2; ++i) sendAt(h, secs(1.5), "s", "Beta", i);
     h.at(secs(1), [&] { h.medium.broadcast("ghost", std::make_unique<TestMessage>("Gamma", 0)); });
@@ -209,11 +210,11 @@ TEST(MediumSettings, ReceptionProbabilityFallsLinearlyFromFadeStartToRange) {
 
 /// Receivers around a sender at the origin, for range 100 and fade start 50.
 const std::vector<std::pair<std::string, VehicleSnapshot::Vehicle>> kLossyReceivers = {
-    {"r25", vehicle("r25", 25, 0)},    // p = 1
-    {"r60", vehicle("r60", 0, 60)},    // p = 0.8
-    {"r75", vehicle("r75", -75, 0)},   // p = 0.5
-    {"r90", vehicle("r90", 0, -90)},   // p = 0.2
-    {"r100", vehicle("r100", 100, 0)}, // p = 0: at the range
+    {"r25", vehicle("r25", 25, 0)},     // p = 1
+    {"r60", vehicle("r60", 0, 60)},     // p = 0.8
+    {"r75", vehicle("r75", -75, 0)},    // p = 0.5
+    {"r90", vehicle("r90", 0, -90)},    // p = 0.2
+    {"r100", vehicle("r100", 100, 0)},  // p = 0: at the range
 };
 
 /// Per receiver (kLossyReceivers order), which of `n` messages sent at 2 s arrived. With

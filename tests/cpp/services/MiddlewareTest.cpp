@@ -185,8 +185,9 @@ TEST(MiddlewareSumo, TriggersRunInDepartureOrder) {
     std::size_t outOfOrder = 0;
     std::string first;
     for (const auto& [t, vehicles] : byTime) {
-        const bool sorted = std::is_sorted(vehicles.begin(), vehicles.end(),
-                                           [&](const std::string& a, const std::string& b) { return rank[a] < rank[b]; });
+        const bool sorted =
+            std::is_sorted(vehicles.begin(), vehicles.end(),
+                           [&](const std::string& a, const std::string& b) { return rank[a] < rank[b]; });
         if (sorted) continue;
         if (outOfOrder++ == 0) {
             first = "at " + t.str() + " s:";

@@ -54,9 +54,9 @@ TEST(ServiceManagerFilters, NamePatternsTypePatternsInverseAndOperators) {
         <service type="TestProbeE"><filters operator="and"><name pattern="police\d+"/><type pattern="truck"/></filters></service>
         <service type="TestProbeF"><filters><name pattern="police\d+"/><type pattern="truck"/></filters></service>
     </services>)");
-    h.step(secs(1), {vehicle("police1", 0, 0, "car"), vehicle("police2", 10, 0, "truck"), vehicle("veh1", 20, 0, "truck"),
-                     vehicle("veh2", 30, 0, "car"), vehicle("police", 40, 0, "car"), vehicle("xpolice3", 50, 0, "car"),
-                     vehicle("veh3", 60, 0, "truck2")});
+    h.step(secs(1), {vehicle("police1", 0, 0, "car"), vehicle("police2", 10, 0, "truck"),
+                     vehicle("veh1", 20, 0, "truck"), vehicle("veh2", 30, 0, "car"), vehicle("police", 40, 0, "car"),
+                     vehicle("xpolice3", 50, 0, "car"), vehicle("veh3", 60, 0, "truck2")});
     std::map<std::string, Types> hosted;
     h.at(secs(1), [&] {
         for (const std::string& id : h.snapshot.ids()) hosted[id] = hostedTypes(h.manager, id);
@@ -103,9 +103,13 @@ TEST(ServiceManagerFilters, VehicleWithoutMatchingServiceGetsNoMiddleware) {
 
 TEST(ServiceManager, RejectsUnknownServiceTypesAndBadIntervals) {
     VehicleSnapshot snapshot;
-    const auto config = [] { return ServicesConfig::parse(R"(<services><service type="NoSuchService"/></services>)", "x.xml"); };
+    const auto config = [] {
+        return ServicesConfig::parse(R"(<services><service type="NoSuchService"/></services>)", "x.xml");
+    };
     EXPECT_THROW(ServiceManager(config(), secs(0.1), snapshot), std::out_of_range);
-    const auto ok = [] { return ServicesConfig::parse(R"(<services><service type="TestProbe"/></services>)", "x.xml"); };
+    const auto ok = [] {
+        return ServicesConfig::parse(R"(<services><service type="TestProbe"/></services>)", "x.xml");
+    };
     EXPECT_THROW(ServiceManager(ok(), SimTime::zero(), snapshot), std::invalid_argument);
     EXPECT_THROW(ServiceManager(ok(), secs(-0.1), snapshot), std::invalid_argument);
     EXPECT_NO_THROW(ServiceManager(ok(), secs(0.1), snapshot));
@@ -119,7 +123,7 @@ TEST(ServiceLifecycle, HostedBeforeInitializeTriggeredOnTheGridFinishedOnArrival
     h.step(secs(1), {vehicle("a")});
     h.step(secs(2), {vehicle("a"), vehicle("b", 10)});
     h.step(secs(2.35), {vehicle("a"), vehicle("b", 10), vehicle("c", 20)});  // off the 0.1 s grid
-    h.step(secs(3.5), {vehicle("b", 10), vehicle("c", 20)});                // a arrives
+    h.step(secs(3.5), {vehicle("b", 10), vehicle("c", 20)});                 // a arrives
     std::optional<Middleware*> aAfterArrival;
     h.at(secs(3.5), [&] { aAfterArrival = h.manager.middlewareOf("a"); });
     h.sim.run(secs(5));
@@ -169,7 +173,8 @@ TEST(ServiceLifecycle, TriggersSitOnTheGridOfAnyInterval) {
 }
 
 TEST(ServiceLifecycle, ServicesRunInFileOrderOnEachVehicle) {
-    Harness h(R"(<services><service type="TestProbeC"/><service type="TestProbe"/><service type="TestProbeB"/></services>)");
+    Harness h(
+        R"(<services><service type="TestProbeC"/><service type="TestProbe"/><service type="TestProbeB"/></services>)");
     h.step(secs(1), {vehicle("a")});
     h.sim.run(secs(1.1));
     EXPECT_EQ(hostedTypes(h.manager, "a"), (Types{"TestProbeC", "TestProbe", "TestProbeB"}));
@@ -220,7 +225,8 @@ TEST(ServiceSignals, EgoServicesGetTheSignalListenersGetAllOnce) {
     board.registerStory(signalStory("toD", "d", 4, "nobody"));  // d has no services
     board.registerStory(signalStory("toC", "c", 5, "for c"));
     board.registerStory(signalStory("toC2", "c", 7, "again"));
-    const std::vector<VehicleSnapshot::Vehicle> all = {vehicle("a"), vehicle("b", 5), vehicle("c", 10), vehicle("d", 15)};
+    const std::vector<VehicleSnapshot::Vehicle> all = {vehicle("a"), vehicle("b", 5), vehicle("c", 10),
+                                                       vehicle("d", 15)};
     for (int t = 1; t <= 5; ++t) h.step(secs(t), all);
     h.step(secs(6), {vehicle("b", 5), vehicle("c", 10), vehicle("d", 15)});  // a (a listener) arrives
     h.step(secs(7), {vehicle("b", 5), vehicle("c", 10), vehicle("d", 15)});

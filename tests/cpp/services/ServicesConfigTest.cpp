@@ -107,8 +107,7 @@ TEST(ServicesConfig, ParameterValuesAreEntityDecoded) {
 }
 
 TEST(ServicesConfig, NumberParameters) {
-    const ServicesConfig config =
-        parse(oneService("", R"(type="S" a="0.5" b=" 300 " c="-2e3" d="+7" e=".25" i="10")"));
+    const ServicesConfig config = parse(oneService("", R"(type="S" a="0.5" b=" 300 " c="-2e3" d="+7" e=".25" i="10")"));
     const ServiceSpec& spec = onlyService(config);
     EXPECT_DOUBLE_EQ(spec.number("a", 0), 0.5);
     EXPECT_DOUBLE_EQ(spec.number("b", 0), 300);
@@ -182,8 +181,8 @@ TEST(ServicesConfigFilters, InverseNegatesOneFilter) {
 }
 
 TEST(ServicesConfigFilters, AnyFilterPassesByDefaultAsInArtery) {
-    const ServiceSpec spec = onlyService(parse(oneService(
-        "<filters><name pattern=\"police\\d+\"/><type pattern=\"ambulance\"/></filters>")));
+    const ServiceSpec spec = onlyService(
+        parse(oneService("<filters><name pattern=\"police\\d+\"/><type pattern=\"ambulance\"/></filters>")));
     EXPECT_EQ(spec.combine, ServiceSpec::Combine::Any);
     EXPECT_TRUE(spec.matches("police3", "car"));
     EXPECT_TRUE(spec.matches("veh3", "ambulance"));
@@ -191,12 +190,12 @@ TEST(ServicesConfigFilters, AnyFilterPassesByDefaultAsInArtery) {
 }
 
 TEST(ServicesConfigFilters, AndOperatorNeedsAllFilters) {
-    const ServiceSpec spec = onlyService(parse(oneService(
-        "<filters operator=\"and\">\n"
-        "  <name pattern=\"police\\d+\"/>\n"
-        "  <name pattern=\"police1\" match=\"inverse\"/>\n"
-        "  <type pattern=\"truck|bus\"/>\n"
-        "</filters>\n")));
+    const ServiceSpec spec =
+        onlyService(parse(oneService("<filters operator=\"and\">\n"
+                                     "  <name pattern=\"police\\d+\"/>\n"
+                                     "  <name pattern=\"police1\" match=\"inverse\"/>\n"
+                                     "  <type pattern=\"truck|bus\"/>\n"
+                                     "</filters>\n")));
     EXPECT_EQ(spec.combine, ServiceSpec::Combine::All);
     ASSERT_EQ(spec.filters.size(), 3u);
     EXPECT_EQ(spec.filters[2].line, 6);

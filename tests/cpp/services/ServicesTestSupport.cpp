@@ -7,11 +7,11 @@
 #include <stdexcept>
 
 #include "services/ServiceRegistry.h"
+#include "services/ServicesConfig.h"
 #include "storyboard/conditions/AndCondition.h"
 #include "storyboard/conditions/CarSetCondition.h"
 #include "storyboard/conditions/TimeCondition.h"
 #include "storyboard/effects/SignalEffect.h"
-#include "services/ServicesConfig.h"
 #include "traffic/SumoBridge.h"
 
 namespace sbsim::services::test {
@@ -206,7 +206,8 @@ VehicleSnapshot::Vehicle vehicle(std::string id, double x, double y, std::string
     return v;
 }
 
-storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin, const std::string& cause) {
+storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin,
+                                 const std::string& cause) {
     using namespace storyboard;
     return std::make_shared<Story>(
         std::make_shared<AndCondition>(std::make_shared<CarSetCondition>(std::set<std::string>{ego}),

@@ -60,12 +60,12 @@ class ProbeService;
 
 /// Everything one probe instance saw. Records outlive their service.
 struct ProbeRecord {
-    std::string name;       ///< module name at initialize(): "<vehicle>.<type>"
-    std::string type;       ///< the service type from the services file
-    std::string vehicle;    ///< vehicleId() in initialize()
+    std::string name;     ///< module name at initialize(): "<vehicle>.<type>"
+    std::string type;     ///< the service type from the services file
+    std::string vehicle;  ///< vehicleId() in initialize()
     std::string controllerId;
     std::optional<VehicleSnapshot::Index> selfIndexAtInit;
-    std::string liveType;   ///< vehicle().typeId() in initialize(), with askSumo="1"
+    std::string liveType;  ///< vehicle().typeId() in initialize(), with askSumo="1"
     int initializeCalls = 0;
     SimTime initializedAt;
     std::vector<SimTime> triggers;
@@ -193,7 +193,8 @@ public:
 VehicleSnapshot::Vehicle vehicle(std::string id, double x = 0, double y = 0, std::string type = "car");
 
 /// A story for `ego` from `begin` on, with a SignalEffect of `cause`.
-storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin, const std::string& cause);
+storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego, double begin,
+                                 const std::string& cause);
 
 /// (time, story, ego, cause) of every signal a record got.
 std::vector<std::string> signalsOf(const ProbeRecord* r);

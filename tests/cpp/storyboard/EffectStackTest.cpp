@@ -63,9 +63,12 @@ struct Spec {
     double cap = 0;
     std::string label() const {
         switch (kind) {
-            case Cap: return "cap" + std::to_string(static_cast<int>(cap));
-            case Stop: return "stop";
-            case EmergencyStop: return "estop";
+            case Cap:
+                return "cap" + std::to_string(static_cast<int>(cap));
+            case Stop:
+                return "stop";
+            case EmergencyStop:
+                return "estop";
         }
         return "?";
     }
@@ -73,9 +76,15 @@ struct Spec {
 
 void push(EffectStack& stack, const Spec& s, EffectStack::Token token) {
     switch (s.kind) {
-        case Spec::Cap: stack.pushSpeedCap(token, s.cap); break;
-        case Spec::Stop: stack.pushHold(token, EffectStack::Hold::Stop); break;
-        case Spec::EmergencyStop: stack.pushHold(token, EffectStack::Hold::EmergencyStop); break;
+        case Spec::Cap:
+            stack.pushSpeedCap(token, s.cap);
+            break;
+        case Spec::Stop:
+            stack.pushHold(token, EffectStack::Hold::Stop);
+            break;
+        case Spec::EmergencyStop:
+            stack.pushHold(token, EffectStack::Hold::EmergencyStop);
+            break;
     }
 }
 
@@ -84,8 +93,10 @@ void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const s
     std::optional<double> cap;
     std::optional<Spec::Kind> hold;
     for (const Spec& s : active) {
-        if (s.kind == Spec::Cap) cap = s.cap;
-        else hold = s.kind;
+        if (s.kind == Spec::Cap)
+            cap = s.cap;
+        else
+            hold = s.kind;
     }
     EXPECT_DOUBLE_EQ(v.maxSpeed_, cap.value_or(kOwnMaxSpeed)) << context;
     if (!hold) {
@@ -109,8 +120,10 @@ std::pair<std::optional<double>, std::optional<Spec::Kind>> effective(const std:
     std::optional<double> cap;
     std::optional<Spec::Kind> hold;
     for (const Spec& s : active) {
-        if (s.kind == Spec::Cap) cap = s.cap;
-        else hold = s.kind;
+        if (s.kind == Spec::Cap)
+            cap = s.cap;
+        else
+            hold = s.kind;
     }
     return {cap, hold};
 }
@@ -139,7 +152,8 @@ void runAllOrders(const std::vector<Spec>& specs) {
                 active.push_back(i);
                 context += " " + specs[i].label();
                 expectState(vehicle, activeSpecs(), context);
-                if (effective(activeSpecs()) == before) EXPECT_EQ(vehicle.commands, commandsBefore) << context << ": needless command";
+                if (effective(activeSpecs()) == before)
+                    EXPECT_EQ(vehicle.commands, commandsBefore) << context << ": needless command";
             }
             context += " | remove";
             for (const std::size_t i : removal) {
@@ -149,7 +163,8 @@ void runAllOrders(const std::vector<Spec>& specs) {
                 active.erase(std::find(active.begin(), active.end(), i));
                 context += " " + specs[i].label();
                 expectState(vehicle, activeSpecs(), context);
-                if (effective(activeSpecs()) == before) EXPECT_EQ(vehicle.commands, commandsBefore) << context << ": needless command";
+                if (effective(activeSpecs()) == before)
+                    EXPECT_EQ(vehicle.commands, commandsBefore) << context << ": needless command";
             }
             EXPECT_TRUE(stack.empty());
             ++cases;
@@ -162,9 +177,7 @@ void runAllOrders(const std::vector<Spec>& specs) {
     EXPECT_EQ(cases, factorial * factorial);
 }
 
-TEST(EffectStack, TwoCapsAndAStopInEveryOrder) {
-    runAllOrders({{Spec::Cap, 10}, {Spec::Cap, 20}, {Spec::Stop}});
-}
+TEST(EffectStack, TwoCapsAndAStopInEveryOrder) { runAllOrders({{Spec::Cap, 10}, {Spec::Cap, 20}, {Spec::Stop}}); }
 
 TEST(EffectStack, TwoStopsAndAnEmergencyStopInEveryOrder) {
     runAllOrders({{Spec::Stop}, {Spec::Stop}, {Spec::EmergencyStop}});

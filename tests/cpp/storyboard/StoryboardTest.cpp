@@ -69,7 +69,8 @@ public:
 class StoryboardTest : public testing::Test {
 protected:
     StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(7, &log)) {
-        board.setControllerFactory([this](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
+        board.setControllerFactory(
+            [this](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
         sim.subscribe(Storyboard::signalEmitted, probe);
     }
 
@@ -116,7 +117,8 @@ TEST_F(StoryboardTest, DeactivatesWhenTheConditionTurnsFalseAndRestores) {
                                                 std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "fast"));
     step(1, {car("a", 10)});
     step(2, {car("a", 4)});
-    EXPECT_EQ(lines().back(), R"({"t": 2, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})");
+    EXPECT_EQ(lines().back(),
+              R"({"t": 2, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})");
     EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 50.0);
     EXPECT_FALSE(board.isActive("a", *board.stories()[0]));
 }
@@ -159,10 +161,12 @@ TEST_F(StoryboardTest, SignalComesRightAfterItsActivationWithSortedOthers) {
                                        std::make_shared<OthersCondition>()),
         std::vector<EffectPtr>{std::make_shared<SignalEffect>("siren on")}, "siren"));
     step(3, {car("z", 1), car("c", 1), car("a", 1)});
-    EXPECT_EQ(lines(), (std::vector<std::string>{
-                           R"({"t": 3, "type": "activate", "story": "siren", "vehicle": "c"})",
-                           R"({"t": 3, "type": "signal", "story": "siren", "vehicle": "c", "cause": "siren on", "others": ["a", "z"]})",
-                       }));
+    EXPECT_EQ(
+        lines(),
+        (std::vector<std::string>{
+            R"({"t": 3, "type": "activate", "story": "siren", "vehicle": "c"})",
+            R"({"t": 3, "type": "signal", "story": "siren", "vehicle": "c", "cause": "siren on", "others": ["a", "z"]})",
+        }));
     ASSERT_EQ(probe.signals.size(), 1u);
     EXPECT_EQ(probe.signals[0].ego, "c");
     EXPECT_EQ(probe.signals[0].story, "siren");
@@ -182,12 +186,12 @@ TEST_F(StoryboardTest, SharedLimitConditionKeepsItsStateAcrossStories) {
 }
 
 TEST_F(StoryboardTest, TwoStopStoriesHoldUntilTheLastEnds) {
-    board.registerStory(std::make_shared<Story>(
-        std::make_shared<TimeCondition>(SimTime::fromSeconds(1), SimTime::fromSeconds(3)),
-        std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "early"));
-    board.registerStory(std::make_shared<Story>(
-        std::make_shared<TimeCondition>(SimTime::fromSeconds(2), SimTime::fromSeconds(5)),
-        std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "late"));
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<TimeCondition>(SimTime::fromSeconds(1), SimTime::fromSeconds(3)),
+                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "early"));
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<TimeCondition>(SimTime::fromSeconds(2), SimTime::fromSeconds(5)),
+                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "late"));
     for (int t = 1; t <= 6; ++t) step(t, {car("a", 1)});
     // Held once at t=1 (0), released once at t=6 (-1): the first story ending at t=4 sends nothing.
     EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
@@ -211,12 +215,14 @@ std::string runWithThreads(unsigned threads) {
     board.setControllerFactory([&](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
     // Pure stories (evaluated in parallel) between impure ones (a Limit shared by two stories).
     const auto limit = std::make_shared<LimitCondition>(40);
-    board.registerStory(std::make_shared<Story>(std::make_shared<AndCondition>(std::make_shared<SpeedConditionGreater>(7.0), limit),
-                                                std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "first fast"));
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<AndCondition>(std::make_shared<SpeedConditionGreater>(7.0), limit),
+                                std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "first fast"));
     board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionLess>(4.0),
                                                 std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "slow"));
-    board.registerStory(std::make_shared<Story>(std::make_shared<AndCondition>(std::make_shared<TimeCondition>(SimTime::fromSeconds(3), std::nullopt), limit),
-                                                std::vector<EffectPtr>{std::make_shared<SignalEffect>("late")}, "late"));
+    board.registerStory(std::make_shared<Story>(
+        std::make_shared<AndCondition>(std::make_shared<TimeCondition>(SimTime::fromSeconds(3), std::nullopt), limit),
+        std::vector<EffectPtr>{std::make_shared<SignalEffect>("late")}, "late"));
     VehicleSnapshot snapshot;
     for (int t = 1; t <= 8; ++t) {
         std::vector<VehicleSnapshot::Vehicle> vehicles;
