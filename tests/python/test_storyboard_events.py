@@ -7,7 +7,8 @@ from collections import Counter, defaultdict
 from pathlib import Path
 
 import pytest
-from sbsim_helpers import StoryRun, active_timeline, byte_key, run_story
+from sbsim_helpers import StoryRun, active_timeline, byte_key, run_story, write_story
+from storyboard.runner import run
 
 ORDER_STORY = """
     import storyboard
@@ -294,3 +295,24 @@ def test_create_stories_runs_once_before_the_first_step(trips_cfg: Path, tmp_pat
     assert [float(s[1]) for s in steps] == [float(t) for t in range(51, 56)]
     assert all(s[0] == "step" for s in steps)
     assert run.result.summary()["steps"] == "5"
+
+
+def test_event_log_reads_into_pandas(trips_cfg: Path, tmp_path: Path) -> None:
+    pandas = pytest.importorskip("pandas")
+    story = write_story(
+        tmp_path,
+        """
+        import storyboard
+
+        def createStories(board):
+            fast = storyboard.SpeedConditionGreater(5)
+            board.registerStory(storyboard.Story(fast, [storyboard.SignalEffect("fast")]))
+        """,
+    )
+    events = tmp_path / "events.jsonl"
+    result = run(trips_cfg, story=story, events=events, end=60)
+    assert result.returncode == 0, result.stderr
+    frame = pandas.read_json(events, lines=True)
+    assert {"t", "type", "story", "vehicle"} <= set(frame.columns)
+    assert set(frame["type"]) == {"activate", "deactivate", "signal"}
+    assert (frame["type"] == "activate").sum() == int(result.summary()["activations story0"])
