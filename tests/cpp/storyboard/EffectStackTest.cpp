@@ -88,8 +88,8 @@ void push(EffectStack& stack, const Spec& s, EffectStack::Token token) {
     }
 }
 
-/// What the vehicle must look like with `active` (activation order) in force.
-void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const std::string& context) {
+/// The model: the latest cap and the latest hold of the active effects (activation order) rule.
+std::pair<std::optional<double>, std::optional<Spec::Kind>> effective(const std::vector<Spec>& active) {
     std::optional<double> cap;
     std::optional<Spec::Kind> hold;
     for (const Spec& s : active) {
@@ -98,6 +98,12 @@ void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const s
         else
             hold = s.kind;
     }
+    return {cap, hold};
+}
+
+/// What the vehicle must look like with `active` (activation order) in force.
+void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const std::string& context) {
+    const auto [cap, hold] = effective(active);
     EXPECT_DOUBLE_EQ(v.maxSpeed_, cap.value_or(kOwnMaxSpeed)) << context;
     if (!hold) {
         EXPECT_FALSE(v.held_.has_value()) << context << ": vehicle still held";
@@ -115,18 +121,6 @@ void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const s
     }
 }
 
-/// Effective (cap, hold) pair, to know whether a step must command SUMO at all.
-std::pair<std::optional<double>, std::optional<Spec::Kind>> effective(const std::vector<Spec>& active) {
-    std::optional<double> cap;
-    std::optional<Spec::Kind> hold;
-    for (const Spec& s : active) {
-        if (s.kind == Spec::Cap)
-            cap = s.cap;
-        else
-            hold = s.kind;
-    }
-    return {cap, hold};
-}
 
 void runAllOrders(const std::vector<Spec>& specs) {
     std::vector<std::size_t> activation(specs.size());
