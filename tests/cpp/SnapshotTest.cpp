@@ -30,7 +30,12 @@ using traffic::VehicleSnapshot;
 /// that moment still holds the state of the step just made.
 class SnapshotChecker : public kernel::Listener {
 public:
-    SnapshotChecker(kernel::Simulation& sim, SumoBridge& bridge) : sim_(sim), bridge_(bridge) {}
+    /// Listens to the bridge's departures, arrivals and steps from now on.
+    SnapshotChecker(kernel::Simulation& sim, SumoBridge& bridge) : sim_(sim), bridge_(bridge) {
+        sim.subscribe(SumoBridge::departedSignal, *this);
+        sim.subscribe(SumoBridge::arrivedSignal, *this);
+        sim.subscribe(SumoBridge::stepSignal, *this);
+    }
 
     void receiveSignal(Module& source, SignalId id, std::string_view value) override {
         EXPECT_EQ(&source, &bridge_);
@@ -139,9 +144,6 @@ TEST_P(SnapshotTest, MatchesLibsumoAtEveryStep) {
     kernel::Simulation sim;
     auto& bridge = sim.emplaceModule<SumoBridge>(settings);
     SnapshotChecker checker(sim, bridge);
-    sim.subscribe(SumoBridge::departedSignal, checker);
-    sim.subscribe(SumoBridge::arrivedSignal, checker);
-    sim.subscribe(SumoBridge::stepSignal, checker);
 
     bridge.load();
     ASSERT_TRUE(bridge.loaded());
@@ -190,9 +192,6 @@ TEST(SnapshotDense, ParallelReadsMatchLibsumo) {
     kernel::Simulation sim;
     auto& bridge = sim.emplaceModule<SumoBridge>(settings);
     SnapshotChecker checker(sim, bridge);
-    sim.subscribe(SumoBridge::departedSignal, checker);
-    sim.subscribe(SumoBridge::arrivedSignal, checker);
-    sim.subscribe(SumoBridge::stepSignal, checker);
     sim.run();
     EXPECT_EQ(checker.steps, 110);
     EXPECT_GE(checker.peak, 3u * 512u);
@@ -246,10 +245,8 @@ TEST(SnapshotCommanded, MatchesLibsumoWhileVehiclesAreCommanded) {
     auto& bridge = sim.emplaceModule<SumoBridge>(settings);
     SnapshotChecker checker(sim, bridge);
     Commander commander;
-    sim.subscribe(SumoBridge::departedSignal, checker);
-    sim.subscribe(SumoBridge::arrivedSignal, checker);
-    sim.subscribe(SumoBridge::stepSignal, checker);    // checks step k's snapshot...
-    sim.subscribe(SumoBridge::stepSignal, commander);  // ...then commands for step k+1
+    // The checker, subscribed first, checks step k's snapshot; then the commander commands for k+1.
+    sim.subscribe(SumoBridge::stepSignal, commander);
     sim.run();
     EXPECT_EQ(checker.steps, 600);
     EXPECT_GT(commander.commands, 1000);
