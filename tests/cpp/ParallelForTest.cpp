@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "kernel/ParallelFor.h"
@@ -62,15 +64,59 @@ TEST(ParallelFor, VisitsEveryIndexExactlyOnce) {
     }
 }
 
+/// The [begin, end) ranges a loop was cut into, in ascending order.
+std::vector<std::pair<std::size_t, std::size_t>> chunksOf(ParallelFor& pf, std::size_t n, std::size_t minChunk) {
+    std::mutex mutex;
+    std::vector<std::pair<std::size_t, std::size_t>> chunks;
+    pf.run(
+        n,
+        [&](std::size_t begin, std::size_t end) {
+            const std::lock_guard lock(mutex);
+            chunks.emplace_back(begin, end);
+        },
+        minChunk);
+    std::sort(chunks.begin(), chunks.end());
+    return chunks;
+}
+
 TEST(ParallelFor, SplitsOnlyLoopsLongEnough) {
     ParallelFor pf(4);
     const std::thread::id caller = std::this_thread::get_id();
     EXPECT_EQ(threadsUsed(pf, 1023, 512), std::set<std::thread::id>{caller});  // under 2 chunks: caller only
-    const auto two = threadsUsed(pf, 1024, 512);
-    EXPECT_EQ(two.size(), 2u);
-    EXPECT_TRUE(two.count(caller));
-    EXPECT_EQ(threadsUsed(pf, 100'000, 512).size(), 4u);  // never more than the pool
-    EXPECT_EQ(threadsUsed(pf, 8, 1).size(), 4u);
+    EXPECT_EQ(chunksOf(pf, 1023, 512), (std::vector<std::pair<std::size_t, std::size_t>>{{0, 1023}}));
+    for (const std::size_t n : {1024, 5000, 100'000}) {
+        const auto chunks = chunksOf(pf, n, 512);
+        EXPECT_GE(chunks.size(), 2u);
+        for (std::size_t k = 0; k < chunks.size(); ++k) {
+            EXPECT_EQ(chunks[k].first, k == 0 ? 0 : chunks[k - 1].second);  // contiguous, no overlap
+            if (k + 1 < chunks.size()) EXPECT_GE(chunks[k].second - chunks[k].first, 512u);
+        }
+        EXPECT_EQ(chunks.back().second, n);
+    }
+    EXPECT_LE(threadsUsed(pf, 100'000, 512).size(), 4u);  // never more than the pool
+}
+
+TEST(ParallelFor, WorkersTakeChunksWhileTheCallerIsBusy) {
+    // The caller's chunk waits until another thread has run a chunk: that only ends if the
+    // worker joins the round and takes chunks the caller has not reached.
+    ParallelFor pf(2);
+    const std::thread::id caller = std::this_thread::get_id();
+    std::atomic<bool> workerRan{false};
+    std::atomic<bool> callerWaited{false};
+    pf.run(
+        8,
+        [&](std::size_t, std::size_t) {
+            if (std::this_thread::get_id() != caller) {
+                workerRan = true;
+                return;
+            }
+            if (callerWaited.exchange(true)) return;
+            const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+            while (!workerRan && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
+        },
+        1);
+    EXPECT_TRUE(callerWaited);
+    EXPECT_TRUE(workerRan);
 }
 
 TEST(ParallelFor, ManyRoundsInARow) {
@@ -94,7 +140,7 @@ TEST(ParallelFor, ManyRoundsInARow) {
 TEST(ParallelFor, ExceptionsReachTheCaller) {
     ParallelFor pf(3);
     const std::size_t n = 3000;
-    // In a worker's chunk (the last), then in the caller's (the first).
+    // In the last chunk, then in the first (which the caller usually takes).
     EXPECT_THROW(pf.run(
                      n,
                      [&](std::size_t, std::size_t end) {
