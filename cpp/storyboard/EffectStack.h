@@ -35,6 +35,8 @@ public:
     }
 
     bool empty() const { return caps_.empty() && holds_.empty(); }
+    /// Whether a Stop or EmergencyStop is active (only then does settle() have work).
+    bool holding() const { return !holds_.empty(); }
     std::optional<double> effectiveCap() const;
     std::optional<Hold> effectiveHold() const;
 

@@ -96,6 +96,7 @@ void Storyboard::registerStory(StoryPtr story) {
     if (!story->explicitName_) story->name_ = "story" + std::to_string(stories_.size());
     collectConditions(story->condition());
     pure_.push_back(story->condition().pure());
+    if (pure_.back()) pureStories_.push_back(stories_.size());
     stories_.push_back(std::move(story));
     precomputed_.resize(stories_.size());
     for (auto& [id, state] : vehicles_) {
@@ -141,6 +142,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
                 if (it->second.active[s] && log_ != nullptr)
                     log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
             }
+            forgetState(id);
             vehicles_.erase(it);
         }
         for (Condition* c : conditions_) c->forget(id);
@@ -150,50 +152,105 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     const EvaluationContext ctx(snapshot, grid_);
     for (Condition* c : conditions_) c->prepare(ctx);
 
+    // All pure stories in one parallel loop: one hand-over to the workers per step, and each
+    // vehicle's data is read while still in cache.
     const auto n = static_cast<std::size_t>(snapshot.size());
-    for (std::size_t s = 0; s < stories_.size(); ++s) {
-        if (!pure_[s]) continue;
-        Condition& condition = stories_[s]->condition();
-        std::vector<ConditionResult>& results = precomputed_[s];
-        results.assign(n, ConditionResult(false));
+    for (const std::size_t s : pureStories_) precomputed_[s].assign(n, ConditionResult(false));
+    if (!pureStories_.empty()) {
         parallel_.run(
             n,
             [&](std::size_t begin, std::size_t end) {
-                for (std::size_t i = begin; i < end; ++i)
-                    results[i] = condition.test(ctx, static_cast<VehicleIndex>(i));
+                for (std::size_t i = begin; i < end; ++i) {
+                    for (const std::size_t s : pureStories_)
+                        precomputed_[s][i] = stories_[s]->condition().test(ctx, static_cast<VehicleIndex>(i));
+                }
             },
-            256);
+            128);
     }
 
     const auto& ids = snapshot.ids();
+    matchStates(ids);
+    const std::size_t stride = stories_.size();
     for (VehicleIndex i = 0; i < snapshot.size(); ++i) {
         const std::string& id = ids[i];
-        const auto found = vehicles_.find(id);
-        VehicleState* state = found == vehicles_.end() ? nullptr : &found->second;
-        for (std::size_t s = 0; s < stories_.size(); ++s) {
-            const ConditionResult result =
-                pure_[s] ? std::move(precomputed_[s][i]) : stories_[s]->condition().test(ctx, i);
-            const bool wasActive = state != nullptr && state->active[s];
-            if (!wasActive && result.isTrue()) {
-                if (state == nullptr) state = &stateFor(id);
-                activate(*state, s, id, result, snapshot);
-            } else if (wasActive && !result.isTrue()) {
-                deactivate(*state, s, id);
+        Row& row = rows_[static_cast<std::size_t>(i)];
+        std::uint8_t* const active = activeFlags_.data() + static_cast<std::size_t>(i) * stride;
+        bool changed = false;
+        for (std::size_t s = 0; s < stride; ++s) {
+            ConditionResult tested(false);
+            const ConditionResult& result =
+                pure_[s] ? precomputed_[s][i] : (tested = stories_[s]->condition().test(ctx, i));
+            if (!active[s] && result.isTrue()) {
+                if (row.state == nullptr) row.state = &stateFor(id);
+                activate(*row.state, s, id, result, snapshot);
+                active[s] = 1;
+                changed = true;
+            } else if (active[s] && !result.isTrue()) {
+                deactivate(*row.state, s, id);
+                active[s] = 0;
+                changed = true;
             }
         }
         // A vehicle's state is kept until it leaves, even while idle: stories that flip often
         // (a speed threshold) would otherwise rebuild it again and again.
-        if (state != nullptr) state->stack->settle(snapshot.speeds()[i]);
+        if (changed) row.holding = row.state->stack->holding();
+        if (row.holding) row.state->stack->settle(snapshot.speeds()[i]);
     }
+    stateIds_ = ids;
     if (log_ != nullptr) log_->flush();
     updateSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+void Storyboard::matchStates(const std::vector<std::string>& ids) {
+    // Both id lists ascend, so one merge pass carries each vehicle's row over from the last step:
+    // a string comparison per vehicle instead of a hash lookup, and the pass then reads dense
+    // per-index flags instead of chasing each vehicle's state.
+    const std::size_t stride = stories_.size();
+    const bool sameStride = stride == flagStride_;
+    rowScratch_.assign(ids.size(), Row{});
+    flagScratch_.assign(ids.size() * stride, 0);
+    std::size_t matched = 0;
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        while (j < stateIds_.size() && stateIds_[j] < ids[k]) ++j;
+        if (j == stateIds_.size() || rows_[j].state == nullptr || stateIds_[j] != ids[k]) continue;
+        rowScratch_[k] = rows_[j];
+        if (sameStride) {
+            std::copy_n(activeFlags_.begin() + static_cast<std::ptrdiff_t>(j * stride), stride,
+                        flagScratch_.begin() + static_cast<std::ptrdiff_t>(k * stride));
+        } else {
+            copyFlags(*rows_[j].state, flagScratch_.data() + k * stride);  // stories were added
+        }
+        ++matched;
+    }
+    std::swap(rows_, rowScratch_);
+    std::swap(activeFlags_, flagScratch_);
+    flagStride_ = stride;
+    if (matched == vehicles_.size()) return;
+    // Some vehicle with state was missing from a snapshot (only snapshots made by hand do that):
+    // look the unmatched ones up.
+    for (std::size_t k = 0; k < ids.size(); ++k) {
+        if (rows_[k].state != nullptr) continue;
+        if (const auto it = vehicles_.find(ids[k]); it != vehicles_.end()) {
+            rows_[k] = Row{&it->second, it->second.stack->holding()};
+            copyFlags(it->second, activeFlags_.data() + k * stride);
+        }
+    }
+}
+
+void Storyboard::copyFlags(const VehicleState& state, std::uint8_t* row) const {
+    for (std::size_t s = 0; s < stories_.size(); ++s) row[s] = state.active[s] ? 1 : 0;
+}
+
+void Storyboard::forgetState(const std::string& id) {
+    const auto it = std::lower_bound(stateIds_.begin(), stateIds_.end(), id);
+    if (it != stateIds_.end() && *it == id) rows_[static_cast<std::size_t>(it - stateIds_.begin())] = Row{};
 }
 
 void Storyboard::activate(VehicleState& state, std::size_t s, const std::string& id, const ConditionResult& result,
                           const traffic::VehicleSnapshot& snapshot) {
     Story& story = *stories_[s];
     state.active[s] = true;
-    ++state.activeCount;
     ++story.activations_;
     if (log_ != nullptr) log_->activate(now_, story.name(), id);
     Scope scope(*this, state, story, id, &result, &snapshot);
@@ -208,7 +265,6 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
 void Storyboard::deactivate(VehicleState& state, std::size_t s, const std::string& id) {
     Story& story = *stories_[s];
     state.active[s] = false;
-    --state.activeCount;
     if (log_ != nullptr) log_->deactivate(now_, story.name(), id, "condition");
     Scope scope(*this, state, story, id);
     auto& applied = state.applied[s];

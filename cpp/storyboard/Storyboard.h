@@ -69,7 +69,11 @@ private:
         std::unique_ptr<EffectStack> stack;
         std::vector<std::vector<AppliedEffect>> applied;  // per story; non-empty iff active
         std::vector<bool> active;                         // per story
-        std::size_t activeCount = 0;
+    };
+    /// A vehicle of the current pass, by snapshot index.
+    struct Row {
+        VehicleState* state = nullptr;  // none until a story first activates for it
+        bool holding = false;           // its stack holds its speed (settle() each step)
     };
     class Scope;
 
@@ -77,6 +81,9 @@ private:
     void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
 
     VehicleState& stateFor(const std::string& id);
+    void matchStates(const std::vector<std::string>& ids);
+    void forgetState(const std::string& id);
+    void copyFlags(const VehicleState& state, std::uint8_t* row) const;
     void activate(VehicleState& state, std::size_t story, const std::string& id, const ConditionResult& result,
                   const traffic::VehicleSnapshot& snapshot);
     void deactivate(VehicleState& state, std::size_t story, const std::string& id);
@@ -87,6 +94,7 @@ private:
     kernel::SimTime now_;
     std::vector<StoryPtr> stories_;
     std::vector<bool> pure_;                                 // per story: its whole tree is pure
+    std::vector<std::size_t> pureStories_;                   // indices of the pure stories
     std::vector<std::vector<ConditionResult>> precomputed_;  // per pure story, per vehicle of the step
     kernel::ParallelFor parallel_;
     std::vector<Condition*> conditions_;  // every distinct node of every tree, for prepare/forget
@@ -94,6 +102,13 @@ private:
     std::optional<double> neighbourRadius_;
     traffic::NeighbourGrid grid_;
     std::unordered_map<std::string, VehicleState> vehicles_;  // vehicles with state (node-stable)
+    // The last pass's vehicles by snapshot index (ids ascending), carried over by matchStates().
+    std::vector<std::string> stateIds_;
+    std::vector<Row> rows_;
+    std::vector<std::uint8_t> activeFlags_;  // rows_.size() × flagStride_: story active for the vehicle
+    std::size_t flagStride_ = 0;
+    std::vector<Row> rowScratch_;
+    std::vector<std::uint8_t> flagScratch_;
     std::map<unsigned, std::shared_ptr<RandomStream>> streams_;
     std::vector<std::string> leftSinceStep_;
     EffectStack::Token nextToken_ = 1;

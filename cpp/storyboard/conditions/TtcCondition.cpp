@@ -9,6 +9,7 @@
 namespace sbsim::storyboard {
 
 using geometry::Footprint;
+using geometry::MovingFootprint;
 
 TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(distance) {
     if (!(ttc_ > 0 && std::isfinite(ttc_))) {
@@ -19,58 +20,64 @@ TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(d
     }
 }
 
-void TtcCondition::prepare(const EvaluationContext& ctx) { computeFootprints(ctx.snapshot()); }
+void TtcCondition::prepare(const EvaluationContext& ctx) { computeMovers(ctx.snapshot()); }
 
-void TtcCondition::computeFootprints(const traffic::VehicleSnapshot& snapshot) {
+void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
     const VehicleIndex n = snapshot.size();
-    footprints_.clear();
-    footprints_.reserve(static_cast<std::size_t>(n));
+    movers_.clear();
+    movers_.reserve(static_cast<std::size_t>(n));
     for (VehicleIndex i = 0; i < n; ++i) {
-        footprints_.push_back(Footprint::fromSumo(snapshot.positions().col(i), snapshot.angles()[i],
-                                                  snapshot.lengths()[i], snapshot.widths()[i]));
+        movers_.emplace_back(Footprint::fromSumo(snapshot.positions().col(i), snapshot.angles()[i],
+                                                 snapshot.lengths()[i], snapshot.widths()[i]),
+                             snapshot.speeds()[i]);
     }
     stamp_ = SnapshotStamp::of(snapshot);
 }
 
 ConditionResult TtcCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
-    if (!(stamp_ == SnapshotStamp::of(snapshot))) computeFootprints(snapshot);
-    const Eigen::VectorXd& speeds = snapshot.speeds();
-    const Footprint& egoFootprint = footprints_[ego];
-    const double egoSpeed = speeds[ego];
+    if (!(stamp_ == SnapshotStamp::of(snapshot))) computeMovers(snapshot);
+    const MovingFootprint& egoMover = movers_[ego];
     std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
-        if (conflict(egoFootprint, egoSpeed, footprints_[o], speeds[o], ttc_)) others.push_back(o);
+        if (conflict(egoMover, movers_[o], ttc_)) others.push_back(o);
     });
     std::sort(others.begin(), others.end());
     return ConditionResult::ofOthers(std::move(others));
 }
 
 bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& b, double speedB, double ttc) {
-    if (std::isnan(speedA) || std::isnan(speedB)) return false;
-    double dt = std::numeric_limits<double>::infinity();
-    if (speedA != 0) dt = 2 * a.halfLength() / std::abs(speedA);
-    if (speedB != 0) dt = std::min(dt, 2 * b.halfLength() / std::abs(speedB));
+    return conflict(MovingFootprint(a, speedA), MovingFootprint(b, speedB), ttc);
+}
+
+bool TtcCondition::conflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
+    const Footprint& a = ma.footprint;
+    const Footprint& b = mb.footprint;
+    if (std::isnan(ma.speed) || std::isnan(mb.speed)) return false;
+    const double dt = std::min(ma.sampleStep, mb.sampleStep);
     if (!(dt > 0 && std::isfinite(dt)) || !(ttc > 0)) return false;  // both standing, or zero length
     const double lastStep = std::min(std::ceil(ttc / dt), 1e15);
+    const double horizon = lastStep * dt;
 
-    // Centre offset d(t) = d0 + w t. On each separating axis the projected gap is linear in t, so
-    // the rectangles can overlap only in the intersection of four time intervals. The intervals
-    // are widened by a margin far above rounding error; the samples in them are then tested
-    // exactly as the plain loop would, so the result is the same.
-    constexpr double kMargin = 1e-6;
+    // Centre offset d(t) = d0 + w t. Margins below are far above rounding error, so the cheap
+    // tests only ever drop pairs the exact sample tests would drop too.
     const Eigen::Vector2d d0 = b.centre() - a.centre();
-    const Eigen::Vector2d w = speedB * b.heading() - speedA * a.heading();
-    // Cheap first: circles around both rectangles that cannot meet within the horizon mean the
-    // rectangles cannot either (most neighbour pairs end here).
-    const double reachAll = std::hypot(a.halfLength(), a.halfWidth()) + std::hypot(b.halfLength(), b.halfWidth()) +
-                            Footprint::kTouchTolerance + kMargin + w.norm() * lastStep * dt;
-    if (d0.squaredNorm() > reachAll * reachAll) return false;
+    const Eigen::Vector2d w = mb.velocity - ma.velocity;
+    const double margin = 1e-6 + 1e-9 * (d0.lpNorm<Eigen::Infinity>() + w.lpNorm<Eigen::Infinity>() * horizon);
+    // Cheap first: if the circles around both footprints stay apart over the whole horizon, so do
+    // the footprints (most neighbour pairs end here: same direction, or moving apart).
+    const double ww = w.squaredNorm();
+    const double closestTime = ww > 0 ? std::clamp(-d0.dot(w) / ww, 0.0, horizon) : 0.0;
+    const double reachAll = ma.radius + mb.radius + Footprint::kTouchTolerance + margin;
+    if ((d0 + closestTime * w).squaredNorm() > reachAll * reachAll) return false;
+
+    // On each separating axis the projected gap is linear in t, so the rectangles can overlap
+    // only in the intersection of four time intervals; only samples in it are tested.
     double from = -std::numeric_limits<double>::infinity();
     double to = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector2d& axis : {a.heading(), a.right(), b.heading(), b.right()}) {
         const double reach = geometry::projectedHalfExtent(a, axis) + geometry::projectedHalfExtent(b, axis) +
-                             Footprint::kTouchTolerance + kMargin;
+                             Footprint::kTouchTolerance + margin;
         const double s0 = d0.dot(axis);
         const double ds = w.dot(axis);
         if (ds == 0) {
@@ -92,7 +99,7 @@ bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& 
     const auto last = static_cast<std::int64_t>(lastCandidate);
     for (std::int64_t i = first; i <= last; ++i) {
         const double t = static_cast<double>(i) * dt;
-        if (overlaps(a.movedFor(speedA, t), b.movedFor(speedB, t))) return true;
+        if (overlaps(a.movedFor(ma.speed, t), b.movedFor(mb.speed, t))) return true;
     }
     return false;
 }

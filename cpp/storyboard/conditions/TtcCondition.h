@@ -6,6 +6,7 @@
 #include "storyboard/Condition.h"
 #include "storyboard/conditions/SnapshotStamp.h"
 #include "storyboard/geometry/Footprint.h"
+#include "storyboard/geometry/MovingFootprint.h"
 
 namespace sbsim::storyboard {
 
@@ -31,16 +32,17 @@ public:
     /// interval where the moving rectangles can overlap (found per separating axis) are tested.
     static bool conflict(const geometry::Footprint& a, double speedA, const geometry::Footprint& b, double speedB,
                          double ttc);
+    static bool conflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b, double ttc);
 
     bool pure() const override { return true; }
 
 private:
-    void computeFootprints(const traffic::VehicleSnapshot& snapshot);
+    void computeMovers(const traffic::VehicleSnapshot& snapshot);
 
     double ttc_;
     double distance_;
     SnapshotStamp stamp_;
-    std::vector<geometry::Footprint> footprints_;  // per vehicle of the step
+    std::vector<geometry::MovingFootprint> movers_;  // per vehicle of the step
 };
 
 }  // namespace sbsim::storyboard

@@ -197,6 +197,41 @@ TEST_F(StoryboardTest, TwoStopStoriesHoldUntilTheLastEnds) {
     EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
 }
 
+TEST_F(StoryboardTest, AVehicleMissingFromOneSnapshotKeepsItsStories) {
+    // The board carries each vehicle's stories from one pass to the next by id; a vehicle absent
+    // from one snapshot (without leaving) must come back with its stories still active.
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0),
+                                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "fast"));
+    step(1, {car("a", 10), car("b", 10)});
+    step(2, {car("b", 10)});
+    step(3, {car("a", 10), car("b", 10)});
+    const auto events = lines();
+    EXPECT_EQ(events.size(), 2u) << "activated once each, never again";
+    EXPECT_TRUE(board.isActive("a", *board.stories()[0]));
+    EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0}));
+    step(4, {car("a", 1), car("b", 10)});
+    EXPECT_EQ(lines(),
+              (std::vector<std::string>{
+                  R"({"t": 4, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})"}));
+    EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
+}
+
+TEST_F(StoryboardTest, AStoryRegisteredBetweenPassesJoinsTheNextOne) {
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{}, "fast"));
+    step(1, {car("a", 10), car("b", 1)});
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<SpeedConditionLess>(5.0), std::vector<EffectPtr>{}, "slow"));
+    step(2, {car("a", 10), car("b", 1)});
+    step(3, {car("a", 1), car("b", 1)});
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t": 1, "type": "activate", "story": "fast", "vehicle": "a"})",
+                           R"({"t": 2, "type": "activate", "story": "slow", "vehicle": "b"})",
+                           R"({"t": 3, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})",
+                           R"({"t": 3, "type": "activate", "story": "slow", "vehicle": "a"})",
+                       }));
+}
+
 TEST(StoryboardPurity, TreesArePureOnlyWithoutStatefulNodes) {
     const auto time = std::make_shared<TimeCondition>(SimTime::fromSeconds(1), std::nullopt);
     const auto fast = std::make_shared<SpeedConditionGreater>(5.0);
