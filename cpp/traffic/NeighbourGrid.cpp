@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <bit>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace sbsim::traffic {
 
@@ -18,16 +20,43 @@ void NeighbourGrid::build(const VehicleSnapshot& snapshot, double cellSize) {
 
     const Index n = snapshot.size();
     const Eigen::Matrix2Xd& positions = snapshot.positions();
-    // At least twice as many buckets as vehicles keeps collisions rare.
-    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2, 2 * static_cast<std::size_t>(n)));
-    shift_ = 64 - static_cast<unsigned>(std::countr_zero(buckets));
+    const auto cellOf = [&](Index i) {
+        return std::pair{cellCoordinate(positions(0, i), inverseCellSize_),
+                         cellCoordinate(positions(1, i), inverseCellSize_)};
+    };
+
+    // Dense when the bounding box of the occupied cells has at most a few cells per vehicle.
+    std::int64_t minX = std::numeric_limits<std::int32_t>::max(), maxX = std::numeric_limits<std::int32_t>::min();
+    std::int64_t minY = minX, maxY = maxX;
+    for (Index i = 0; i < n; ++i) {
+        const auto [cx, cy] = cellOf(i);
+        minX = std::min<std::int64_t>(minX, cx);
+        maxX = std::max<std::int64_t>(maxX, cx);
+        minY = std::min<std::int64_t>(minY, cy);
+        maxY = std::max<std::int64_t>(maxY, cy);
+    }
+    const double boxCells = n == 0 ? 0.0 : static_cast<double>(maxX - minX + 1) * static_cast<double>(maxY - minY + 1);
+    dense_ = n > 0 && boxCells <= 4.0 * static_cast<double>(n) + 4096;
+    std::size_t buckets = 0;
+    if (dense_) {
+        minX_ = static_cast<std::int32_t>(minX);
+        maxX_ = static_cast<std::int32_t>(maxX);
+        minY_ = static_cast<std::int32_t>(minY);
+        maxY_ = static_cast<std::int32_t>(maxY);
+        columns_ = static_cast<std::size_t>(maxX - minX + 1);
+        buckets = static_cast<std::size_t>(boxCells);
+    } else {
+        // At least twice as many buckets as vehicles keeps collisions rare.
+        buckets = std::bit_ceil(std::max<std::size_t>(2, 2 * static_cast<std::size_t>(n)));
+        shift_ = 64 - static_cast<unsigned>(std::countr_zero(buckets));
+    }
 
     // Counting sort by bucket: count, prefix sum, place (stable, so a bucket is in index order).
     bucketStart_.assign(buckets + 1, 0);
     bucketScratch_.resize(static_cast<std::size_t>(n));
     for (Index i = 0; i < n; ++i) {
-        const std::size_t b = bucketOf(cellCoordinate(positions(0, i), inverseCellSize_),
-                                       cellCoordinate(positions(1, i), inverseCellSize_));
+        const auto [cx, cy] = cellOf(i);
+        const std::size_t b = bucketOf(cx, cy);
         bucketScratch_[i] = static_cast<std::uint32_t>(b);
         ++bucketStart_[b + 1];
     }
@@ -35,11 +64,8 @@ void NeighbourGrid::build(const VehicleSnapshot& snapshot, double cellSize) {
     items_.resize(static_cast<std::size_t>(n));
     // bucketStart_[b] serves as the insertion cursor of bucket b, then is restored by one shift.
     for (Index i = 0; i < n; ++i) {
-        const double x = positions(0, i);
-        const double y = positions(1, i);
-        const std::int32_t cx = cellCoordinate(x, inverseCellSize_);
-        const std::int32_t cy = cellCoordinate(y, inverseCellSize_);
-        items_[bucketStart_[bucketScratch_[i]]++] = Item{x, y, cellKey(cx, cy), i};
+        const auto [cx, cy] = cellOf(i);
+        items_[bucketStart_[bucketScratch_[i]]++] = Item{positions(0, i), positions(1, i), cellKey(cx, cy), i};
     }
     for (std::size_t b = buckets; b > 0; --b) bucketStart_[b] = bucketStart_[b - 1];
     bucketStart_[0] = 0;

@@ -33,10 +33,11 @@ public:
     std::vector<Index> within(Index i, double radius) const;
 
 private:
-    // Cells live in a hash table rather than a dense bounding-box array: a network may span tens of
-    // kilometres while vehicles occupy a small fraction of the cells, and the table stays O(n) in
-    // size whatever the spread. Vehicles are counting-sorted by bucket, so a bucket is one
-    // contiguous run of items_; a bucket may also hold other cells (collisions), hence Item::cell.
+    // Vehicles are counting-sorted by bucket, so a bucket is one contiguous run of items_. Where the
+    // vehicles' bounding box has few cells (O(n)), a bucket is one cell, numbered row by row, so the
+    // cells of a query row are one run as well ("dense"). Otherwise (a network spanning tens of
+    // kilometres, or a stray far-off position) cells are hashed into 2n buckets, which keeps memory
+    // O(n) whatever the spread; a bucket may then hold other cells too, hence Item::cell.
     struct Item {
         double x, y;
         std::uint64_t cell;
@@ -54,6 +55,10 @@ private:
         return (std::uint64_t{static_cast<std::uint32_t>(cx)} << 32) | static_cast<std::uint32_t>(cy);
     }
     std::size_t bucketOf(std::int32_t cx, std::int32_t cy) const {
+        if (dense_) {
+            return static_cast<std::size_t>(std::int64_t{cy} - minY_) * columns_ +
+                   static_cast<std::size_t>(std::int64_t{cx} - minX_);
+        }
         const std::uint64_t h = std::uint64_t{static_cast<std::uint32_t>(cx)} * 0x9E3779B97F4A7C15ULL ^
                                 std::uint64_t{static_cast<std::uint32_t>(cy)} * 0xC2B2AE3D27D4EB4FULL;
         return static_cast<std::size_t>(h >> shift_);
@@ -62,7 +67,11 @@ private:
     const VehicleSnapshot* snapshot_ = nullptr;
     double cellSize_ = 0;
     double inverseCellSize_ = 0;
-    unsigned shift_ = 63;                       // 64 - log2(bucket count)
+    unsigned shift_ = 63;                       // hashed: 64 - log2(bucket count)
+    bool dense_ = false;                        // one bucket per cell of the bounding box
+    std::int32_t minX_ = 0, minY_ = 0;          // dense: the box's first cell
+    std::int32_t maxX_ = 0, maxY_ = 0;          // dense: the box's last cell
+    std::size_t columns_ = 0;                   // dense: cells per row
     std::vector<std::int32_t> bucketStart_;     // bucket b is items_[bucketStart_[b], bucketStart_[b + 1])
     std::vector<Item> items_;                   // ascending vehicle index within a bucket
     std::vector<std::uint32_t> bucketScratch_;  // per vehicle, kept to avoid reallocating each step
@@ -95,6 +104,19 @@ void NeighbourGrid::forEachWithin(Index i, double radius, Visit&& visit) const {
         // A radius far beyond the cell size: visiting the cells would cost more than all vehicles.
         for (Index j = 0; j < static_cast<Index>(n); ++j) {
             if (j != i && near(positions(0, j), positions(1, j))) visit(j);
+        }
+        return;
+    }
+    if (dense_) {
+        // Each row of the query is one run of items, and every item in it is in range of the row.
+        const std::int32_t x0 = std::max(cx0, minX_);
+        const std::int32_t x1 = std::min(cx1, maxX_);
+        if (x0 > x1) return;
+        for (std::int32_t cy = std::max(cy0, minY_), last = std::min(cy1, maxY_); cy <= last; ++cy) {
+            const Item* const end = items_.data() + bucketStart_[bucketOf(x1, cy) + 1];
+            for (const Item* it = items_.data() + bucketStart_[bucketOf(x0, cy)]; it != end; ++it) {
+                if (it->index != i && near(it->x, it->y)) visit(it->index);
+            }
         }
         return;
     }

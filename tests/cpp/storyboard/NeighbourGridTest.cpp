@@ -95,6 +95,23 @@ TEST(NeighbourGrid, MatchesBruteForceWhenSpreadFarApartAndClustered) {
     for (const double radius : {5.0, 20.0, 60.0}) expectSameAsBruteForce(s, grid, radius);
 }
 
+TEST(NeighbourGrid, MatchesBruteForceWithOneStrayFarOffPosition) {
+    // A compact scene (one bucket per cell) turned sparse by one vehicle at SUMO's "invalid"
+    // position, as libsumo reports for a vehicle off the road: both layouts give the same answers.
+    std::mt19937_64 rng(5);
+    std::vector<Vehicle> vehicles = randomVehicles(rng, 400, 300, false);
+    VehicleSnapshot compact;
+    compact.assign(vehicles, kernel::SimTime::zero());
+    vehicles.push_back(car("stray", -1073741824.0, -1073741824.0));
+    VehicleSnapshot sparse;
+    sparse.assign(vehicles, kernel::SimTime::zero());
+    for (const VehicleSnapshot* s : {&compact, &sparse}) {
+        NeighbourGrid grid;
+        grid.build(*s, 25);
+        for (const double radius : {10.0, 25.0, 80.0}) expectSameAsBruteForce(*s, grid, radius);
+    }
+}
+
 TEST(NeighbourGrid, DistanceIsInclusiveAndExcludesTheVehicleItself) {
     VehicleSnapshot s;
     s.assign({car("a", 0, 0), car("b", 3, 4), car("c", 0, 0), car("d", -6, -8)}, kernel::SimTime::zero());
