@@ -9,6 +9,7 @@
 namespace sbsim::storyboard {
 
 using geometry::Footprint;
+using geometry::MovingCircle;
 using geometry::MovingFootprint;
 
 TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(distance) {
@@ -26,10 +27,13 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
     const VehicleIndex n = snapshot.size();
     movers_.clear();
     movers_.reserve(static_cast<std::size_t>(n));
+    circles_.clear();
+    circles_.reserve(static_cast<std::size_t>(n));
     for (VehicleIndex i = 0; i < n; ++i) {
         movers_.emplace_back(Footprint::fromSumo(snapshot.positions().col(i), snapshot.angles()[i],
                                                  snapshot.lengths()[i], snapshot.widths()[i]),
                              snapshot.speeds()[i]);
+        circles_.push_back(movers_.back().circle);
     }
     stamp_ = SnapshotStamp::of(snapshot);
 }
@@ -37,10 +41,11 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
 ConditionResult TtcCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
     if (!(stamp_ == SnapshotStamp::of(snapshot))) computeMovers(snapshot);
-    const MovingFootprint& egoMover = movers_[ego];
+    const MovingCircle& egoCircle = circles_[ego];
     std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
-        if (conflict(egoMover, movers_[o], ttc_)) others.push_back(o);
+        // The compact circles first: the full footprints are read for the few pairs that may meet.
+        if (mayConflict(egoCircle, circles_[o], ttc_) && conflict(movers_[ego], movers_[o], ttc_)) others.push_back(o);
     });
     std::sort(others.begin(), others.end());
     return ConditionResult::ofOthers(std::move(others));
@@ -50,26 +55,26 @@ bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& 
     return conflict(MovingFootprint(a, speedA), MovingFootprint(b, speedB), ttc);
 }
 
+bool TtcCondition::mayConflict(const MovingCircle& a, const MovingCircle& b, double ttc) {
+    // Beyond the last sample time, ceil(ttc/dt)·dt < ttc + dt: the circles must meet before that.
+    const double dt = std::min(a.sampleStep, b.sampleStep);
+    if (!(dt > 0 && std::isfinite(dt)) || !(ttc > 0)) return false;  // both standing, or zero length
+    return mayMeet(a, b, (ttc + dt) * (1 + 1e-12));
+}
+
 bool TtcCondition::conflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
+    if (std::isnan(ma.speed) || std::isnan(mb.speed)) return false;
+    // Cheap first: most neighbour pairs end here (same direction, moving apart, passing wide).
+    if (!mayConflict(ma.circle, mb.circle, ttc)) return false;
     const Footprint& a = ma.footprint;
     const Footprint& b = mb.footprint;
-    if (std::isnan(ma.speed) || std::isnan(mb.speed)) return false;
-    const double dt = std::min(ma.sampleStep, mb.sampleStep);
-    if (!(dt > 0 && std::isfinite(dt)) || !(ttc > 0)) return false;  // both standing, or zero length
+    const double dt = std::min(ma.circle.sampleStep, mb.circle.sampleStep);
+    // Centre offset d(t) = d0 + w t.
+    const Eigen::Vector2d d0 = b.centre() - a.centre();
+    const Eigen::Vector2d w = mb.circle.velocity - ma.circle.velocity;
     const double lastStep = std::min(std::ceil(ttc / dt), 1e15);
     const double horizon = lastStep * dt;
-
-    // Centre offset d(t) = d0 + w t. Margins below are far above rounding error, so the cheap
-    // tests only ever drop pairs the exact sample tests would drop too.
-    const Eigen::Vector2d d0 = b.centre() - a.centre();
-    const Eigen::Vector2d w = mb.velocity - ma.velocity;
     const double margin = 1e-6 + 1e-9 * (d0.lpNorm<Eigen::Infinity>() + w.lpNorm<Eigen::Infinity>() * horizon);
-    // Cheap first: if the circles around both footprints stay apart over the whole horizon, so do
-    // the footprints (most neighbour pairs end here: same direction, or moving apart).
-    const double ww = w.squaredNorm();
-    const double closestTime = ww > 0 ? std::clamp(-d0.dot(w) / ww, 0.0, horizon) : 0.0;
-    const double reachAll = ma.radius + mb.radius + Footprint::kTouchTolerance + margin;
-    if ((d0 + closestTime * w).squaredNorm() > reachAll * reachAll) return false;
 
     // On each separating axis the projected gap is linear in t, so the rectangles can overlap
     // only in the intersection of four time intervals; only samples in it are tested.

@@ -33,6 +33,9 @@ public:
     static bool conflict(const geometry::Footprint& a, double speedA, const geometry::Footprint& b, double speedB,
                          double ttc);
     static bool conflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b, double ttc);
+    /// False only for pairs whose bounding circles cannot meet before the last sample: then
+    /// conflict() is false as well.
+    static bool mayConflict(const geometry::MovingCircle& a, const geometry::MovingCircle& b, double ttc);
 
     bool pure() const override { return true; }
 
@@ -43,6 +46,7 @@ private:
     double distance_;
     SnapshotStamp stamp_;
     std::vector<geometry::MovingFootprint> movers_;  // per vehicle of the step
+    std::vector<geometry::MovingCircle> circles_;    // the same, compact
 };
 
 }  // namespace sbsim::storyboard
