@@ -45,7 +45,8 @@ ConditionResult TtcCondition::test(const EvaluationContext& ctx, VehicleIndex eg
     std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
         // The compact circles first: the full footprints are read for the few pairs that may meet.
-        if (mayConflict(egoCircle, circles_[o], ttc_) && conflict(movers_[ego], movers_[o], ttc_)) others.push_back(o);
+        if (mayConflict(egoCircle, circles_[o], ttc_) && sampledConflict(movers_[ego], movers_[o], ttc_))
+            others.push_back(o);
     });
     std::sort(others.begin(), others.end());
     return ConditionResult::ofOthers(std::move(others));
@@ -63,9 +64,12 @@ bool TtcCondition::mayConflict(const MovingCircle& a, const MovingCircle& b, dou
 }
 
 bool TtcCondition::conflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
-    if (std::isnan(ma.speed) || std::isnan(mb.speed)) return false;
     // Cheap first: most neighbour pairs end here (same direction, moving apart, passing wide).
-    if (!mayConflict(ma.circle, mb.circle, ttc)) return false;
+    return mayConflict(ma.circle, mb.circle, ttc) && sampledConflict(ma, mb, ttc);
+}
+
+bool TtcCondition::sampledConflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
+    if (std::isnan(ma.speed) || std::isnan(mb.speed)) return false;
     const Footprint& a = ma.footprint;
     const Footprint& b = mb.footprint;
     const double dt = std::min(ma.circle.sampleStep, mb.circle.sampleStep);

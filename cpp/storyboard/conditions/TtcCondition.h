@@ -40,6 +40,8 @@ public:
     bool pure() const override { return true; }
 
 private:
+    /// conflict() for a pair that passed mayConflict(): the samples near the possible overlap.
+    static bool sampledConflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b, double ttc);
     void computeMovers(const traffic::VehicleSnapshot& snapshot);
 
     double ttc_;
