@@ -742,9 +742,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.error("out_dir is required")
     cfg = PRESETS[args.preset] if args.preset else GridConfig()
     overrides = {
-        f.name: getattr(args, f.name)
-        for f in dataclasses.fields(GridConfig)
-        if getattr(args, f.name, None) is not None
+        f.name: getattr(args, f.name) for f in dataclasses.fields(GridConfig) if getattr(args, f.name, None) is not None
     }
     cfg = dataclasses.replace(cfg, **overrides)
     try:

@@ -6,7 +6,10 @@ set -euo pipefail
 
 SBSIM_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="$SBSIM_ROOT/.venv"
-DEBIAN_PACKAGES=(libeigen3-dev libgtest-dev cmake g++ python3-dev)
+# Build: compilers, Eigen, GoogleTest and the C++ libraries sbsim uses (XML, command line, JSON,
+# formatting, regular expressions, allocator); tests: clang-format and a virtual X server for sumo-gui.
+DEBIAN_PACKAGES=(cmake g++ python3-dev libeigen3-dev libgtest-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev
+  libfmt-dev libre2-dev libjemalloc-dev clang-format xvfb xauth)
 PYTHON_DEPENDENCIES=(pip "scikit-build-core>=0.10" "pybind11>=2.12" "numpy>=1.24" "eclipse-sumo==1.28.*")
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
 
@@ -18,7 +21,7 @@ ensure_debian_packages() {
   for p in "${DEBIAN_PACKAGES[@]}"; do
     # python3-dev is only needed when the interpreter has no headers of its own (pyenv builds do).
     if [ "$p" = python3-dev ] && python3 -c 'import sysconfig,os,sys; sys.exit(not os.path.exists(sysconfig.get_paths()["include"]+"/Python.h"))' 2>/dev/null; then continue; fi
-    if [ "$p" = cmake ] || [ "$p" = g++ ]; then command -v "$p" >/dev/null && continue; fi
+    if [ "$p" = cmake ] || [ "$p" = g++ ] || [ "$p" = clang-format ]; then command -v "$p" >/dev/null && continue; fi
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0
@@ -76,4 +79,16 @@ ensure_sbsim_installed() {
   fi
   rm -f "$SBSIM_ROOT"/build/.installed-tests-*
   touch "$stamp"
+}
+
+# The style checks the test command runs: clang-format over the C++ tree, ruff over the Python.
+# Prints what is off and returns non-zero when anything is.
+check_style() {
+  local status=0 cxx
+  cd "$SBSIM_ROOT"
+  mapfile -t cxx < <(find cpp tests/cpp examples -name '*.h' -o -name '*.cpp' | sort)
+  clang-format --dry-run -Werror "${cxx[@]}" || { say "C++ not formatted: run clang-format -i on the files above"; status=1; }
+  "$VENV/bin/ruff" check . || status=1
+  "$VENV/bin/ruff" format --check . || { say "Python not formatted: run .venv/bin/ruff format ."; status=1; }
+  return $status
 }

@@ -1,4 +1,4 @@
-#include "app/BundledScenario.h"
+#include "sbsim/app/BundledScenario.h"
 
 #include <stdexcept>
 #include <string>

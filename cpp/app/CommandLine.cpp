@@ -1,10 +1,10 @@
-#include "app/CommandLine.h"
+#include "sbsim/app/CommandLine.h"
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 
-#include "app/ShellWords.h"
+#include "sbsim/app/ShellWords.h"
 
 namespace sbsim::app {
 

@@ -1,8 +1,8 @@
-#include "app/Interruption.h"
+#include "sbsim/app/Interruption.h"
 
 #include <atomic>
 
-#include "kernel/Simulation.h"
+#include "sbsim/kernel/Simulation.h"
 
 namespace sbsim::app {
 

@@ -2,7 +2,7 @@
 
 #include <csignal>
 
-#include "kernel/Signal.h"
+#include "sbsim/kernel/Signal.h"
 
 namespace sbsim::kernel {
 class Simulation;

@@ -1,4 +1,4 @@
-#include "app/PluginLibrary.h"
+#include "sbsim/app/PluginLibrary.h"
 
 #include <dlfcn.h>
 

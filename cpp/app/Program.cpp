@@ -1,4 +1,4 @@
-#include "app/Program.h"
+#include "sbsim/app/Program.h"
 
 #include <libsumo/TraCIDefs.h>
 #include <unistd.h>
@@ -9,23 +9,23 @@
 #include <iostream>
 #include <memory>
 
-#include "app/BundledScenario.h"
-#include "app/CommandLine.h"
-#include "app/Interruption.h"
-#include "app/PluginLibrary.h"
-#include "app/ProgressDisplay.h"
-#include "kernel/Simulation.h"
-#include "services/Medium.h"
-#include "services/ServiceManager.h"
-#include "services/ServiceRegistry.h"
-#include "services/ServicesConfig.h"
-#include "storyboard/CanvasFrame.h"
-#include "storyboard/EventLog.h"
-#include "storyboard/StoryError.h"
-#include "storyboard/Storyboard.h"
-#include "storyboard/python/PythonRuntime.h"
-#include "storyboard/python/StoryScript.h"
-#include "traffic/SumoBridge.h"
+#include "sbsim/app/BundledScenario.h"
+#include "sbsim/app/CommandLine.h"
+#include "sbsim/app/Interruption.h"
+#include "sbsim/app/PluginLibrary.h"
+#include "sbsim/app/ProgressDisplay.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/services/Medium.h"
+#include "sbsim/services/ServiceManager.h"
+#include "sbsim/services/ServiceRegistry.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/CanvasFrame.h"
+#include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/StoryError.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/python/PythonRuntime.h"
+#include "sbsim/storyboard/python/StoryScript.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::app {
 
@@ -170,14 +170,13 @@ int run(const CommandLine& cl) {
     settings.seed = cl.seed;
     if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
     settings.quiet = cl.quiet;
-    settings.threads = cl.threads;
     settings.readVehicles = !cl.noSnapshot;
 
     // Declared before the simulation so it outlives the stories' Python objects.
     std::optional<storyboard::PythonRuntime> python;
     if (story) python.emplace();
 
-    kernel::Simulation sim;
+    kernel::Simulation sim(static_cast<std::uint64_t>(cl.seed.value_or(kDefaultSeed)), cl.threads);
     auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
     try {
         sumo.load();
@@ -190,8 +189,7 @@ int run(const CommandLine& cl) {
     storyboard::Storyboard* board = nullptr;
     std::unique_ptr<storyboard::StoryScript> script;
     if (story) {
-        board = &sim.emplaceModule<storyboard::Storyboard>(cl.seed.value_or(kDefaultSeed), log ? &*log : nullptr,
-                                                           cl.threads);
+        board = &sim.emplaceModule<storyboard::Storyboard>(log ? &*log : nullptr);
         board->attach(sumo);
         script = std::make_unique<storyboard::StoryScript>(*python, *story, *board,
                                                            storyboard::CanvasFrame(sumo.netBoundary()));
@@ -209,7 +207,6 @@ int run(const CommandLine& cl) {
         radio.range = cl.v2xRange;
         radio.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
         radio.fadeStart = cl.v2xFadeStart;
-        radio.seed = static_cast<std::uint64_t>(cl.seed.value_or(kDefaultSeed));
         medium = &sim.emplaceModule<services::Medium>(radio, sumo.snapshot(), [serviceManager](const std::string& id) {
             return serviceManager->middlewareOf(id);
         });

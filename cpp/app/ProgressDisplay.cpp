@@ -1,9 +1,9 @@
-#include "app/ProgressDisplay.h"
+#include "sbsim/app/ProgressDisplay.h"
 
 #include <cmath>
 #include <string>
 
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::app {
 

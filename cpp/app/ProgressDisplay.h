@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <optional>
 
-#include "kernel/Signal.h"
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/Signal.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::app {
 

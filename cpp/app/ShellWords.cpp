@@ -1,4 +1,4 @@
-#include "app/ShellWords.h"
+#include "sbsim/app/ShellWords.h"
 
 namespace sbsim::app {
 

@@ -1,4 +1,4 @@
-#include "kernel/FutureEventSet.h"
+#include "sbsim/kernel/FutureEventSet.h"
 
 #include <stdexcept>
 #include <utility>

@@ -4,7 +4,8 @@
 #include <memory>
 #include <vector>
 
-#include "kernel/Message.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Message.h"
 
 namespace sbsim::kernel {
 
@@ -12,7 +13,7 @@ namespace sbsim::kernel {
 /// times are broken deterministically. Each message knows its heap slot, which makes cancelling
 /// O(log n) without tombstones. Messages handed over with a unique_ptr are owned by the set until
 /// delivered; self-messages stay owned by their module.
-class FutureEventSet {
+class SBSIM_API FutureEventSet {
 public:
     FutureEventSet() = default;
     ~FutureEventSet();

@@ -5,8 +5,9 @@
 #include <limits>
 #include <string>
 
-#include "kernel/Object.h"
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Object.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::kernel {
 
@@ -16,7 +17,7 @@ class Module;
 /// An event: a message that arrives at a module at a simulation time. Self-messages (timers) are
 /// owned by the module that schedules them and are never copied; a message still scheduled when
 /// it is destroyed removes itself from the future-event set.
-class Message : public Object {
+class SBSIM_API Message : public Object {
 public:
     explicit Message(std::string name = {}, int kind = 0) : name_(std::move(name)), kind_(kind) {}
     ~Message() override;

@@ -1,4 +1,4 @@
-#include "kernel/Module.h"
+#include "sbsim/kernel/Module.h"
 
 #include <stdexcept>
 

@@ -3,9 +3,10 @@
 #include <memory>
 #include <string>
 
-#include "kernel/Message.h"
-#include "kernel/Signal.h"
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Message.h"
+#include "sbsim/kernel/Signal.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::kernel {
 
@@ -14,7 +15,7 @@ class Simulation;
 /// A simulation component with OMNeT++'s small lifecycle: initialize() once when the simulation
 /// starts (or when added to a running one), handleMessage() for each event addressed to it,
 /// finish() once at the end. Modules are owned by their Simulation.
-class Module {
+class SBSIM_API Module {
 public:
     explicit Module(std::string name) : name_(std::move(name)) {}
     virtual ~Module();
@@ -63,7 +64,7 @@ private:
 
 }  // namespace sbsim::kernel
 
-#include "kernel/Simulation.h"
+#include "sbsim/kernel/Simulation.h"
 
 namespace sbsim::kernel {
 

@@ -1,4 +1,4 @@
-#include "kernel/ParallelFor.h"
+#include "sbsim/kernel/ParallelFor.h"
 
 #include <algorithm>
 #include <chrono>

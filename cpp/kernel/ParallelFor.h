@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include "sbsim/kernel/Export.h"
+
 namespace sbsim::kernel {
 
 /// Splits a loop over [0, n) into contiguous chunks run on persistent worker threads plus the
@@ -18,7 +20,7 @@ namespace sbsim::kernel {
 /// absorb it while SUMO itself steps on one. Chunks are handed out one at a time, so a worker
 /// that wakes late takes fewer of them instead of holding up the caller; a worker that wakes after
 /// the caller has run out of chunks takes none. An exception in any chunk is rethrown in the caller.
-class ParallelFor {
+class SBSIM_API ParallelFor {
 public:
     using Body = std::function<void(std::size_t begin, std::size_t end)>;
 

@@ -1,4 +1,4 @@
-#include "kernel/Signal.h"
+#include "sbsim/kernel/Signal.h"
 
 #include <algorithm>
 #include <deque>

@@ -6,7 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/Object.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Object.h"
 
 namespace sbsim::kernel {
 
@@ -17,13 +18,13 @@ class SignalTable;
 using SignalId = int;
 
 /// Returns the id for `name`, registering it on first use; the same name always gives the same id.
-SignalId registerSignal(std::string_view name);
+SBSIM_API SignalId registerSignal(std::string_view name);
 /// The name a signal id was registered with.
-const std::string& signalName(SignalId id);
+SBSIM_API const std::string& signalName(SignalId id);
 
 /// Receives emitted signals. Override the overloads for the value types you listen to. A listener
 /// unsubscribes itself from everything when destroyed, so no table keeps a dangling pointer.
-class Listener {
+class SBSIM_API Listener {
 public:
     Listener() = default;
     virtual ~Listener();
@@ -42,7 +43,7 @@ private:
 
 /// Who listens to which signal: one table per module (local subscriptions) and one in the
 /// simulation (listeners to every module's emits, the role of OMNeT++'s system module).
-class SignalTable {
+class SBSIM_API SignalTable {
 public:
     SignalTable() = default;
     ~SignalTable();

@@ -1,4 +1,4 @@
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/SimTime.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -5,12 +5,14 @@
 #include <limits>
 #include <string>
 
+#include "sbsim/kernel/Export.h"
+
 namespace sbsim::kernel {
 
 /// Simulation time as an exact integer count of nanoseconds (like OMNeT++'s simtime_t with a fixed
 /// scale). SUMO works in milliseconds, so every SUMO step time is representable without drift,
 /// and radio latencies well below a millisecond still fit. Range: about ±292 years.
-class SimTime {
+class SBSIM_API SimTime {
 public:
     using rep = std::int64_t;
     static constexpr rep kPerSecond = 1'000'000'000;

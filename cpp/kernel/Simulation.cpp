@@ -1,11 +1,19 @@
-#include "kernel/Simulation.h"
+#include "sbsim/kernel/Simulation.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "kernel/Module.h"
+#include "sbsim/kernel/Module.h"
 
 namespace sbsim::kernel {
+
+Simulation::Simulation(std::uint64_t seed, unsigned threads) : seed_(seed), parallel_(threads) {}
+
+std::shared_ptr<RandomStream> Simulation::randomStream(unsigned index) {
+    std::shared_ptr<RandomStream>& stream = streams_[index];
+    if (!stream) stream = std::make_shared<RandomStream>(seed_, index);
+    return stream;
+}
 
 Simulation::~Simulation() {
     // Modules go first, newest first, while the event set and signal tables they refer to still exist.

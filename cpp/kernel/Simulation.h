@@ -1,13 +1,17 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <type_traits>
 #include <vector>
 
-#include "kernel/FutureEventSet.h"
-#include "kernel/Signal.h"
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/FutureEventSet.h"
+#include "sbsim/kernel/ParallelFor.h"
+#include "sbsim/kernel/RandomStream.h"
+#include "sbsim/kernel/Signal.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::kernel {
 
@@ -15,12 +19,15 @@ class Module;
 
 /// The event loop: owns the modules and the future-event set, advances time from event to event
 /// (never between them), and runs the lifecycle. Deterministic: the same inputs deliver the same
-/// events in the same order.
-class Simulation {
+/// events in the same order. It also owns what the whole process shares: one pool of worker
+/// threads for per-vehicle loops, and the seeded random streams.
+class SBSIM_API Simulation {
 public:
     enum class StopReason { NoMoreEvents, TimeLimit, Requested };
 
-    Simulation() = default;
+    /// `seed` seeds every random stream; `threads` is the pool's size, the caller included
+    /// (0 = all cores).
+    explicit Simulation(std::uint64_t seed = 0, unsigned threads = 1);
     ~Simulation();
     Simulation(const Simulation&) = delete;
     Simulation& operator=(const Simulation&) = delete;
@@ -43,6 +50,13 @@ public:
     SignalTable& signals() { return signals_; }
     void subscribe(SignalId id, Listener& listener) { signals_.subscribe(id, listener); }
 
+    /// The process's worker threads: modules run their per-vehicle loops here, one round at a time.
+    ParallelFor& parallel() { return parallel_; }
+    std::uint64_t seed() const { return seed_; }
+    /// Random stream `index`, seeded by seed(); the same index always gives the same stream, so a
+    /// module drawing from its own index never shifts another's draws.
+    std::shared_ptr<RandomStream> randomStream(unsigned index);
+
     /// initialize() on every module, in the order they were added.
     void initialize();
     /// Delivers events in order while their time is <= `limit`.
@@ -58,6 +72,9 @@ public:
     void schedule(std::unique_ptr<Message> msg, SimTime at, Module& target);
 
 private:
+    std::uint64_t seed_;
+    ParallelFor parallel_;
+    std::map<unsigned, std::shared_ptr<RandomStream>> streams_;
     std::vector<std::unique_ptr<Module>> modules_;
     FutureEventSet fes_;
     SignalTable signals_;

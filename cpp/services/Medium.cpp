@@ -1,10 +1,10 @@
-#include "services/Medium.h"
+#include "sbsim/services/Medium.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "services/Middleware.h"
-#include "services/V2xMessage.h"
+#include "sbsim/services/Middleware.h"
+#include "sbsim/services/V2xMessage.h"
 
 namespace sbsim::services {
 
@@ -14,11 +14,7 @@ constexpr unsigned kMediumStream = 0x7632'7800;
 }  // namespace
 
 Medium::Medium(MediumSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory)
-    : kernel::Module("medium"),
-      settings_(settings),
-      snapshot_(snapshot),
-      directory_(std::move(directory)),
-      random_(settings.seed, kMediumStream) {
+    : kernel::Module("medium"), settings_(settings), snapshot_(snapshot), directory_(std::move(directory)) {
     if (!(settings_.range > 0) || !std::isfinite(settings_.range))
         throw std::invalid_argument("V2X range must be > 0 m");
     if (settings_.latency < kernel::SimTime::zero()) throw std::invalid_argument("V2X latency must be >= 0 s");
@@ -26,6 +22,8 @@ Medium::Medium(MediumSettings settings, const traffic::VehicleSnapshot& snapshot
         throw std::invalid_argument("V2X fade start must be between 0 m and the range");
     }
 }
+
+void Medium::initialize() { random_ = simulation().randomStream(kMediumStream); }
 
 double Medium::receptionProbability(double distance) const {
     if (distance > settings_.range) return 0.0;
@@ -53,7 +51,7 @@ void Medium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage> me
         if (receiver == nullptr) continue;  // a vehicle without services
         const double p = receptionProbability((positions.col(other) - positions.col(*self)).norm());
         // Draw only where loss is possible, so a lossless medium consumes no random numbers.
-        if (p < 1.0 && !(random_.uniform01() < p)) continue;
+        if (p < 1.0 && !(random_->uniform01() < p)) continue;
         sendDirect(std::make_unique<Middleware::Delivery>(shared), settings_.latency, *receiver);
     }
 }

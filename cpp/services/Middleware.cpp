@@ -1,6 +1,6 @@
-#include "services/Middleware.h"
+#include "sbsim/services/Middleware.h"
 
-#include "services/ServiceManager.h"
+#include "sbsim/services/ServiceManager.h"
 
 namespace sbsim::services {
 

@@ -4,9 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "kernel/Module.h"
-#include "services/Service.h"
-#include "traffic/VehicleController.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/services/Service.h"
+#include "sbsim/traffic/VehicleController.h"
 
 namespace sbsim::services {
 
@@ -15,7 +16,7 @@ class ServiceManager;
 /// One vehicle's middleware: created when the vehicle departs, it hosts the vehicle's services
 /// (which the simulation owns, as modules) and hands them triggers, storyboard signals and incoming
 /// V2X messages. Removed, services first, when the vehicle arrives.
-class Middleware : public kernel::Module {
+class SBSIM_API Middleware : public kernel::Module {
 public:
     /// A V2X message on its way to this middleware.
     struct Delivery : kernel::Message {

@@ -1,10 +1,10 @@
-#include "services/Service.h"
+#include "sbsim/services/Service.h"
 
 #include <stdexcept>
 
-#include "services/Middleware.h"
-#include "services/ServiceManager.h"
-#include "services/ServicesConfig.h"
+#include "sbsim/services/Middleware.h"
+#include "sbsim/services/ServiceManager.h"
+#include "sbsim/services/ServicesConfig.h"
 
 namespace sbsim::services {
 

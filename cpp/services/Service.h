@@ -4,11 +4,12 @@
 #include <optional>
 #include <string>
 
-#include "kernel/Module.h"
-#include "services/V2xMessage.h"
-#include "storyboard/StoryboardSignal.h"
-#include "traffic/VehicleController.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/services/V2xMessage.h"
+#include "sbsim/storyboard/StoryboardSignal.h"
+#include "sbsim/traffic/VehicleController.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::services {
 
@@ -23,7 +24,7 @@ struct ServiceSpec;
 ///         void trigger() override { send(std::make_unique<BeaconMessage>()); }
 ///     };
 ///     SBSIM_REGISTER_SERVICE(Beacon);
-class Service : public kernel::Module {
+class SBSIM_API Service : public kernel::Module {
 public:
     Service() : kernel::Module("service") {}
 

@@ -1,12 +1,12 @@
-#include "services/ServiceManager.h"
+#include "sbsim/services/ServiceManager.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "kernel/Simulation.h"
-#include "services/ServiceRegistry.h"
-#include "storyboard/Storyboard.h"
-#include "traffic/SumoBridge.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/services/ServiceRegistry.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::services {
 

@@ -7,11 +7,12 @@
 #include <unordered_set>
 #include <vector>
 
-#include "kernel/Module.h"
-#include "services/Medium.h"
-#include "services/Middleware.h"
-#include "services/ServicesConfig.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/services/Medium.h"
+#include "sbsim/services/Middleware.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::services {
 
@@ -19,7 +20,7 @@ namespace sbsim::services {
 /// when it arrives, triggers all services every interval — on the interval's grid, vehicles in
 /// departure order, one kernel event for all — and routes storyboard signals to the ego vehicle's
 /// services (and to services listening to all). Attach it to the SUMO bridge.
-class ServiceManager : public kernel::Module, private kernel::Listener {
+class SBSIM_API ServiceManager : public kernel::Module, private kernel::Listener {
 public:
     /// Throws std::out_of_range if the configuration names a service type nobody registered.
     ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot);

@@ -1,9 +1,9 @@
-#include "services/ServiceRegistry.h"
+#include "sbsim/services/ServiceRegistry.h"
 
 #include <stdexcept>
 #include <utility>
 
-#include "services/Service.h"
+#include "sbsim/services/Service.h"
 
 namespace sbsim::services {
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "sbsim/kernel/Export.h"
+
 namespace sbsim::services {
 
 class Service;
@@ -14,7 +16,7 @@ class Service;
 /// Service types by name, like OMNeT++'s module registry: a services file names a type, the
 /// registry makes an instance. Types register themselves with SBSIM_REGISTER_SERVICE next to the
 /// class, in the program or in a plugin loaded with --plugin.
-class ServiceRegistry {
+class SBSIM_API ServiceRegistry {
 public:
     using Factory = std::function<std::unique_ptr<Service>()>;
 
@@ -37,7 +39,7 @@ private:
 };
 
 namespace detail {
-struct ServiceRegistration {
+struct SBSIM_API ServiceRegistration {
     ServiceRegistration(const std::string& name, ServiceRegistry::Factory factory) {
         ServiceRegistry::instance().add(name, std::move(factory));
     }

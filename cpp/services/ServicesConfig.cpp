@@ -1,10 +1,10 @@
-#include "services/ServicesConfig.h"
+#include "sbsim/services/ServicesConfig.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 
-#include "services/XmlDocument.h"
+#include "sbsim/services/XmlDocument.h"
 
 namespace sbsim::services {
 

@@ -10,17 +10,19 @@
 #include <string_view>
 #include <vector>
 
+#include "sbsim/kernel/Export.h"
+
 namespace sbsim::services {
 
 /// A services file that cannot be read, is not well-formed XML, or does not follow the format.
 /// what() is "<file>:<line>: <message>" ("<file>: cannot read" for an unreadable file).
-class ServicesConfigError : public std::runtime_error {
+class SBSIM_API ServicesConfigError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
 
 /// One <name> or <type> rule of a service's <filters>.
-struct ServiceFilter {
+struct SBSIM_API ServiceFilter {
     enum class Subject { VehicleId, VehicleType };
 
     Subject subject = Subject::VehicleId;
@@ -33,7 +35,7 @@ struct ServiceFilter {
 };
 
 /// One <service> of a services file: which module to run, its settings, and on which vehicles.
-struct ServiceSpec {
+struct SBSIM_API ServiceSpec {
     /// How the filters combine: any one passing is enough (the default, as in Artery), or all must
     /// pass (<filters operator="and">).
     enum class Combine { All, Any };
@@ -74,7 +76,7 @@ private:
 ///
 /// Anything else (an unknown element or filter attribute, a bad regex, Artery's random
 /// <penetration> filter) is an error, so that a typo cannot silently change which vehicles run what.
-class ServicesConfig {
+class SBSIM_API ServicesConfig {
 public:
     ServicesConfig() = default;
 

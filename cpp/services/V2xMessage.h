@@ -4,15 +4,16 @@
 #include <string>
 #include <string_view>
 
-#include "kernel/Object.h"
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Object.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::services {
 
 /// A message one vehicle's service broadcasts to the services of vehicles around it. Subclass it
 /// with the content of your application; give it a name (per-type counts in the summary) and a
 /// byte size (what it would occupy on the channel).
-class V2xMessage : public kernel::Object {
+class SBSIM_API V2xMessage : public kernel::Object {
 public:
     /// A short type name for statistics, e.g. "ClearLane".
     virtual std::string_view typeName() const = 0;

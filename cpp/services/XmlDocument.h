@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "sbsim/kernel/Export.h"
+
 namespace sbsim::services {
 
 /// parseXml rejects deeper documents: configuration files are shallow, and the element tree's
@@ -15,7 +17,7 @@ inline constexpr int kMaxXmlDepth = 256;
 
 /// A malformed or unreadable XML file. what() is "<source>:<line>: <message>" (or
 /// "<path>: cannot read" when the file cannot be opened), so it can be shown to the user as is.
-class XmlError : public std::runtime_error {
+class SBSIM_API XmlError : public std::runtime_error {
 public:
     XmlError(const std::string& source, int line, const std::string& message)
         : std::runtime_error(source + ":" + std::to_string(line) + ": " + message), line_(line) {}
@@ -29,7 +31,7 @@ private:
 
 /// One element of a parsed document. Attributes keep their document order; `text` is the
 /// element's own character data (CDATA included, children's excluded), entity-decoded and trimmed.
-struct XmlElement {
+struct SBSIM_API XmlElement {
     std::string name;
     std::vector<std::pair<std::string, std::string>> attributes;
     std::vector<XmlElement> children;

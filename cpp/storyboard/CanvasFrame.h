@@ -2,12 +2,14 @@
 
 #include <Eigen/Core>
 
+#include "sbsim/kernel/Export.h"
+
 namespace sbsim::storyboard {
 
 /// Artery's canvas frame: origin at the network's top-left corner, y pointing down
 /// (x_canvas = x_sumo − xmin, y_canvas = ymax − y_sumo), so Artery scripts' Coord values keep
 /// their meaning. Built from SUMO's network boundary.
-class CanvasFrame {
+class SBSIM_API CanvasFrame {
 public:
     CanvasFrame() = default;
     /// `boundary`: columns (xmin, ymin) and (xmax, ymax), as SumoBridge::netBoundary().

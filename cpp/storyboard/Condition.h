@@ -5,15 +5,16 @@
 #include <optional>
 #include <string_view>
 
-#include "storyboard/ConditionResult.h"
-#include "storyboard/EvaluationContext.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/storyboard/ConditionResult.h"
+#include "sbsim/storyboard/EvaluationContext.h"
 
 namespace sbsim::storyboard {
 
 /// A node of a story's condition tree. A condition object may be shared by several stories (and
 /// several places of one tree); it then shares its state, as in Artery. Per-vehicle state is keyed
 /// by vehicle id and dropped by forget() when the vehicle leaves.
-class Condition {
+class SBSIM_API Condition {
 public:
     virtual ~Condition() = default;
 

@@ -2,7 +2,8 @@
 
 #include <vector>
 
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::storyboard {
 
@@ -11,7 +12,7 @@ using VehicleIndex = traffic::VehicleSnapshot::Index;
 /// What a condition says about one vehicle: plain true/false, or the set of *other* vehicles that
 /// make it true (true iff non-empty). Sets hold snapshot indices in ascending order, which is also
 /// ascending id order, so results are reproducible and set algebra is a linear merge.
-class ConditionResult {
+class SBSIM_API ConditionResult {
 public:
     ConditionResult(bool value) : value_(value) {}  // NOLINT: implicit, like Artery's variant
     static ConditionResult ofOthers(std::vector<VehicleIndex> sortedOthers);

@@ -4,16 +4,17 @@
 #include <string>
 #include <vector>
 
-#include "storyboard/ConditionResult.h"
-#include "storyboard/EffectStack.h"
-#include "traffic/VehicleController.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/storyboard/ConditionResult.h"
+#include "sbsim/storyboard/EffectStack.h"
+#include "sbsim/traffic/VehicleController.h"
 
 namespace sbsim::storyboard {
 
 class Story;
 
 /// What an effect may act on when its story activates or deactivates for one vehicle.
-class EffectScope {
+class SBSIM_API EffectScope {
 public:
     virtual ~EffectScope() = default;
     virtual const Story& story() const = 0;
@@ -32,7 +33,7 @@ public:
 /// An effect of a story (Artery's EffectFactory role): apply() when the story activates for a
 /// vehicle, remove() when it deactivates because its condition turned false. When a vehicle
 /// leaves the simulation nothing is called: there is nothing left to command.
-class Effect {
+class SBSIM_API Effect {
 public:
     virtual ~Effect() = default;
     virtual void apply(EffectScope& scope) = 0;

@@ -1,4 +1,4 @@
-#include "storyboard/EffectStack.h"
+#include "sbsim/storyboard/EffectStack.h"
 
 #include <algorithm>
 

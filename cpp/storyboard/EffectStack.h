@@ -5,7 +5,8 @@
 #include <utility>
 #include <vector>
 
-#include "traffic/VehicleController.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/traffic/VehicleController.h"
 
 namespace sbsim::storyboard {
 
@@ -17,7 +18,7 @@ namespace sbsim::storyboard {
 /// - speed hold: the most recently activated Stop or EmergencyStop rules; the speed mode is
 ///   recorded for an EmergencyStop and restored when handing over to Stop or releasing.
 /// A command goes to SUMO only when a domain's effective value changes.
-class EffectStack {
+class SBSIM_API EffectStack {
 public:
     using Token = std::uint64_t;  ///< identifies one effect activation
     enum class Hold { Stop, EmergencyStop };

@@ -1,15 +1,16 @@
 #pragma once
 
-#include "kernel/SimTime.h"
-#include "traffic/NeighbourGrid.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::storyboard {
 
 /// What conditions may read during one evaluation pass (one SUMO step): the step's snapshot, the
 /// time, and a spatial index over the snapshot built once for the step. Conditions never call
 /// libsumo per vehicle.
-class EvaluationContext {
+class SBSIM_API EvaluationContext {
 public:
     EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid& neighbours)
         : snapshot_(snapshot), neighbours_(neighbours) {}

@@ -1,4 +1,4 @@
-#include "storyboard/EventLog.h"
+#include "sbsim/storyboard/EventLog.h"
 
 #include <cstdio>
 

@@ -5,14 +5,15 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::storyboard {
 
 /// Writes storyboard events as JSON Lines (one object per line, flushed at each step's end), e.g.
 /// {"t": 12.3, "type": "activate", "story": "rain", "vehicle": "flow0.1"}. Times are rounded to
 /// 1 ms. pandas.read_json(path, lines=True) reads the file.
-class EventLog {
+class SBSIM_API EventLog {
 public:
     explicit EventLog(std::ostream& out) : out_(out) {}
 

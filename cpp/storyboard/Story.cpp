@@ -1,4 +1,4 @@
-#include "storyboard/Story.h"
+#include "sbsim/storyboard/Story.h"
 
 #include <stdexcept>
 

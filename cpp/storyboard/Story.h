@@ -5,13 +5,14 @@
 #include <string>
 #include <vector>
 
-#include "storyboard/Condition.h"
-#include "storyboard/Effect.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/Effect.h"
 
 namespace sbsim::storyboard {
 
 /// A condition tree and the effects applied to each vehicle while the tree holds for it.
-class Story {
+class SBSIM_API Story {
 public:
     /// Throws std::invalid_argument for a null condition or effect.
     Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name = std::nullopt);

@@ -1,11 +1,11 @@
-#include "storyboard/Storyboard.h"
+#include "sbsim/storyboard/Storyboard.h"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
-#include "storyboard/StoryboardSignal.h"
-#include "traffic/SumoBridge.h"
+#include "sbsim/storyboard/StoryboardSignal.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::storyboard {
 
@@ -59,11 +59,9 @@ private:
     EffectStack::Token token_ = 0;
 };
 
-Storyboard::Storyboard(std::uint64_t seed, EventLog* log, unsigned threads)
+Storyboard::Storyboard(EventLog* log)
     : kernel::Module("storyboard"),
-      seed_(seed),
       log_(log),
-      parallel_(threads),
       makeController_([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); }) {}
 
 Storyboard::~Storyboard() = default;
@@ -103,12 +101,6 @@ void Storyboard::registerStory(StoryPtr story) {
         state.applied.resize(stories_.size());
         state.active.resize(stories_.size());
     }
-}
-
-std::shared_ptr<RandomStream> Storyboard::randomStream(unsigned k) {
-    auto& stream = streams_[k];
-    if (!stream) stream = std::make_shared<RandomStream>(seed_, k);
-    return stream;
 }
 
 bool Storyboard::isActive(const std::string& vehicle, const Story& story) const {
@@ -157,7 +149,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     const auto n = static_cast<std::size_t>(snapshot.size());
     for (const std::size_t s : pureStories_) precomputed_[s].assign(n, ConditionResult(false));
     if (!pureStories_.empty()) {
-        parallel_.run(
+        simulation().parallel().run(
             n,
             [&](std::size_t begin, std::size_t end) {
                 for (std::size_t i = begin; i < end; ++i) {

@@ -10,15 +10,15 @@
 #include <unordered_set>
 #include <vector>
 
-#include "kernel/Module.h"
-#include "kernel/ParallelFor.h"
-#include "storyboard/EffectStack.h"
-#include "storyboard/EventLog.h"
-#include "storyboard/RandomStream.h"
-#include "storyboard/Story.h"
-#include "traffic/NeighbourGrid.h"
-#include "traffic/VehicleController.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/RandomStream.h"
+#include "sbsim/storyboard/EffectStack.h"
+#include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/Story.h"
+#include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/VehicleController.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::storyboard {
 
@@ -30,16 +30,16 @@ namespace sbsim::storyboard {
 /// its state dropped, without commands to SUMO. Stories whose conditions are all pure (no state,
 /// no side effects) are evaluated for every vehicle up front, in parallel; that changes nothing
 /// but the time, since only the ordered pass acts on the results.
-class Storyboard : public kernel::Module, private kernel::Listener {
+class SBSIM_API Storyboard : public kernel::Module, private kernel::Listener {
 public:
     /// Payload: StoryboardSignal. Emitted by SignalEffect on activation.
     static const kernel::SignalId signalEmitted;
 
     using ControllerFactory = std::function<std::unique_ptr<traffic::VehicleController>(const std::string& id)>;
 
-    /// `seed` seeds the random streams; `log` (optional) receives the event lines; `threads`
-    /// evaluate pure stories (0 = all cores).
-    explicit Storyboard(std::uint64_t seed, EventLog* log = nullptr, unsigned threads = 0);
+    /// `log` (optional) receives the event lines. Random streams and the threads evaluating pure
+    /// stories are the simulation's.
+    explicit Storyboard(EventLog* log = nullptr);
     ~Storyboard() override;
 
     /// Listen to `sumo`'s arrivals and steps (a SumoBridge); without this call, drive update() by hand.
@@ -49,8 +49,8 @@ public:
 
     void registerStory(StoryPtr story);
     const std::vector<StoryPtr>& stories() const { return stories_; }
-    /// Random stream k (Artery scripts pass the generator index); the same k gives the same stream.
-    std::shared_ptr<RandomStream> randomStream(unsigned k);
+    /// Random stream k of the simulation (Artery scripts pass the generator index).
+    std::shared_ptr<kernel::RandomStream> randomStream(unsigned k) { return simulation().randomStream(k); }
 
     /// One evaluation pass: first the vehicles in `left` (any order), then every vehicle of `snapshot`.
     void update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left);
@@ -89,15 +89,13 @@ private:
     void deactivate(VehicleState& state, std::size_t story, const std::string& id);
     void collectConditions(Condition& root);
 
-    std::uint64_t seed_;
     EventLog* log_;
     kernel::SimTime now_;
     std::vector<StoryPtr> stories_;
     std::vector<bool> pure_;                                 // per story: its whole tree is pure
     std::vector<std::size_t> pureStories_;                   // indices of the pure stories
     std::vector<std::vector<ConditionResult>> precomputed_;  // per pure story, per vehicle of the step
-    kernel::ParallelFor parallel_;
-    std::vector<Condition*> conditions_;  // every distinct node of every tree, for prepare/forget
+    std::vector<Condition*> conditions_;                     // every distinct node of every tree, for prepare/forget
     std::unordered_set<Condition*> knownConditions_;
     std::optional<double> neighbourRadius_;
     traffic::NeighbourGrid grid_;
@@ -109,7 +107,6 @@ private:
     std::size_t flagStride_ = 0;
     std::vector<Row> rowScratch_;
     std::vector<std::uint8_t> flagScratch_;
-    std::map<unsigned, std::shared_ptr<RandomStream>> streams_;
     std::vector<std::string> leftSinceStep_;
     EffectStack::Token nextToken_ = 1;
     ControllerFactory makeController_;

@@ -3,13 +3,14 @@
 #include <string>
 #include <vector>
 
-#include "kernel/Object.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Object.h"
 
 namespace sbsim::storyboard {
 
 /// Emitted by a SignalEffect once, when its story activates for a vehicle: delivered to the ego
 /// vehicle's services (and to anyone subscribed to Storyboard::signalEmitted).
-struct StoryboardSignal : kernel::Object {
+struct SBSIM_API StoryboardSignal : kernel::Object {
     std::string cause;
     std::string story;
     std::string ego;

@@ -1,4 +1,4 @@
-#include "traffic/NeighbourGrid.h"
+#include "sbsim/traffic/NeighbourGrid.h"
 
 #include <algorithm>
 #include <bit>

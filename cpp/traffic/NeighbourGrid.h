@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
 

@@ -1,4 +1,4 @@
-#include "traffic/SnapshotBuilder.h"
+#include "sbsim/traffic/SnapshotBuilder.h"
 
 #include <libsumo/Lane.h>
 #include <libsumo/Vehicle.h>
@@ -74,7 +74,7 @@ void SnapshotBuilder::resize(VehicleSnapshot& out, std::size_t n) const {
     out.type_.resize(n);
 }
 
-void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
+void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::ParallelFor& parallel) {
     if (orderStale_) {
         order_.clear();
         order_.reserve(running_.size());
@@ -94,7 +94,7 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time) {
     }
 
     // Independent per vehicle: each index is written by exactly one thread.
-    parallel_.run(order_.size(), [&](std::size_t begin, std::size_t end) {
+    parallel.run(order_.size(), [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const std::string& id = *order_[k].first;
             Record& r = *order_[k].second;

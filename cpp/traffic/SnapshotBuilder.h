@@ -6,8 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "kernel/ParallelFor.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/ParallelFor.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
 
@@ -24,15 +24,12 @@ namespace sbsim::traffic {
 /// only when it changes.
 class SnapshotBuilder {
 public:
-    /// `threads`: total threads for reading (0 = all cores).
-    explicit SnapshotBuilder(unsigned threads = 0) : parallel_(threads) {}
-
     /// Vehicles that entered the network; reads their constant values.
     void addVehicles(const std::vector<std::string>& ids);
     /// Vehicles that left the network.
     void removeVehicles(const std::vector<std::string>& ids);
-    /// Reads every running vehicle's per-step values into `out`.
-    void fill(VehicleSnapshot& out, kernel::SimTime time);
+    /// Reads every running vehicle's per-step values into `out`, the reads spread over `parallel`.
+    void fill(VehicleSnapshot& out, kernel::SimTime time, kernel::ParallelFor& parallel);
     void setStepLength(double seconds) { stepSeconds_ = seconds; }
 
     std::size_t running() const { return running_.size(); }
@@ -57,7 +54,6 @@ private:
     std::int32_t roadOfLane(std::int32_t lane);
     void resize(VehicleSnapshot& out, std::size_t n) const;
 
-    kernel::ParallelFor parallel_;
     double stepSeconds_ = 1;
     std::map<std::string, Record> running_;                      // ascending byte order
     std::vector<std::pair<const std::string*, Record*>> order_;  // running_ as an indexable list

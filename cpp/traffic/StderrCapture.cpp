@@ -1,4 +1,4 @@
-#include "traffic/StderrCapture.h"
+#include "sbsim/traffic/StderrCapture.h"
 
 #include <unistd.h>
 

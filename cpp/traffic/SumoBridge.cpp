@@ -1,4 +1,4 @@
-#include "traffic/SumoBridge.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 #include <libsumo/Simulation.h>
 #include <libsumo/Vehicle.h>
@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "kernel/OneLine.h"
-#include "traffic/StderrCapture.h"
+#include "sbsim/kernel/OneLine.h"
+#include "sbsim/traffic/StderrCapture.h"
 
 namespace sbsim::traffic {
 
@@ -45,8 +45,7 @@ const kernel::SignalId SumoBridge::departedSignal = kernel::registerSignal("vehi
 const kernel::SignalId SumoBridge::arrivedSignal = kernel::registerSignal("vehicleArrived");
 const kernel::SignalId SumoBridge::stepSignal = kernel::registerSignal("sumoStep");
 
-SumoBridge::SumoBridge(SumoSettings settings)
-    : kernel::Module("sumo"), settings_(std::move(settings)), builder_(settings_.threads) {
+SumoBridge::SumoBridge(SumoSettings settings) : kernel::Module("sumo"), settings_(std::move(settings)) {
     stepMessage_.setPriority(kStepPriority);
     endMessage_.setPriority(std::numeric_limits<int>::max());
 }
@@ -98,7 +97,7 @@ void SumoBridge::initialize() {
     builder_.addVehicles(present);
     vehiclesSeen_ += present.size();
     peakRunning_ = builder_.running();
-    builder_.fill(snapshot_, begin_);
+    builder_.fill(snapshot_, begin_, simulation().parallel());
     announce(present, departedSignal);
     scheduleNextStep();
 }
@@ -136,7 +135,7 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     builder_.removeVehicles(arrived);
     vehiclesSeen_ += departed.size();
     peakRunning_ = std::max(peakRunning_, builder_.running());
-    if (settings_.readVehicles) builder_.fill(snapshot_, simTime());
+    if (settings_.readVehicles) builder_.fill(snapshot_, simTime(), simulation().parallel());
     sumoSeconds_ += std::chrono::duration<double>(stepped - started).count();
     snapshotSeconds_ += std::chrono::duration<double>(Clock::now() - stepped).count();
 

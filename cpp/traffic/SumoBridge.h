@@ -7,27 +7,27 @@
 #include <string>
 #include <vector>
 
-#include "kernel/Module.h"
-#include "traffic/SnapshotBuilder.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/traffic/SnapshotBuilder.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
 
 /// What to load into SUMO and how long to run it.
-struct SumoSettings {
+struct SBSIM_API SumoSettings {
     std::filesystem::path sumocfg;
     std::vector<std::string> extraOptions;  ///< passed to SUMO as they are, after sbsim's own
     std::optional<std::int64_t> seed;       ///< SUMO's --seed
     std::optional<kernel::SimTime> end;     ///< default: the configuration's end, else until no vehicle is left
     bool quiet = false;                     ///< also silences SUMO's warnings
-    unsigned threads = 0;                   ///< threads reading the snapshot; 0 = all cores
     /// False: step SUMO without reading vehicle states (the snapshot keeps only ids) — a
     /// baseline that shows libsumo's own cost against the sumo binary.
     bool readVehicles = true;
 };
 
 /// Raised when SUMO refuses the configuration; carries SUMO's own message.
-class SumoLoadError : public std::runtime_error {
+class SBSIM_API SumoLoadError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
@@ -39,7 +39,7 @@ public:
 /// the end time, or when SUMO expects no more vehicles, once every other event due at that time has
 /// been delivered. SUMO is closed by the destructor, whatever happened (not in finish(): other
 /// modules' finish() may still ask SUMO about their vehicles).
-class SumoBridge : public kernel::Module {
+class SBSIM_API SumoBridge : public kernel::Module {
 public:
     static const kernel::SignalId departedSignal;
     static const kernel::SignalId arrivedSignal;

@@ -1,6 +1,6 @@
-#include "traffic/VehicleController.h"
+#include "sbsim/traffic/VehicleController.h"
 
-#include "traffic/SnapshotBuilder.h"
+#include "sbsim/traffic/SnapshotBuilder.h"
 
 #include <libsumo/Vehicle.h>
 

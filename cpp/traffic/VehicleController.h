@@ -2,13 +2,15 @@
 
 #include <string>
 
+#include "sbsim/kernel/Export.h"
+
 namespace sbsim::traffic {
 
 /// Commands and live queries for one vehicle, forwarded to libsumo::Vehicle. Effects and services
 /// act on vehicles only through this class, so every SUMO command has one place to look — and the
 /// per-step snapshot learns of max-speed changes here (change it through this class, not libsumo).
 /// The methods are virtual so unit tests can stand a model vehicle in for SUMO's.
-class VehicleController {
+class SBSIM_API VehicleController {
 public:
     explicit VehicleController(std::string id) : id_(std::move(id)) {}
     virtual ~VehicleController() = default;

@@ -1,4 +1,4 @@
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 #include <algorithm>
 #include <stdexcept>

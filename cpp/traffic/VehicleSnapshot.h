@@ -7,8 +7,9 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/Object.h"
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Object.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::traffic {
 
@@ -16,7 +17,7 @@ namespace sbsim::traffic {
 /// of every array belongs to vehicle ids()[i], and ids are in ascending byte order, so iteration is
 /// deterministic. Conditions and services read this instead of calling libsumo per vehicle.
 /// Strings that repeat across vehicles (road, lane, type) are stored once and indexed.
-class VehicleSnapshot : public kernel::Object {
+class SBSIM_API VehicleSnapshot : public kernel::Object {
 public:
     using Index = std::int32_t;
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "services/V2xMessage.h"
+#include "sbsim/services/V2xMessage.h"
 
 namespace sbsim::services {
 

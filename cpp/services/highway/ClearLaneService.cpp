@@ -1,7 +1,7 @@
-#include "services/highway/ClearLaneService.h"
+#include "sbsim/services/highway/ClearLaneService.h"
 
-#include "services/ServiceRegistry.h"
-#include "services/highway/ClearLaneMessage.h"
+#include "sbsim/services/ServiceRegistry.h"
+#include "sbsim/services/highway/ClearLaneMessage.h"
 
 namespace sbsim::services {
 

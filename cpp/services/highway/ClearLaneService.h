@@ -1,6 +1,6 @@
 #pragma once
 
-#include "services/Service.h"
+#include "sbsim/services/Service.h"
 
 namespace sbsim::services {
 

@@ -1,7 +1,7 @@
-#include "services/highway/PoliceService.h"
+#include "sbsim/services/highway/PoliceService.h"
 
-#include "services/ServiceRegistry.h"
-#include "services/highway/ClearLaneMessage.h"
+#include "sbsim/services/ServiceRegistry.h"
+#include "sbsim/services/highway/ClearLaneMessage.h"
 
 namespace sbsim::services {
 

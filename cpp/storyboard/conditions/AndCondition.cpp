@@ -1,4 +1,4 @@
-#include "storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
 
 #include <stdexcept>
 

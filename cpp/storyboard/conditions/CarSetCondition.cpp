@@ -1,4 +1,4 @@
-#include "storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
 
 namespace sbsim::storyboard {
 

@@ -3,8 +3,8 @@
 #include <set>
 #include <string>
 
-#include "storyboard/Condition.h"
-#include "storyboard/conditions/VehicleIdMap.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/conditions/VehicleIdMap.h"
 
 namespace sbsim::storyboard {
 

@@ -1,11 +1,12 @@
-#include "storyboard/conditions/DeferringCondition.h"
+#include "sbsim/storyboard/conditions/DeferringCondition.h"
 
 #include <cmath>
 #include <stdexcept>
 
 namespace sbsim::storyboard {
 
-DeferringCondition::DeferringCondition(std::shared_ptr<RandomStream> rng, kernel::SimTime min, kernel::SimTime max)
+DeferringCondition::DeferringCondition(std::shared_ptr<kernel::RandomStream> rng, kernel::SimTime min,
+                                       kernel::SimTime max)
     : rng_(std::move(rng)), min_(min), max_(max) {
     if (!rng_) throw std::invalid_argument("DeferringCondition: random stream is null");
     if (min_ < kernel::SimTime::zero()) {

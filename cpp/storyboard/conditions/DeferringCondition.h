@@ -3,10 +3,10 @@
 #include <memory>
 #include <string_view>
 
-#include "kernel/SimTime.h"
-#include "storyboard/Condition.h"
-#include "storyboard/RandomStream.h"
-#include "storyboard/conditions/VehicleIdMap.h"
+#include "sbsim/kernel/RandomStream.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/conditions/VehicleIdMap.h"
 
 namespace sbsim::storyboard {
 
@@ -17,7 +17,7 @@ namespace sbsim::storyboard {
 class DeferringCondition : public Condition {
 public:
     /// Throws std::invalid_argument for a null stream, a negative min or max < min.
-    DeferringCondition(std::shared_ptr<RandomStream> rng, kernel::SimTime min, kernel::SimTime max);
+    DeferringCondition(std::shared_ptr<kernel::RandomStream> rng, kernel::SimTime min, kernel::SimTime max);
 
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
@@ -26,7 +26,7 @@ public:
     kernel::SimTime maxDeferral() const { return max_; }
 
 private:
-    std::shared_ptr<RandomStream> rng_;
+    std::shared_ptr<kernel::RandomStream> rng_;
     kernel::SimTime min_;
     kernel::SimTime max_;
     VehicleIdMap<kernel::SimTime> due_;

@@ -1,4 +1,4 @@
-#include "storyboard/conditions/LikelihoodCondition.h"
+#include "sbsim/storyboard/conditions/LikelihoodCondition.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 namespace sbsim::storyboard {
 
-LikelihoodCondition::LikelihoodCondition(std::shared_ptr<RandomStream> rng, double p)
+LikelihoodCondition::LikelihoodCondition(std::shared_ptr<kernel::RandomStream> rng, double p)
     : rng_(std::move(rng)), p_(std::clamp(p, 0.0, 1.0)) {
     if (!rng_) throw std::invalid_argument("LikelihoodCondition: random stream is null");
     if (std::isnan(p)) throw std::invalid_argument("LikelihoodCondition: probability must not be NaN");

@@ -3,9 +3,9 @@
 #include <memory>
 #include <string_view>
 
-#include "storyboard/Condition.h"
-#include "storyboard/RandomStream.h"
-#include "storyboard/conditions/VehicleIdMap.h"
+#include "sbsim/kernel/RandomStream.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/conditions/VehicleIdMap.h"
 
 namespace sbsim::storyboard {
 
@@ -14,7 +14,7 @@ namespace sbsim::storyboard {
 class LikelihoodCondition : public Condition {
 public:
     /// p is clamped to [0, 1]; throws std::invalid_argument for a null stream or a NaN p.
-    LikelihoodCondition(std::shared_ptr<RandomStream> rng, double p);
+    LikelihoodCondition(std::shared_ptr<kernel::RandomStream> rng, double p);
 
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
@@ -22,7 +22,7 @@ public:
     double probability() const { return p_; }
 
 private:
-    std::shared_ptr<RandomStream> rng_;
+    std::shared_ptr<kernel::RandomStream> rng_;
     double p_;
     VehicleIdMap<bool> decisions_;
 };

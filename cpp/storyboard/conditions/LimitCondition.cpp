@@ -1,4 +1,4 @@
-#include "storyboard/conditions/LimitCondition.h"
+#include "sbsim/storyboard/conditions/LimitCondition.h"
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-#include "storyboard/conditions/OrCondition.h"
+#include "sbsim/storyboard/conditions/OrCondition.h"
 
 #include <stdexcept>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "storyboard/Condition.h"
+#include "sbsim/storyboard/Condition.h"
 
 namespace sbsim::storyboard {
 

@@ -1,4 +1,4 @@
-#include "storyboard/conditions/PolygonCondition.h"
+#include "sbsim/storyboard/conditions/PolygonCondition.h"
 
 namespace sbsim::storyboard {
 

@@ -3,8 +3,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "storyboard/Condition.h"
-#include "storyboard/geometry/Polygon.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/geometry/Polygon.h"
 
 namespace sbsim::storyboard {
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "kernel/SimTime.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::storyboard {
 

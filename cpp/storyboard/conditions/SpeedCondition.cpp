@@ -1,4 +1,4 @@
-#include "storyboard/conditions/SpeedCondition.h"
+#include "sbsim/storyboard/conditions/SpeedCondition.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -3,8 +3,8 @@
 #include <optional>
 #include <vector>
 
-#include "storyboard/Condition.h"
-#include "storyboard/conditions/SnapshotStamp.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/conditions/SnapshotStamp.h"
 
 namespace sbsim::storyboard {
 

@@ -1,4 +1,4 @@
-#include "storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
 
 #include <stdexcept>
 

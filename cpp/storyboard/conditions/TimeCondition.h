@@ -2,8 +2,8 @@
 
 #include <optional>
 
-#include "kernel/SimTime.h"
-#include "storyboard/Condition.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/storyboard/Condition.h"
 
 namespace sbsim::storyboard {
 

@@ -3,10 +3,10 @@
 #include <optional>
 #include <vector>
 
-#include "storyboard/Condition.h"
-#include "storyboard/conditions/SnapshotStamp.h"
-#include "storyboard/geometry/Footprint.h"
-#include "storyboard/geometry/MovingFootprint.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/conditions/SnapshotStamp.h"
+#include "sbsim/storyboard/geometry/Footprint.h"
+#include "sbsim/storyboard/geometry/MovingFootprint.h"
 
 namespace sbsim::storyboard {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "storyboard/Effect.h"
+#include "sbsim/storyboard/Effect.h"
 
 namespace sbsim::storyboard {
 

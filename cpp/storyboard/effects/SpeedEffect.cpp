@@ -1,4 +1,4 @@
-#include "storyboard/effects/SpeedEffect.h"
+#include "sbsim/storyboard/effects/SpeedEffect.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "storyboard/Effect.h"
+#include "sbsim/storyboard/Effect.h"
 
 namespace sbsim::storyboard {
 

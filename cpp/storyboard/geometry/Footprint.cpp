@@ -1,4 +1,4 @@
-#include "storyboard/geometry/Footprint.h"
+#include "sbsim/storyboard/geometry/Footprint.h"
 
 #include <cmath>
 #include <numbers>

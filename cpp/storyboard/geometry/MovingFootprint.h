@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "storyboard/geometry/Footprint.h"
+#include "sbsim/storyboard/geometry/Footprint.h"
 
 namespace sbsim::storyboard::geometry {
 

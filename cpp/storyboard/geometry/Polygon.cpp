@@ -1,4 +1,4 @@
-#include "storyboard/geometry/Polygon.h"
+#include "sbsim/storyboard/geometry/Polygon.h"
 
 #include <algorithm>
 #include <stdexcept>

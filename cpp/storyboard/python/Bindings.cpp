@@ -9,27 +9,27 @@
 #include <set>
 #include <stdexcept>
 
-#include "storyboard/Story.h"
-#include "storyboard/StoryError.h"
-#include "storyboard/conditions/AndCondition.h"
-#include "storyboard/conditions/CarSetCondition.h"
-#include "storyboard/conditions/DeferringCondition.h"
-#include "storyboard/conditions/LikelihoodCondition.h"
-#include "storyboard/conditions/LimitCondition.h"
-#include "storyboard/conditions/OrCondition.h"
-#include "storyboard/conditions/PolygonCondition.h"
-#include "storyboard/conditions/SpeedCondition.h"
-#include "storyboard/conditions/SpeedDifferenceCondition.h"
-#include "storyboard/conditions/TimeCondition.h"
-#include "storyboard/conditions/TtcCondition.h"
-#include "storyboard/effects/EmergencyStopEffect.h"
-#include "storyboard/effects/SignalEffect.h"
-#include "storyboard/effects/SpeedEffect.h"
-#include "storyboard/effects/StopEffect.h"
-#include "storyboard/python/PythonCondition.h"
-#include "storyboard/python/PythonEffect.h"
-#include "storyboard/python/ScriptContext.h"
-#include "storyboard/python/SnapshotView.h"
+#include "sbsim/storyboard/Story.h"
+#include "sbsim/storyboard/StoryError.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/DeferringCondition.h"
+#include "sbsim/storyboard/conditions/LikelihoodCondition.h"
+#include "sbsim/storyboard/conditions/LimitCondition.h"
+#include "sbsim/storyboard/conditions/OrCondition.h"
+#include "sbsim/storyboard/conditions/PolygonCondition.h"
+#include "sbsim/storyboard/conditions/SpeedCondition.h"
+#include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/TtcCondition.h"
+#include "sbsim/storyboard/effects/EmergencyStopEffect.h"
+#include "sbsim/storyboard/effects/SignalEffect.h"
+#include "sbsim/storyboard/effects/SpeedEffect.h"
+#include "sbsim/storyboard/effects/StopEffect.h"
+#include "sbsim/storyboard/python/PythonCondition.h"
+#include "sbsim/storyboard/python/PythonEffect.h"
+#include "sbsim/storyboard/python/ScriptContext.h"
+#include "sbsim/storyboard/python/SnapshotView.h"
 
 namespace py = pybind11;
 using sbsim::kernel::SimTime;
@@ -152,10 +152,10 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
                    py::repr(py::float_(c.y)).cast<std::string>() + ")";
         });
 
-    py::class_<RandomStream, py::smart_holder>(m, "RandomNumberGenerator")
-        .def_property_readonly("index", &RandomStream::index)
+    py::class_<kernel::RandomStream, py::smart_holder>(m, "RandomNumberGenerator")
+        .def_property_readonly("index", &kernel::RandomStream::index)
         .def(
-            "uniform", [](RandomStream& r, double a, double b) { return r.uniform(a, b); }, py::arg("a") = 0.0,
+            "uniform", [](kernel::RandomStream& r, double a, double b) { return r.uniform(a, b); }, py::arg("a") = 0.0,
             py::arg("b") = 1.0);
 
     bindSnapshotView(m);
@@ -238,13 +238,13 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
              }),
              py::arg("n"));
     py::class_<LikelihoodCondition, Condition, py::smart_holder>(m, "LikelihoodCondition")
-        .def(py::init([](std::shared_ptr<RandomStream> rng, const py::object& p) {
+        .def(py::init([](std::shared_ptr<kernel::RandomStream> rng, const py::object& p) {
                  if (!rng) throw py::type_error("LikelihoodCondition needs a random number generator");
                  return std::make_shared<LikelihoodCondition>(std::move(rng), toNumber(p, "likelihood"));
              }),
              py::arg("rng"), py::arg("p"));
     py::class_<DeferringCondition, Condition, py::smart_holder>(m, "DeferringCondition")
-        .def(py::init([](std::shared_ptr<RandomStream> rng, const py::object& min, const py::object& max) {
+        .def(py::init([](std::shared_ptr<kernel::RandomStream> rng, const py::object& min, const py::object& max) {
                  if (!rng) throw py::type_error("DeferringCondition needs a random number generator");
                  const SimTime lo = toSimTime(min, "min");
                  const SimTime hi = toSimTime(max, "max");

@@ -1,11 +1,11 @@
-#include "storyboard/python/PythonCondition.h"
+#include "sbsim/storyboard/python/PythonCondition.h"
 
 #include <pybind11/numpy.h>
 
 #include <algorithm>
 
-#include "storyboard/python/ScriptContext.h"
-#include "storyboard/python/SnapshotView.h"
+#include "sbsim/storyboard/python/ScriptContext.h"
+#include "sbsim/storyboard/python/SnapshotView.h"
 
 namespace py = pybind11;
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "storyboard/Condition.h"
+#include "sbsim/storyboard/Condition.h"
 
 namespace sbsim::storyboard {
 

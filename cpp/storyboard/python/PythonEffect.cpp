@@ -1,7 +1,7 @@
-#include "storyboard/python/PythonEffect.h"
+#include "sbsim/storyboard/python/PythonEffect.h"
 
-#include "storyboard/Story.h"
-#include "storyboard/python/ScriptContext.h"
+#include "sbsim/storyboard/Story.h"
+#include "sbsim/storyboard/python/ScriptContext.h"
 
 namespace py = pybind11;
 

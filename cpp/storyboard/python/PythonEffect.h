@@ -3,7 +3,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/trampoline_self_life_support.h>
 
-#include "storyboard/Effect.h"
+#include "sbsim/storyboard/Effect.h"
 
 namespace sbsim::storyboard {
 

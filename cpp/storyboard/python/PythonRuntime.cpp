@@ -1,4 +1,4 @@
-#include "storyboard/python/PythonRuntime.h"
+#include "sbsim/storyboard/python/PythonRuntime.h"
 
 #include <pybind11/embed.h>
 

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "sbsim/kernel/Export.h"
+
 namespace pybind11 {
 class scoped_interpreter;
 }
@@ -13,7 +15,7 @@ namespace sbsim::storyboard {
 /// Python sbsim was built for: when the program sits in a virtual environment's bin/ (a pip
 /// install), Python finds that environment's pyvenv.cfg and site-packages (numpy, storyboard);
 /// otherwise it is pointed at the interpreter recorded at build time.
-class PythonRuntime {
+class SBSIM_API PythonRuntime {
 public:
     PythonRuntime();
     ~PythonRuntime();

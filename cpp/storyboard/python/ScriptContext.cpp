@@ -1,7 +1,7 @@
-#include "storyboard/python/ScriptContext.h"
+#include "sbsim/storyboard/python/ScriptContext.h"
 
-#include "kernel/OneLine.h"
-#include "storyboard/StoryError.h"
+#include "sbsim/kernel/OneLine.h"
+#include "sbsim/storyboard/StoryError.h"
 
 namespace py = pybind11;
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <string>
 
-#include "storyboard/CanvasFrame.h"
-#include "storyboard/Storyboard.h"
+#include "sbsim/storyboard/CanvasFrame.h"
+#include "sbsim/storyboard/Storyboard.h"
 
 namespace sbsim::storyboard {
 

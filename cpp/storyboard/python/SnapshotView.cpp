@@ -1,4 +1,4 @@
-#include "storyboard/python/SnapshotView.h"
+#include "sbsim/storyboard/python/SnapshotView.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

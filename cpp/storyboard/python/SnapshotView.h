@@ -2,7 +2,7 @@
 
 #include <pybind11/pybind11.h>
 
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::storyboard {
 

@@ -1,9 +1,9 @@
-#include "storyboard/python/StoryScript.h"
+#include "sbsim/storyboard/python/StoryScript.h"
 
 #include <pybind11/embed.h>
 
-#include "storyboard/StoryError.h"
-#include "storyboard/python/ScriptContext.h"
+#include "sbsim/storyboard/StoryError.h"
+#include "sbsim/storyboard/python/ScriptContext.h"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;

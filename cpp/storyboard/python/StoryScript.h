@@ -3,16 +3,17 @@
 #include <filesystem>
 #include <memory>
 
-#include "storyboard/CanvasFrame.h"
-#include "storyboard/Storyboard.h"
-#include "storyboard/python/PythonRuntime.h"
+#include "sbsim/kernel/Export.h"
+#include "sbsim/storyboard/CanvasFrame.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/python/PythonRuntime.h"
 
 namespace sbsim::storyboard {
 
 /// A story script run by the embedded interpreter: imports the file (its folder first on
 /// sys.path) and calls its createStories(board) — or createStories() with a module-level `board`,
 /// as Artery's scripts expect. Every Python failure becomes a StoryError naming file and line.
-class StoryScript {
+class SBSIM_API StoryScript {
 public:
     /// `python` must outlive the board: stories keep Python objects alive.
     StoryScript(PythonRuntime& python, const std::filesystem::path& script, Storyboard& board,

@@ -14,8 +14,8 @@
 
 #include "ServicesTestSupport.h"
 #include "TestPrinters.h"
-#include "services/Medium.h"
-#include "services/Middleware.h"
+#include "sbsim/services/Medium.h"
+#include "sbsim/services/Middleware.h"
 
 namespace sbsim::services::test {
 namespace {
@@ -24,13 +24,12 @@ constexpr std::string_view kAllButBare = R"(<services>
     <service type="TestProbe"><filters><name pattern="bare.*" match="inverse"/></filters></service>
 </services>)";
 
-MediumSettings radio(double range, SimTime latency = SimTime::fromMilliseconds(1), std::optional<double> fadeStart = {},
-                     std::uint64_t seed = 0) {
+MediumSettings radio(double range, SimTime latency = SimTime::fromMilliseconds(1),
+                     std::optional<double> fadeStart = {}) {
     MediumSettings s;
     s.range = range;
     s.latency = latency;
     s.fadeStart = fadeStart;
-    s.seed = seed;
     return s;
 }
 
@@ -220,7 +219,7 @@ const std::vector<std::pair<std::string, VehicleSnapshot::Vehicle>> kLossyReceiv
 /// Per receiver (kLossyReceivers order), which of `n` messages sent at 2 s arrived. With
 /// `warmUp` > 0, that many messages go out first at 1 s, when every receiver is within 10 m.
 std::vector<std::vector<bool>> lossyRun(std::uint64_t seed, int n, int warmUp = 0, Counts* counts = nullptr) {
-    Harness h(kAllButBare, radio(100, SimTime::fromMilliseconds(1), 50.0, seed));
+    Harness h(kAllButBare, radio(100, SimTime::fromMilliseconds(1), 50.0), secs(0.1), seed);
     std::vector<VehicleSnapshot::Vehicle> near = {vehicle("s")};
     std::vector<VehicleSnapshot::Vehicle> spread = {vehicle("s")};
     for (const auto& [id, v] : kLossyReceivers) {

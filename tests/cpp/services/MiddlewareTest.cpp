@@ -16,16 +16,16 @@
 #include "ServicesTestSupport.h"
 #include "SumoTestSupport.h"
 #include "TestPrinters.h"
-#include "kernel/Simulation.h"
-#include "services/Medium.h"
-#include "services/ServiceManager.h"
-#include "services/ServicesConfig.h"
-#include "storyboard/Storyboard.h"
-#include "storyboard/conditions/AndCondition.h"
-#include "storyboard/conditions/CarSetCondition.h"
-#include "storyboard/conditions/TimeCondition.h"
-#include "storyboard/effects/SignalEffect.h"
-#include "traffic/SumoBridge.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/services/Medium.h"
+#include "sbsim/services/ServiceManager.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/effects/SignalEffect.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::services::test {
 namespace {
@@ -94,7 +94,6 @@ private:
     static traffic::SumoSettings settings(std::optional<SimTime> end) {
         traffic::SumoSettings s = sbsim::test::scenarioSettings();
         s.end = end;
-        s.threads = 1;
         return s;
     }
 };
@@ -227,7 +226,7 @@ TEST(MiddlewareSumo, StoryboardSignalsReachTheEgoAtActivation) {
         <service type="TestProbeB" listenAll="1"><filters><name pattern="veh2"/></filters></service>
     </services>)",
               {}, secs(25));
-    auto& board = s.sim.emplaceModule<storyboard::Storyboard>(7);
+    auto& board = s.sim.emplaceModule<storyboard::Storyboard>();
     board.attach(s.sumo);
     board.registerStory(signalStory("brake", "veh5", 20, "go"));
     board.registerStory(signalStory("hello", "veh3", 0, "hi"));  // true from veh3's first step on

@@ -13,14 +13,14 @@
 
 #include "ServicesTestSupport.h"
 #include "TestPrinters.h"
-#include "services/Middleware.h"
-#include "services/ServiceManager.h"
-#include "services/ServicesConfig.h"
-#include "storyboard/Storyboard.h"
-#include "storyboard/conditions/AndCondition.h"
-#include "storyboard/conditions/CarSetCondition.h"
-#include "storyboard/conditions/TimeCondition.h"
-#include "storyboard/effects/SignalEffect.h"
+#include "sbsim/services/Middleware.h"
+#include "sbsim/services/ServiceManager.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/effects/SignalEffect.h"
 
 namespace sbsim::services::test {
 namespace {
@@ -218,7 +218,7 @@ TEST(ServiceSignals, EgoServicesGetTheSignalListenersGetAllOnce) {
         <service type="TestProbe"><filters><name pattern="d" match="inverse"/></filters></service>
         <service type="TestProbeB" listenAll="1"><filters><name pattern="a|b"/></filters></service>
     </services>)");
-    auto& board = h.sim.emplaceModule<storyboard::Storyboard>(1);
+    auto& board = h.sim.emplaceModule<storyboard::Storyboard>();
     board.setControllerFactory([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); });
     board.attach(h.sumo);
     board.registerStory(signalStory("toB", "b", 3, "hello"));

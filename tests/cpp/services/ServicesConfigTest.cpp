@@ -1,4 +1,4 @@
-#include "services/ServicesConfig.h"
+#include "sbsim/services/ServicesConfig.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

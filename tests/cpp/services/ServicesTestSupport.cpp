@@ -6,13 +6,13 @@
 #include <set>
 #include <stdexcept>
 
-#include "services/ServiceRegistry.h"
-#include "services/ServicesConfig.h"
-#include "storyboard/conditions/AndCondition.h"
-#include "storyboard/conditions/CarSetCondition.h"
-#include "storyboard/conditions/TimeCondition.h"
-#include "storyboard/effects/SignalEffect.h"
-#include "traffic/SumoBridge.h"
+#include "sbsim/services/ServiceRegistry.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/effects/SignalEffect.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::services::test {
 
@@ -169,8 +169,9 @@ void Script::at(SimTime t, std::function<void()> action, int priority) {
 
 void Script::handleMessage(kernel::Message& msg) { static_cast<Action&>(msg).run(); }
 
-Harness::Harness(std::string_view servicesXml, MediumSettings radio, SimTime interval)
-    : sumo(sim.emplaceModule<FakeSumo>()),
+Harness::Harness(std::string_view servicesXml, MediumSettings radio, SimTime interval, std::uint64_t seed)
+    : sim(seed),
+      sumo(sim.emplaceModule<FakeSumo>()),
       manager(sim.emplaceModule<ServiceManager>(ServicesConfig::parse(servicesXml, "test.xml"), interval, snapshot)),
       medium(sim.emplaceModule<Medium>(radio, snapshot,
                                        [this](const std::string& id) { return manager.middlewareOf(id); })),

@@ -10,17 +10,17 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/Message.h"
-#include "kernel/Module.h"
-#include "kernel/SimTime.h"
-#include "kernel/Simulation.h"
-#include "services/Medium.h"
-#include "services/Service.h"
-#include "services/ServiceManager.h"
-#include "services/V2xMessage.h"
-#include "storyboard/Story.h"
-#include "storyboard/StoryboardSignal.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Message.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/services/Medium.h"
+#include "sbsim/services/Service.h"
+#include "sbsim/services/ServiceManager.h"
+#include "sbsim/services/V2xMessage.h"
+#include "sbsim/storyboard/Story.h"
+#include "sbsim/storyboard/StoryboardSignal.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::services::test {
 
@@ -172,7 +172,9 @@ public:
 /// in app/Program.cpp. step() plays the part of a SUMO step.
 class Harness {
 public:
-    explicit Harness(std::string_view servicesXml, MediumSettings radio = {}, SimTime interval = secs(0.1));
+    /// `seed`: the simulation's, which seeds the medium's packet losses.
+    explicit Harness(std::string_view servicesXml, MediumSettings radio = {}, SimTime interval = secs(0.1),
+                     std::uint64_t seed = 0);
 
     /// At `t`, as a SUMO step would (before other events due then): the snapshot becomes
     /// `vehicles`; vehicles new to it depart, vehicles missing from it arrive (each in ascending

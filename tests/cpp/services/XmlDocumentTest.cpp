@@ -1,4 +1,4 @@
-#include "services/XmlDocument.h"
+#include "sbsim/services/XmlDocument.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

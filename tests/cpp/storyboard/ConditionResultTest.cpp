@@ -1,4 +1,4 @@
-#include "storyboard/ConditionResult.h"
+#include "sbsim/storyboard/ConditionResult.h"
 
 #include <gtest/gtest.h>
 

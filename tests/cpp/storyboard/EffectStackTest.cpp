@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "storyboard/EffectStack.h"
+#include "sbsim/storyboard/EffectStack.h"
 
 namespace sbsim::storyboard {
 namespace {
@@ -120,7 +120,6 @@ void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const s
         EXPECT_EQ(v.speedMode_, 0) << context;
     }
 }
-
 
 void runAllOrders(const std::vector<Spec>& specs) {
     std::vector<std::size_t> activation(specs.size());

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "storyboard/geometry/Footprint.h"
-#include "storyboard/geometry/Polygon.h"
+#include "sbsim/storyboard/geometry/Footprint.h"
+#include "sbsim/storyboard/geometry/Polygon.h"
 
 namespace sbsim::storyboard::geometry {
 namespace {

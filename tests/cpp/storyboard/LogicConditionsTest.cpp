@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "StoryboardTestSupport.h"
-#include "storyboard/conditions/AndCondition.h"
-#include "storyboard/conditions/OrCondition.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/OrCondition.h"
 
 namespace sbsim::storyboard::test {
 namespace {

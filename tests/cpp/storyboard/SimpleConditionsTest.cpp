@@ -4,10 +4,10 @@
 
 #include "StoryboardTestSupport.h"
 #include "TestPrinters.h"
-#include "storyboard/conditions/CarSetCondition.h"
-#include "storyboard/conditions/PolygonCondition.h"
-#include "storyboard/conditions/SpeedCondition.h"
-#include "storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/PolygonCondition.h"
+#include "sbsim/storyboard/conditions/SpeedCondition.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
 
 namespace sbsim::storyboard::test {
 namespace {

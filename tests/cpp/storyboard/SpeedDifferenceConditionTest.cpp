@@ -1,4 +1,4 @@
-#include "storyboard/conditions/SpeedDifferenceCondition.h"
+#include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
 
 #include <gtest/gtest.h>
 

@@ -7,15 +7,17 @@
 
 #include "StoryboardTestSupport.h"
 #include "TestPrinters.h"
-#include "storyboard/RandomStream.h"
-#include "storyboard/conditions/AndCondition.h"
-#include "storyboard/conditions/CarSetCondition.h"
-#include "storyboard/conditions/DeferringCondition.h"
-#include "storyboard/conditions/LikelihoodCondition.h"
-#include "storyboard/conditions/LimitCondition.h"
+#include "sbsim/kernel/RandomStream.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/DeferringCondition.h"
+#include "sbsim/storyboard/conditions/LikelihoodCondition.h"
+#include "sbsim/storyboard/conditions/LimitCondition.h"
 
 namespace sbsim::storyboard::test {
 namespace {
+
+using kernel::RandomStream;
 
 std::vector<Vehicle> fleet(int n) {
     std::vector<Vehicle> vehicles;

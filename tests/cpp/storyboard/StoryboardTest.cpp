@@ -10,18 +10,18 @@
 #include <string>
 #include <vector>
 
-#include "kernel/Simulation.h"
-#include "storyboard/EventLog.h"
-#include "storyboard/Storyboard.h"
-#include "storyboard/StoryboardSignal.h"
-#include "storyboard/conditions/AndCondition.h"
-#include "storyboard/conditions/CarSetCondition.h"
-#include "storyboard/conditions/LimitCondition.h"
-#include "storyboard/conditions/SpeedCondition.h"
-#include "storyboard/conditions/TimeCondition.h"
-#include "storyboard/effects/SignalEffect.h"
-#include "storyboard/effects/SpeedEffect.h"
-#include "storyboard/effects/StopEffect.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/StoryboardSignal.h"
+#include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/LimitCondition.h"
+#include "sbsim/storyboard/conditions/SpeedCondition.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/effects/SignalEffect.h"
+#include "sbsim/storyboard/effects/SpeedEffect.h"
+#include "sbsim/storyboard/effects/StopEffect.h"
 
 namespace sbsim::storyboard {
 namespace {
@@ -68,7 +68,7 @@ public:
 
 class StoryboardTest : public testing::Test {
 protected:
-    StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(7, &log)) {
+    StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(&log)) {
         board.setControllerFactory(
             [this](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
         sim.subscribe(Storyboard::signalEmitted, probe);
@@ -89,7 +89,7 @@ protected:
 
     std::ostringstream out;
     EventLog log;
-    kernel::Simulation sim;
+    kernel::Simulation sim{7};
     Storyboard& board;
     Commands commands;
     SignalProbe probe;
@@ -244,8 +244,8 @@ TEST(StoryboardPurity, TreesArePureOnlyWithoutStatefulNodes) {
 std::string runWithThreads(unsigned threads) {
     std::ostringstream out;
     EventLog log(out);
-    kernel::Simulation sim;
-    auto& board = sim.emplaceModule<Storyboard>(7, &log, threads);
+    kernel::Simulation sim(7, threads);
+    auto& board = sim.emplaceModule<Storyboard>(&log);
     Commands commands;
     board.setControllerFactory([&](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
     // Pure stories (evaluated in parallel) between impure ones (a Limit shared by two stories).

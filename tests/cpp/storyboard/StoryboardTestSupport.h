@@ -7,11 +7,11 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/SimTime.h"
-#include "storyboard/Condition.h"
-#include "storyboard/EvaluationContext.h"
-#include "traffic/NeighbourGrid.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/EvaluationContext.h"
+#include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::storyboard::test {
 

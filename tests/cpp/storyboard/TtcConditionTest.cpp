@@ -1,4 +1,4 @@
-#include "storyboard/conditions/TtcCondition.h"
+#include "sbsim/storyboard/conditions/TtcCondition.h"
 
 #include <gtest/gtest.h>
 

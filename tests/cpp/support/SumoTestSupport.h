@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "kernel/SimTime.h"
-#include "traffic/SumoBridge.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::test {
 

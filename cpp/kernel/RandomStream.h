@@ -3,12 +3,14 @@
 #include <cstdint>
 #include <random>
 
-namespace sbsim::storyboard {
+#include "sbsim/kernel/Export.h"
+
+namespace sbsim::kernel {
 
 /// A seeded source of random numbers for the storyboard's random conditions. Streams with the same
 /// seed and different indices are independent, so adding a random condition to a story does not
 /// shift the draws of the others. Output is the same on every platform and standard library.
-class RandomStream {
+class SBSIM_API RandomStream {
 public:
     RandomStream(std::uint64_t seed, unsigned index);
 
@@ -26,4 +28,4 @@ private:
     std::mt19937_64 engine_;
 };
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::kernel

@@ -1,4 +1,4 @@
-#include "traffic/NeighbourGrid.h"
+#include "sbsim/traffic/NeighbourGrid.h"
 
 #include <gtest/gtest.h>
 
@@ -8,14 +8,19 @@
 #include <random>
 #include <stdexcept>
 
-#include "StoryboardTestSupport.h"
-
 namespace sbsim::traffic {
 namespace {
 
-using storyboard::test::car;
-using storyboard::test::Vehicle;
+using Vehicle = VehicleSnapshot::Vehicle;
 using Index = NeighbourGrid::Index;
+
+Vehicle car(std::string id, double x, double y) {
+    Vehicle v;
+    v.id = std::move(id);
+    v.x = x;
+    v.y = y;
+    return v;
+}
 
 std::vector<Index> bruteForce(const VehicleSnapshot& s, Index i, double radius) {
     std::vector<Index> out;

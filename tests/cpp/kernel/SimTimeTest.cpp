@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "TestPrinters.h"
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::kernel {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <ostream>
 
-#include "kernel/SimTime.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::kernel {
 

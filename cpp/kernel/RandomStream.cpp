@@ -1,6 +1,6 @@
-#include "storyboard/RandomStream.h"
+#include "sbsim/kernel/RandomStream.h"
 
-namespace sbsim::storyboard {
+namespace sbsim::kernel {
 
 namespace {
 std::mt19937_64 seededEngine(std::uint64_t seed, unsigned index) {
@@ -19,4 +19,4 @@ double RandomStream::uniform01() {
     return static_cast<double>(engine_() >> 11) * 0x1.0p-53;
 }
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::kernel

@@ -1,11 +1,11 @@
-#include "storyboard/RandomStream.h"
+#include "sbsim/kernel/RandomStream.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-namespace sbsim::storyboard {
+namespace sbsim::kernel {
 namespace {
 
 std::vector<double> draws(RandomStream& s, int n) {
@@ -68,4 +68,4 @@ TEST(RandomStream, UniformIsWithinBounds) {
 }
 
 }  // namespace
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::kernel

@@ -12,10 +12,10 @@
 
 #include "SumoTestSupport.h"
 #include "TestPrinters.h"
-#include "kernel/Simulation.h"
-#include "traffic/SumoBridge.h"
-#include "traffic/VehicleController.h"
-#include "traffic/VehicleSnapshot.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/traffic/SumoBridge.h"
+#include "sbsim/traffic/VehicleController.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::test {
 namespace {
@@ -140,8 +140,7 @@ class SnapshotTest : public testing::TestWithParam<unsigned> {};
 
 TEST_P(SnapshotTest, MatchesLibsumoAtEveryStep) {
     traffic::SumoSettings settings = scenarioSettings();
-    settings.threads = GetParam();
-    kernel::Simulation sim;
+    kernel::Simulation sim(0, GetParam());
     auto& bridge = sim.emplaceModule<SumoBridge>(settings);
     SnapshotChecker checker(sim, bridge);
 
@@ -187,9 +186,8 @@ INSTANTIATE_TEST_SUITE_P(Threads, SnapshotTest, testing::Values(1u, 0u),
 TEST(SnapshotDense, ParallelReadsMatchLibsumo) {
     traffic::SumoSettings settings = scenarioSettings();
     settings.sumocfg = denseScenarioConfig();
-    settings.threads = 4;
     settings.end = sec(110);
-    kernel::Simulation sim;
+    kernel::Simulation sim(0, 4);
     auto& bridge = sim.emplaceModule<SumoBridge>(settings);
     SnapshotChecker checker(sim, bridge);
     sim.run();
@@ -272,8 +270,7 @@ std::vector<std::string> recordRun(std::int64_t seed, unsigned threads) {
     traffic::SumoSettings settings = scenarioSettings();
     settings.seed = seed;
     settings.end = sec(40);
-    settings.threads = threads;
-    kernel::Simulation sim;
+    kernel::Simulation sim(0, threads);
     sim.emplaceModule<SumoBridge>(settings);
     sim.subscribe(SumoBridge::stepSignal, recorder);
     sim.run();

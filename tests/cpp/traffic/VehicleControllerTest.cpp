@@ -9,9 +9,9 @@
 
 #include "SumoTestSupport.h"
 #include "TestPrinters.h"
-#include "kernel/Simulation.h"
-#include "traffic/SumoBridge.h"
-#include "traffic/VehicleController.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/traffic/SumoBridge.h"
+#include "sbsim/traffic/VehicleController.h"
 
 namespace sbsim::test {
 namespace {

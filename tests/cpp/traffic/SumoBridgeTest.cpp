@@ -12,8 +12,8 @@
 
 #include "SumoTestSupport.h"
 #include "TestPrinters.h"
-#include "kernel/Simulation.h"
-#include "traffic/SumoBridge.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::test {
 namespace {

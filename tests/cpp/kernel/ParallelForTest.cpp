@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/ParallelFor.h"
+#include "sbsim/kernel/ParallelFor.h"
 
 namespace sbsim::kernel {
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "TestPrinters.h"
-#include "kernel/FutureEventSet.h"
-#include "kernel/Module.h"
+#include "sbsim/kernel/FutureEventSet.h"
+#include "sbsim/kernel/Module.h"
 
 namespace sbsim::kernel {
 namespace {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "TestPrinters.h"
-#include "kernel/Module.h"
-#include "kernel/Simulation.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/Simulation.h"
 
 namespace sbsim::kernel {
 namespace {

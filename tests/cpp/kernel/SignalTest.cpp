@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/Module.h"
-#include "kernel/Signal.h"
-#include "kernel/Simulation.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/Signal.h"
+#include "sbsim/kernel/Simulation.h"
 
 namespace sbsim::kernel {
 namespace {
