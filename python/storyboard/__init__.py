@@ -14,80 +14,18 @@ from typing import Any
 __version__ = "0.1.0"
 
 try:  # the C++ core exists only inside the sbsim program
-    from _sbsim import (  # type: ignore[import-not-found]
-        AndCondition,
-        CarSetCondition,
-        Condition,
-        Coord,
-        DeferringCondition,
-        Effect,
-        EmergencyStopEffect,
-        LikelihoodCondition,
-        LimitCondition,
-        OrCondition,
-        PolygonCondition,
-        RandomNumberGenerator,
-        SignalEffect,
-        SignalEffectFactory,
-        SimTime,
-        Snapshot,
-        SpeedConditionGreater,
-        SpeedConditionLess,
-        SpeedDifferenceConditionFaster,
-        SpeedDifferenceConditionSlower,
-        SpeedEffect,
-        SpeedEffectFactory,
-        StopEffect,
-        StopEffectFactory,
-        Story,
-        Storyboard,
-        TimeCondition,
-        TtcCondition,
-        Vehicle,
-        VehicleController,
-    )
-
-    IN_SBSIM = True
+    import _sbsim  # type: ignore[import-not-found]
 except ImportError:  # imported by a plain Python (tests, tools, the runner)
     IN_SBSIM = False
+    _CORE_NAMES: list[str] = []
+else:
+    IN_SBSIM = True
+    # Every public name of the C++ module, as it is: __init__.pyi types them, and a test checks the
+    # stub against the compiled module, so a binding added without a stub fails.
+    _CORE_NAMES = sorted(name for name in dir(_sbsim) if not name.startswith("_"))
+    globals().update({name: getattr(_sbsim, name) for name in _CORE_NAMES})
 
-__all__ = [
-    "AndCondition",
-    "CarSetCondition",
-    "Condition",
-    "Coord",
-    "DeferringCondition",
-    "Effect",
-    "EmergencyStopEffect",
-    "LikelihoodCondition",
-    "LimitCondition",
-    "OrCondition",
-    "PolygonCondition",
-    "RandomNumberGenerator",
-    "SignalEffect",
-    "SignalEffectFactory",
-    "SimTime",
-    "Snapshot",
-    "SpeedConditionGreater",
-    "SpeedConditionLess",
-    "SpeedDifferenceConditionFaster",
-    "SpeedDifferenceConditionSlower",
-    "SpeedEffect",
-    "SpeedEffectFactory",
-    "StopEffect",
-    "StopEffectFactory",
-    "Story",
-    "Storyboard",
-    "TimeCondition",
-    "TtcCondition",
-    "Vehicle",
-    "VehicleController",
-    "IN_SBSIM",
-    "all_of",
-    "any_of",
-    "milliseconds",
-    "seconds",
-]
+__all__ = [*_CORE_NAMES, "IN_SBSIM", "all_of", "any_of", "milliseconds", "seconds"]
 
 
 def _require_sbsim(name: str) -> None:
@@ -100,7 +38,7 @@ def all_of(*conditions: Any) -> Any:
     _require_sbsim("all_of")
     if not conditions:
         raise ValueError("all_of needs at least one condition")
-    return reduce(AndCondition, conditions)
+    return reduce(_sbsim.AndCondition, conditions)
 
 
 def any_of(*conditions: Any) -> Any:
@@ -108,19 +46,19 @@ def any_of(*conditions: Any) -> Any:
     _require_sbsim("any_of")
     if not conditions:
         raise ValueError("any_of needs at least one condition")
-    return reduce(OrCondition, conditions)
+    return reduce(_sbsim.OrCondition, conditions)
 
 
 def seconds(x: float) -> Any:
     """A ``SimTime`` of ``x`` seconds (Artery's ``timeline.seconds``)."""
     _require_sbsim("seconds")
-    return SimTime(x)
+    return _sbsim.SimTime(x)
 
 
 def milliseconds(x: float) -> Any:
     """A ``SimTime`` of ``x`` milliseconds (Artery's ``timeline.milliseconds``)."""
     _require_sbsim("milliseconds")
-    return SimTime(x / 1000.0)
+    return _sbsim.SimTime(x / 1000.0)
 
 
 def __getattr__(name: str) -> Any:
