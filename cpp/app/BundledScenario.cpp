@@ -1,5 +1,7 @@
 #include "sbsim/app/BundledScenario.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,7 +25,7 @@ BundledScenario BundledScenario::locate() {
     }
     roots.emplace_back(fs::path(SBSIM_SOURCE_DIR) / "stories");
 
-    std::string searched;
+    std::vector<std::string> searched;
     for (const fs::path& root : roots) {
         const fs::path dir = root / kName;
         const fs::path cfg = dir / (std::string(kName) + ".sumocfg");
@@ -32,9 +34,10 @@ BundledScenario BundledScenario::locate() {
             if (fs::is_regular_file(dir / "story.py")) s.story = dir / "story.py";
             return s;
         }
-        searched += (searched.empty() ? "" : ", ") + cfg.string();
+        searched.push_back(cfg.string());
     }
-    throw std::runtime_error("bundled scenario not found (looked for " + searched + "); pass --sumocfg FILE");
+    throw std::runtime_error(
+        fmt::format("bundled scenario not found (looked for {}); pass --sumocfg FILE", fmt::join(searched, ", ")));
 }
 
 }  // namespace sbsim::app

@@ -1,152 +1,142 @@
 #include "sbsim/app/CommandLine.h"
 
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
+#include <functional>
 
-#include "sbsim/app/ShellWords.h"
+#include "sbsim/app/BadInput.h"
+#include "sbsim/app/SumoArguments.h"
 
 namespace sbsim::app {
 
 namespace {
 
+/// Accepts a number written in full (nothing after it) for which `accept` holds; otherwise the
+/// message names what the option expects and the text given (CLI11 prefixes the option).
 template <typename T>
-T parseNumber(const std::string& option, const std::string& text) {
-    T value{};
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc() || ptr != end) throw UsageError("option " + option + " expects a number, got '" + text + "'");
-    return value;
-}
-
-double positive(const std::string& option, double value) {
-    if (!std::isfinite(value) || value <= 0) throw UsageError("option " + option + " expects a number > 0");
-    return value;
+CLI::Validator numberWhere(std::string expected, std::function<bool(T)> accept) {
+    return CLI::Validator(
+        [expected = std::move(expected), accept = std::move(accept)](std::string& text) -> std::string {
+            T value{};
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+            if (ec == std::errc() && ptr == end && accept(value)) return {};
+            return fmt::format("expects {}, got '{}'", expected, text);
+        },
+        "");  // no description: --help shows the type name and the option's own text
 }
 
 /// Times must fit sbsim's clock: whole nanoseconds, at most about a century.
 constexpr double kMaxSeconds = 3.0e9;
-double duration(const std::string& option, double seconds, bool allowZero) {
-    if (!std::isfinite(seconds) || seconds < 0 || (!allowZero && seconds < 1e-9) || seconds > kMaxSeconds) {
-        throw UsageError("option " + option + " expects seconds " + (allowZero ? ">= 0" : "> 0 (at least 1e-9)") +
-                         " and at most 3e9");
+
+CLI::Validator seconds(bool allowZero) {
+    if (allowZero) {
+        return numberWhere<double>("seconds >= 0 and at most 3e9",
+                                   [](double s) { return std::isfinite(s) && s >= 0 && s <= kMaxSeconds; });
     }
-    return seconds;
+    return numberWhere<double>("seconds > 0 (at least 1e-9) and at most 3e9",
+                               [](double s) { return std::isfinite(s) && s >= 1e-9 && s <= kMaxSeconds; });
+}
+
+CLI::Validator metres(bool allowZero) {
+    if (allowZero) return numberWhere<double>("metres >= 0", [](double m) { return std::isfinite(m) && m >= 0; });
+    return numberWhere<double>("metres > 0", [](double m) { return std::isfinite(m) && m > 0; });
 }
 
 }  // namespace
 
-std::string CommandLine::usage() {
-    return R"(usage: sbsim [--sumocfg FILE] [--story FILE.py] [--events FILE.jsonl] [--end SECONDS]
-             [--seed N] [--sumo-option "..."]... [--services FILE.xml] [--plugin LIB.so]...
-             [--quiet] [--version] [--help]
+void CommandLine::declareOptions(CLI::App& app) {
+    // As most programs do: an option given again overrides (repeatable ones collect instead).
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 
-Runs SUMO through libsumo, with an Artery-style storyboard making traffic dynamic.
-Without --sumocfg, runs the bundled scenario (stories/grid-rain).
+    app.option_defaults()->group("Scenario");
+    app.add_option("-c,--sumocfg", sumocfg,
+                   "SUMO configuration to load (default: the bundled scenario\n"
+                   "stories/grid-rain with its story); also -c FILE after --")
+        ->type_name("FILE");
+    auto* storyOption =
+        app.add_option("--story", story, "storyboard script defining createStories(board)")->type_name("FILE.py");
+    app.add_option("--end", end,
+                   "stop after the step reaching this time (default: the sumocfg's\n"
+                   "end; the run also ends when SUMO expects no more vehicles)")
+        ->type_name("SECONDS")
+        ->check(seconds(true));
+    app.add_option("--seed", seed,
+                   fmt::format("seed for SUMO (its --seed) and the storyboard's random\n"
+                               "generators (default: {}, SUMO's own; a seed in the sumocfg still\n"
+                               "applies to SUMO)",
+                               kDefaultSeed))
+        ->type_name("N")
+        ->check(numberWhere<std::int64_t>("an integer", [](std::int64_t) { return true; }));
+    app.add_option("--sumo-option",
+                   "extra SUMO options, split into words as a shell would\n"
+                   "(quotes, $VARIABLES; no command substitution); repeatable;\n"
+                   "words after -- reach SUMO without splitting")
+        ->type_name("\"...\"")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->each([this](const std::string& text) {
+            for (std::string& word : splitSumoOption(text)) sumoOptions.push_back(std::move(word));
+        });
 
-  --sumocfg FILE       SUMO configuration to load
-  --story FILE.py      storyboard script defining createStories(board)
-  --events FILE.jsonl  write storyboard events as JSON Lines
-  --end SECONDS        stop after the step reaching this time (default: the sumocfg's end)
-  --seed N             seed for SUMO (--seed) and the storyboard's random generators
-  --sumo-option "..."  extra SUMO options, split into words as a shell would; repeatable
-  --services FILE.xml  per-vehicle services (Artery's services file format)
-  --plugin LIB.so      load service modules built with sbsim_add_service_module; repeatable
-  --middleware-interval SECONDS
-                       time between service triggers (default 0.1)
-  --v2x-range METRES   broadcast range (default 500)
-  --v2x-latency SECONDS
-                       broadcast latency (default 0.001)
-  --v2x-fade-start METRES
-                       packet errors: reception certain up to here, falling linearly to 0 at
-                       the range (default: no packet errors)
-  --threads N          threads reading vehicle states after each step (default 0: all cores)
-  --no-snapshot        only step SUMO, reading no vehicle states (a baseline for benchmarks;
-                       not with --story or --services)
-  --quiet              no progress, no summary, no SUMO warnings
-  --version            print the version and exit
-  --help               print this help and exit
-)";
+    app.option_defaults()->group("Services and V2X");
+    auto* servicesOption =
+        app.add_option("--services", services, "per-vehicle C++ services (Artery's services file format)")
+            ->type_name("FILE.xml");
+    app.add_option("--plugin", plugins, "load service modules built with sbsim_add_service_module;\nrepeatable")
+        ->type_name("LIB.so")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->allow_extra_args(false);  // one library per --plugin, so a stray word is not taken for one
+    app.add_option("--middleware-interval", middlewareInterval, "time between service triggers")
+        ->type_name("SECONDS")
+        ->check(seconds(false))
+        ->capture_default_str();
+    app.add_option("--v2x-range", v2xRange, "broadcast range")
+        ->type_name("METRES")
+        ->check(metres(false))
+        ->capture_default_str();
+    app.add_option("--v2x-latency", v2xLatency, "broadcast latency")
+        ->type_name("SECONDS")
+        ->check(seconds(true))
+        ->capture_default_str();
+    app.add_option("--v2x-fade-start", v2xFadeStart,
+                   "packet errors: reception certain up to here, falling linearly\n"
+                   "to 0 at the range, at most --v2x-range (default: no packet errors)")
+        ->type_name("METRES")
+        ->check(metres(true));
+
+    app.option_defaults()->group("Run and output");
+    app.add_option("--events", events, "write storyboard events as JSON Lines")->type_name("FILE.jsonl");
+    app.add_option("--threads", threads, "threads reading vehicle states after each step (0: all\ncores)")
+        ->type_name("N")
+        ->check(numberWhere<unsigned>("0 (all cores) to 256", [](unsigned n) { return n <= 256; }))
+        ->capture_default_str();
+    app.add_flag("--no-snapshot", noSnapshot,
+                 "only step SUMO, reading no vehicle states (a baseline for\n"
+                 "benchmarks; not with --story or --services: they read them)")
+        ->excludes(storyOption)
+        ->excludes(servicesOption);
+    app.add_flag("-q,--quiet", quiet, "no progress, no summary, no SUMO warnings");
+
+    // Options declared later (a subcommand's) start from CLI11's defaults again.
+    app.option_defaults()->group("Options")->multi_option_policy(CLI::MultiOptionPolicy::Throw);
 }
 
-CommandLine CommandLine::parse(const std::vector<std::string>& args) {
-    CommandLine cl;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        std::string option = args[i];
-        std::optional<std::string> inlineValue;
-        if (const auto eq = option.find('='); option.rfind("--", 0) == 0 && eq != std::string::npos) {
-            inlineValue = option.substr(eq + 1);
-            option.resize(eq);
+void CommandLine::complete(std::vector<std::string> sumoArgs) {
+    if (const auto file = takeConfigurationFile(sumoArgs)) {
+        if (sumocfg) {
+            throw UsageError(fmt::format("--sumocfg: given twice: '{}', and '{}' with -c after --", sumocfg->string(),
+                                         file->string()));
         }
-        const auto value = [&]() -> std::string {
-            if (inlineValue) return *inlineValue;
-            if (i + 1 >= args.size()) throw UsageError("option " + option + " needs a value");
-            return args[++i];
-        };
-        const auto flag = [&] {
-            if (inlineValue) throw UsageError("option " + option + " takes no value");
-            return true;
-        };
-        if (option == "--sumocfg" || option == "-c") {
-            cl.sumocfg = value();
-        } else if (option == "--story") {
-            cl.story = value();
-        } else if (option == "--events") {
-            cl.events = value();
-        } else if (option == "--end") {
-            cl.end = duration(option, parseNumber<double>(option, value()), true);
-        } else if (option == "--seed") {
-            cl.seed = parseNumber<std::int64_t>(option, value());
-        } else if (option == "--sumo-option") {
-            const std::string text = value();
-            try {
-                for (std::string& w : splitShellWords(text)) cl.sumoOptions.push_back(std::move(w));
-            } catch (const std::invalid_argument& e) {
-                throw UsageError(std::string("option --sumo-option: ") + e.what());
-            }
-        } else if (option == "--services") {
-            cl.services = value();
-        } else if (option == "--plugin") {
-            cl.plugins.emplace_back(value());
-        } else if (option == "--middleware-interval") {
-            cl.middlewareInterval = duration(option, parseNumber<double>(option, value()), false);
-        } else if (option == "--v2x-range") {
-            cl.v2xRange = positive(option, parseNumber<double>(option, value()));
-        } else if (option == "--v2x-latency") {
-            cl.v2xLatency = duration(option, parseNumber<double>(option, value()), true);
-        } else if (option == "--v2x-fade-start") {
-            cl.v2xFadeStart = parseNumber<double>(option, value());
-            if (!std::isfinite(*cl.v2xFadeStart) || *cl.v2xFadeStart < 0)
-                throw UsageError("option --v2x-fade-start expects metres >= 0");
-        } else if (option == "--threads") {
-            const auto threads = parseNumber<std::int64_t>(option, value());
-            if (threads < 0 || threads > 256) throw UsageError("option --threads expects 0 (all cores) to 256");
-            cl.threads = static_cast<unsigned>(threads);
-        } else if (option == "--no-snapshot") {
-            cl.noSnapshot = flag();
-        } else if (option == "--quiet" || option == "-q") {
-            cl.quiet = flag();
-        } else if (option == "--help" || option == "-h") {
-            cl.help = flag();
-        } else if (option == "--version") {
-            cl.version = flag();
-        } else if (option.rfind("-", 0) == 0) {
-            throw UsageError("unknown option '" + option + "' (see sbsim --help)");
-        } else {
-            throw UsageError("unexpected argument '" + option + "' (see sbsim --help)");
-        }
+        sumocfg = *file;
     }
-    if (cl.noSnapshot && (cl.story || cl.services)) {
-        throw UsageError("option --no-snapshot cannot be combined with --story or --services: they read the snapshot");
+    sumoOptions.insert(sumoOptions.end(), sumoArgs.begin(), sumoArgs.end());
+    if (v2xFadeStart && *v2xFadeStart > v2xRange) {
+        throw UsageError(fmt::format("--v2x-fade-start: the fade start ({:g} m) must not exceed --v2x-range ({:g} m)",
+                                     *v2xFadeStart, v2xRange));
     }
-    if (cl.v2xFadeStart && *cl.v2xFadeStart > cl.v2xRange) {
-        char text[160];
-        std::snprintf(text, sizeof text,
-                      "option --v2x-fade-start: the fade start (%g m) must not exceed --v2x-range (%g m)",
-                      *cl.v2xFadeStart, cl.v2xRange);
-        throw UsageError(text);
-    }
-    return cl;
 }
 
 }  // namespace sbsim::app

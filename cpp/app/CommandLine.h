@@ -3,25 +3,26 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace sbsim::app {
 
-/// Bad command-line input; the program prints the message and exits with code 2.
-class UsageError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
+/// The options of a run: those of `sbsim [options]`, also accepted after a subcommand's name.
 struct CommandLine {
+    /// SUMO's own default seed; the storyboard's when --seed is not given.
+    static constexpr std::int64_t kDefaultSeed = 23423;
+
     std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
     std::optional<std::filesystem::path> story;
     std::optional<std::filesystem::path> events;
     std::optional<double> end;  ///< seconds
     std::optional<std::int64_t> seed;
-    std::vector<std::string> sumoOptions;           ///< already split into words
+    std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`
     std::optional<std::filesystem::path> services;  ///< Artery-format services file
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
     double middlewareInterval = 0.1;                ///< s between service triggers
@@ -29,14 +30,15 @@ struct CommandLine {
     double v2xLatency = 0.001;                      ///< s
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors
     bool quiet = false;
-    bool help = false;
-    bool version = false;
     unsigned threads = 0;     ///< threads reading the per-step snapshot; 0 = all cores
     bool noSnapshot = false;  ///< step SUMO only (a benchmark baseline)
 
-    /// Parses argv (without the program name). Throws UsageError naming the problem.
-    static CommandLine parse(const std::vector<std::string>& args);
-    static std::string usage();
+    /// Declares the options on `app`, bound to this object's fields (which must outlive parsing),
+    /// with their checks, help text and defaults.
+    void declareOptions(CLI::App& app);
+    /// After parsing: appends `sumoArgs` (the words after `--`) to the SUMO words, taking SUMO's
+    /// `-c FILE` from them as the sumocfg, and checks what single options cannot. Throws UsageError.
+    void complete(std::vector<std::string> sumoArgs);
 };
 
 }  // namespace sbsim::app

@@ -1,6 +1,7 @@
 #include "sbsim/app/PluginLibrary.h"
 
 #include <dlfcn.h>
+#include <fmt/format.h>
 
 #include <string>
 
@@ -12,7 +13,7 @@ PluginLibrary::PluginLibrary(const std::filesystem::path& path) {
     handle_ = dlopen(resolved.c_str(), RTLD_NOW | RTLD_GLOBAL);
     if (handle_ == nullptr) {
         const char* error = dlerror();
-        throw std::runtime_error(error != nullptr ? error : ("cannot load " + path.string()));
+        throw std::runtime_error(error != nullptr ? error : fmt::format("cannot load {}", path.string()));
     }
 }
 

@@ -1,5 +1,8 @@
 #include "sbsim/app/ProgressDisplay.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -10,9 +13,7 @@ namespace sbsim::app {
 namespace {
 std::string clockText(double seconds) {
     const long s = std::lround(std::max(0.0, seconds));
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
-    return buf;
+    return fmt::format("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60);
 }
 }  // namespace
 
@@ -31,20 +32,18 @@ void ProgressDisplay::receiveSignal(kernel::Module&, kernel::SignalId, const ker
 
     const double wall = std::chrono::duration<double>(now - start_).count();
     const double simulated = (snapshot->time() - *firstTime_).seconds();
-    std::string line = "t=" + snapshot->time().str() + " s";
-    if (end_) line += " / " + end_->str() + " s";
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "  running %d  %.0f steps/s", snapshot->size(), wall > 0 ? steps_ / wall : 0.0);
-    line += buf;
+    std::string line = fmt::format("t={} s", snapshot->time().str());
+    if (end_) line += fmt::format(" / {} s", end_->str());
+    line += fmt::format("  running {}  {:.0f} steps/s", snapshot->size(), wall > 0 ? steps_ / wall : 0.0);
     if (end_ && simulated > 0) line += "  ETA " + clockText((*end_ - snapshot->time()).seconds() * wall / simulated);
-    std::fprintf(out_, "\r\033[K%s", line.c_str());
+    fmt::print(out_, "\r\033[K{}", line);
     std::fflush(out_);
     drawn_ = true;
 }
 
 void ProgressDisplay::clear() {
     if (!drawn_) return;
-    std::fprintf(out_, "\r\033[K");
+    fmt::print(out_, "\r\033[K");
     std::fflush(out_);
     drawn_ = false;
 }

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import signal
 import subprocess
 import time
@@ -9,7 +10,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from sbsim_helpers import assert_no_crash, env_without, stable_stdout, write_story
+from sbsim_helpers import REPO, assert_bad_input, assert_no_crash, env_without, stable_stdout, write_story
 from storyboard.runner import executable, run
 
 SUMMARY_KEYS = ("end", "steps", "vehicles seen", "peak running", "wall time", "real-time factor")
@@ -55,6 +56,90 @@ def test_help_lists_the_options() -> None:
     assert result.returncode == 0, result.stderr
     for option in ("--sumocfg", "--story", "--events", "--end", "--seed", "--sumo-option", "--quiet", "--version"):
         assert option in result.stdout, f"--help does not mention {option}"
+
+
+#: Every option of sbsim [options], its short form, and the default --help names for it (None: none shown).
+OPTIONS: dict[str, tuple[str | None, str | None]] = {
+    "--sumocfg": ("-c", None),
+    "--story": (None, None),
+    "--end": (None, None),
+    "--seed": (None, None),
+    "--sumo-option": (None, None),
+    "--services": (None, None),
+    "--plugin": (None, None),
+    "--middleware-interval": (None, "0.1"),
+    "--v2x-range": (None, "500"),
+    "--v2x-latency": (None, "0.001"),
+    "--v2x-fade-start": (None, None),
+    "--events": (None, None),
+    "--threads": (None, "0"),
+    "--no-snapshot": (None, None),
+    "--quiet": ("-q", None),
+    "--version": (None, None),
+    "--help": ("-h", None),
+}
+
+
+def help_entries(text: str) -> dict[str, tuple[str | None, str]]:
+    """--help's option entries: long name -> (short name, text including its continuation lines)."""
+    entries: dict[str, tuple[str | None, str]] = {}
+    current = None
+    for line in text.splitlines():
+        m = re.match(r"  (?:(-\w),)?(--[\w-]+)(?: \S+)?\s{2,}(\S.*)$", line)
+        if m:
+            current = m.group(2)
+            assert current not in entries, f"{current} listed twice"
+            entries[current] = (m.group(1), m.group(3))
+        elif current and line.startswith(" " * 20) and line.strip():
+            short, description = entries[current]
+            entries[current] = (short, f"{description} {line.strip()}")
+        else:
+            current = None
+    return entries
+
+
+def readme_option_rows() -> dict[str, list[str]]:
+    """The README's option table: long option -> its cells (option, meaning, default)."""
+    section = (REPO / "README.md").read_text(encoding="utf-8").split("## The program", 1)[1].split("\n## ", 1)[0]
+    rows: dict[str, list[str]] = {}
+    for line in section.splitlines():
+        if line.startswith("| `"):
+            cells = [c.strip() for c in line.strip("|").split("|")]
+            rows[re.findall(r"--[\w-]+", cells[0])[0]] = cells
+    return rows
+
+
+def test_help_lists_every_option_with_its_meaning_and_default() -> None:
+    result = run(extra=["--help"])
+    assert result.returncode == 0, result.stderr
+    entries = help_entries(result.stdout)
+    assert set(entries) == set(OPTIONS)
+    for option, (short, default) in OPTIONS.items():
+        help_short, description = entries[option]
+        assert help_short == short, f"{option}: short form {help_short!r}, expected {short!r}"
+        assert len(description) > 10, f"{option} has no meaning in --help: {description!r}"
+        if default is not None:
+            assert description.endswith(f"(default: {default})"), f"{option}: {description!r}"
+    # The words after -- are explained too.
+    assert "[-- SUMO-OPTION...]" in result.stdout
+    assert "-c FILE" in result.stdout.split("Words after --", 1)[1]
+
+
+def test_readme_option_table_matches_the_help() -> None:
+    rows = readme_option_rows()
+    assert set(rows) == set(OPTIONS)
+    for option, (short, default) in OPTIONS.items():
+        if short is not None:
+            assert f"`{short}`" in rows[option][0], f"README lacks {short} for {option}"
+        if default is not None:
+            assert rows[option][2] == default, f"README's default for {option}: {rows[option][2]!r}"
+
+
+def test_help_names_every_default_the_readme_names() -> None:
+    entries = help_entries(run(extra=["--help"]).stdout)
+    for option, cells in readme_option_rows().items():
+        if cells[2] not in ("", "none", "off"):
+            assert "(default: " in entries[option][1], f"--help does not give {option}'s default ({cells[2]})"
 
 
 def test_quiet_prints_no_summary(trips_cfg: Path) -> None:
@@ -198,6 +283,62 @@ def test_sumo_option_overrides_the_sumocfg_end(trips_cfg: Path) -> None:
     result = run(trips_cfg, sumo_options=["--end 40"])
     assert result.returncode == 0, result.stderr
     assert result.summary()["steps"] == "40"
+
+
+def test_sumo_option_double_quotes_and_backslashes(trips_cfg: Path, tmp_path: Path) -> None:
+    fcd, trip = tmp_path / "f c d.xml", tmp_path / "trip info.xml"
+    escaped = str(trip).replace(" ", "\\ ")
+    result = run(trips_cfg, end=20, sumo_options=[f'--fcd-output "{fcd}"', f"--tripinfo-output {escaped}"])
+    assert result.returncode == 0, result.stderr
+    assert fcd.is_file()
+    assert trip.is_file()
+
+
+# --------------------------------------------------------------------------- words after --
+
+
+def test_words_after_double_dash_go_to_sumo_as_they_are(trips_cfg: Path, tmp_path: Path) -> None:
+    # No shell splitting after --: a space and a quote stay in the file name.
+    directory = tmp_path / "it's here"
+    directory.mkdir()
+    fcd = directory / "f c d.xml"
+    result = run(end=60, extra=["--", "-c", str(trips_cfg), "--begin", "10", "--fcd-output", str(fcd)])
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines()[0].endswith(f": {trips_cfg.name}")
+    assert result.summary()["steps"] == "50"
+    times = [float(ts.attrib["time"]) for ts in ET.parse(fcd).getroot().iter("timestep")]
+    assert times and min(times) == 10 and max(times) < 60
+
+
+@pytest.mark.parametrize("spelling", [["-c"], ["--configuration-file"], ["--configuration-file="]])
+def test_configuration_file_after_double_dash_is_the_sumocfg(trips_cfg: Path, spelling: list[str]) -> None:
+    words = [spelling[0] + str(trips_cfg)] if spelling[0].endswith("=") else [*spelling, str(trips_cfg)]
+    result = run(end=20, extra=["--", "--begin", "5", *words])
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines()[0].endswith(f": {trips_cfg.name}")
+    assert result.summary()["steps"] == "15"
+
+
+def test_double_dash_after_sumocfg_and_sumo_option(trips_cfg: Path, tmp_path: Path) -> None:
+    trip = tmp_path / "trip.xml"
+    result = run(trips_cfg, end=40, sumo_options=["--begin 10"], extra=["--", "--tripinfo-output", str(trip)])
+    assert result.returncode == 0, result.stderr
+    assert result.summary()["steps"] == "30"
+    assert trip.is_file()
+
+
+def test_sumocfg_given_twice() -> None:
+    line = assert_bad_input(run("a.sumocfg", extra=["--", "-c", "b.sumocfg"]), "--sumocfg", "a.sumocfg", "b.sumocfg")
+    assert "twice" in line
+
+
+def test_configuration_file_after_double_dash_without_a_file() -> None:
+    assert_bad_input(run(extra=["--", "--begin", "5", "-c"]), "configuration-file")
+
+
+def test_words_after_double_dash_are_not_sbsims(trips_cfg: Path) -> None:
+    # --story after -- is SUMO's (unknown to it), not sbsim's: SUMO's refusal names it.
+    assert_bad_input(run(trips_cfg, extra=["--", "--story", "x.py"]), "story", "grid.sumocfg")
 
 
 # --------------------------------------------------------------------------- installation

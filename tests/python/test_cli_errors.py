@@ -66,12 +66,44 @@ def test_unknown_option() -> None:
     assert_bad_input(run(extra=["--no-such-option"]), "--no-such-option")
 
 
+@pytest.mark.parametrize("option", ["--no-such-option=3", "-x", "--Sumocfg"])
+def test_unknown_option_spellings(option: str) -> None:
+    assert_bad_input(run(extra=[option]), option)
+
+
 def test_unexpected_argument() -> None:
     assert_bad_input(run(extra=["stray"]), "stray")
 
 
 def test_option_missing_its_value() -> None:
     assert_bad_input(run(extra=["--sumocfg"]), "--sumocfg")
+
+
+@pytest.mark.parametrize("option", ["--story", "--end", "--plugin", "--sumo-option", "--threads"])
+def test_options_missing_their_value(option: str) -> None:
+    assert_bad_input(run(extra=[option]), option)
+
+
+@pytest.mark.parametrize(
+    ("option", "value"),
+    [
+        ("--threads", "300"),
+        ("--threads", "-1"),
+        ("--threads", "two"),
+        ("--seed", "1.5"),
+        ("--seed", "99999999999999999999"),
+        ("--v2x-latency", "soon"),
+        ("--v2x-fade-start", "nan"),
+        ("--end", "1e10"),
+    ],
+)
+def test_bad_value_names_its_option(trips_cfg: Path, option: str, value: str) -> None:
+    assert_bad_input(run(trips_cfg, extra=[option, value]), option, f"'{value}'")
+
+
+@pytest.mark.parametrize("other", [["--story", "s.py"], ["--services", "services.xml"]])
+def test_no_snapshot_with_a_reader_of_the_snapshot(trips_cfg: Path, other: list[str]) -> None:
+    assert_bad_input(run(trips_cfg, extra=["--no-snapshot", *other]), "--no-snapshot", other[0])
 
 
 @pytest.mark.parametrize("value", ["abc", "-5", "nan", "inf", "", "10s"])
@@ -86,6 +118,19 @@ def test_bad_seed_value(trips_cfg: Path) -> None:
 def test_unterminated_quote_in_sumo_option(trips_cfg: Path) -> None:
     line = assert_bad_input(run(trips_cfg, sumo_options=['--tripinfo-output "unterminated']), "--sumo-option")
     assert "quote" in line
+
+
+def test_sumo_option_runs_no_command(trips_cfg: Path, tmp_path: Path) -> None:
+    marker = tmp_path / "ran"
+    for text in (f"--fcd-output $(touch {marker})", f"--fcd-output `touch {marker}`"):
+        line = assert_bad_input(run(trips_cfg, sumo_options=[text]), "--sumo-option", "command substitution")
+        assert text in line
+    assert not marker.exists()
+
+
+@pytest.mark.parametrize(("word", "needle"), [("a;b.xml", "special character"), ("$SBSIM_NO_SUCH_VARIABLE", "unset")])
+def test_sumo_option_shell_errors(trips_cfg: Path, tmp_path: Path, word: str, needle: str) -> None:
+    assert_bad_input(run(trips_cfg, sumo_options=[f"--fcd-output {tmp_path}/{word}"]), "--sumo-option", needle)
 
 
 def test_unknown_sumo_option(trips_cfg: Path) -> None:
