@@ -1,5 +1,5 @@
 # Locates every dependency from where the brief says it comes from: the Python packages
-# (pybind11, eclipse-sumo) through the Python interpreter being built for; Eigen,
+# (pybind11, eclipse-sumo) through the Python interpreter being built for; Eigen, {fmt},
 # nlohmann-json and GoogleTest from the system.
 
 find_package(Python 3.11 REQUIRED COMPONENTS Interpreter Development.Embed)
@@ -35,7 +35,8 @@ get_filename_component(SBSIM_SUMO_LIBDIR "${SBSIM_SUMO_LIBRARY}" DIRECTORY)
 get_filename_component(SBSIM_SUMO_HOME "${SBSIM_SUMO_LIBDIR}" DIRECTORY)
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
-# Only behind the layers' sources, never in a public header: libsbsim's users do not need it.
+# Both only behind the layers' sources, never in a public header: libsbsim's users need neither.
+find_package(fmt 9 REQUIRED)
 find_package(nlohmann_json 3.11 REQUIRED)
 
 if(SBSIM_BUILD_TESTS)
