@@ -1,6 +1,6 @@
 # Locates every dependency from where the brief says it comes from: the Python packages
-# (pybind11, eclipse-sumo) through the Python interpreter being built for, Eigen, CLI11, {fmt} and
-# GoogleTest from the system.
+# (pybind11, eclipse-sumo) through the Python interpreter being built for; Eigen, CLI11, {fmt},
+# nlohmann-json and GoogleTest from the system.
 
 find_package(Python 3.11 REQUIRED COMPONENTS Interpreter Development.Embed)
 
@@ -35,9 +35,10 @@ get_filename_component(SBSIM_SUMO_LIBDIR "${SBSIM_SUMO_LIBRARY}" DIRECTORY)
 get_filename_component(SBSIM_SUMO_HOME "${SBSIM_SUMO_LIBDIR}" DIRECTORY)
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
-# The program's command line (header-only) and its formatted output.
-find_package(CLI11 2.1 CONFIG REQUIRED)
+# Used only behind the sources, never in a public header: libsbsim's users need none of them.
+find_package(CLI11 2.1 CONFIG REQUIRED)  # the program's command line (header-only)
 find_package(fmt 9 CONFIG REQUIRED)
+find_package(nlohmann_json 3.11 CONFIG REQUIRED)
 
 if(SBSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)

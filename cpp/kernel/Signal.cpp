@@ -1,5 +1,7 @@
 #include "sbsim/kernel/Signal.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <deque>
 #include <mutex>
@@ -32,7 +34,7 @@ const std::string& signalName(SignalId id) {
     Registry& r = registry();
     const std::lock_guard lock(r.mutex);
     if (id < 0 || id >= static_cast<SignalId>(r.names.size())) {
-        throw std::out_of_range("unknown signal id " + std::to_string(id));
+        throw std::out_of_range(fmt::format("unknown signal id {}", id));
     }
     return r.names[id];
 }

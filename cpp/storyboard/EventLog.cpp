@@ -1,73 +1,60 @@
 #include "sbsim/storyboard/EventLog.h"
 
-#include <cstdio>
+#include <nlohmann/json.hpp>
 
 namespace sbsim::storyboard {
 
-std::string EventLog::quote(std::string_view s) {
-    std::string out;
-    out.reserve(s.size() + 2);
-    out.push_back('"');
-    for (const char c : s) {
-        switch (c) {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\r':
-                out += "\\r";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-                    out += buf;
-                } else {
-                    out.push_back(c);
-                }
-        }
-    }
-    out.push_back('"');
-    return out;
-}
+namespace {
 
-std::string EventLog::seconds(kernel::SimTime t) {
+// Ordered: every line lists t, type, story, vehicle first, then what the event type adds.
+using Event = nlohmann::ordered_json;
+
+// Seconds rounded to the millisecond: an integer on whole seconds, else ms / 1000, which the
+// shortest round-trip printing turns into e.g. 12.3 or 7.001.
+Event seconds(kernel::SimTime t) {
     constexpr kernel::SimTime::rep kPerMs = 1'000'000;
     const kernel::SimTime::rep raw = t.raw();
     const kernel::SimTime::rep ms = raw >= 0 ? (raw + kPerMs / 2) / kPerMs : -((-raw + kPerMs / 2) / kPerMs);
-    return kernel::SimTime::fromMilliseconds(ms).str();
+    if (ms % 1000 == 0) return ms / 1000;
+    return static_cast<double>(ms) / 1000.0;
 }
 
-void EventLog::begin(kernel::SimTime t, std::string_view type, std::string_view story, std::string_view vehicle) {
-    out_ << "{\"t\": " << seconds(t) << ", \"type\": \"" << type << "\", \"story\": " << quote(story)
-         << ", \"vehicle\": " << quote(vehicle);
+// Key by key rather than from an initializer list, which builds a temporary array per pair and
+// made each line twice as slow.
+Event event(kernel::SimTime t, std::string_view type, std::string_view story, std::string_view vehicle) {
+    Event e;
+    e["t"] = seconds(t);
+    e["type"] = type;
+    e["story"] = story;
+    e["vehicle"] = vehicle;
+    return e;
 }
+
+// One line. Invalid UTF-8 (story names and causes come from scripts, ids from SUMO files) is
+// replaced rather than thrown mid-run.
+void write(std::ostream& out, const Event& e) {
+    out << e.dump(-1, ' ', false, Event::error_handler_t::replace) << '\n';
+}
+
+}  // namespace
 
 void EventLog::activate(kernel::SimTime t, std::string_view story, std::string_view vehicle) {
-    begin(t, "activate", story, vehicle);
-    out_ << "}\n";
+    write(out_, event(t, "activate", story, vehicle));
 }
 
 void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::string_view vehicle,
                           std::string_view reason) {
-    begin(t, "deactivate", story, vehicle);
-    out_ << ", \"reason\": " << quote(reason) << "}\n";
+    Event e = event(t, "deactivate", story, vehicle);
+    e["reason"] = reason;
+    write(out_, e);
 }
 
 void EventLog::signal(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view cause,
                       const std::vector<std::string>& others) {
-    begin(t, "signal", story, vehicle);
-    out_ << ", \"cause\": " << quote(cause) << ", \"others\": [";
-    for (std::size_t i = 0; i < others.size(); ++i) out_ << (i ? ", " : "") << quote(others[i]);
-    out_ << "]}\n";
+    Event e = event(t, "signal", story, vehicle);
+    e["cause"] = cause;
+    e["others"] = others;
+    write(out_, e);
 }
 
 }  // namespace sbsim::storyboard

@@ -11,8 +11,9 @@
 namespace sbsim::storyboard {
 
 /// Writes storyboard events as JSON Lines (one object per line, flushed at each step's end), e.g.
-/// {"t": 12.3, "type": "activate", "story": "rain", "vehicle": "flow0.1"}. Times are rounded to
-/// 1 ms. pandas.read_json(path, lines=True) reads the file.
+/// {"t":12.3,"type":"activate","story":"rain","vehicle":"flow0.1"}. Times are rounded to 1 ms.
+/// Bytes that are not UTF-8 in names and causes become U+FFFD. pandas.read_json(path, lines=True)
+/// reads the file.
 class SBSIM_API EventLog {
 public:
     explicit EventLog(std::ostream& out) : out_(out) {}
@@ -23,13 +24,7 @@ public:
                 const std::vector<std::string>& others);
     void flush() { out_.flush(); }
 
-    /// `s` as a JSON string literal, quotes included.
-    static std::string quote(std::string_view s);
-    /// Seconds rounded to the millisecond, shortest form ("12.3", "0", "7.001").
-    static std::string seconds(kernel::SimTime t);
-
 private:
-    void begin(kernel::SimTime t, std::string_view type, std::string_view story, std::string_view vehicle);
     std::ostream& out_;
 };
 

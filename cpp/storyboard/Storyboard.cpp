@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/Storyboard.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
@@ -91,7 +93,7 @@ void Storyboard::collectConditions(Condition& root) {
 
 void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
-    if (!story->explicitName_) story->name_ = "story" + std::to_string(stories_.size());
+    if (!story->explicitName_) story->name_ = fmt::format("story{}", stories_.size());
     collectConditions(story->condition());
     pure_.push_back(story->condition().pure());
     if (pure_.back()) pureStories_.push_back(stories_.size());

@@ -1,5 +1,7 @@
 #include "sbsim/traffic/NeighbourGrid.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <bit>
 #include <limits>
@@ -11,8 +13,8 @@ namespace sbsim::traffic {
 
 void NeighbourGrid::build(const VehicleSnapshot& snapshot, double cellSize) {
     if (!(cellSize > 0) || !std::isfinite(cellSize)) {
-        throw std::invalid_argument("neighbour grid: cell size must be finite and > 0, not " +
-                                    std::to_string(cellSize));
+        throw std::invalid_argument(
+            fmt::format("neighbour grid: cell size must be finite and > 0, not {:f}", cellSize));
     }
     snapshot_ = &snapshot;
     cellSize_ = cellSize;

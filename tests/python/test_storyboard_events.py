@@ -254,10 +254,10 @@ def test_times_are_exact_with_a_fractional_step(trips_cfg: Path, tmp_path: Path)
     )
     text = run.story.with_name("story.events.jsonl").read_text()
     assert text.splitlines() == [
-        '{"t": 0.3, "type": "activate", "story": "instant", "vehicle": "veh0"}',
-        '{"t": 0.4, "type": "deactivate", "story": "instant", "vehicle": "veh0", "reason": "condition"}',
-        '{"t": 1.3, "type": "activate", "story": "window", "vehicle": "veh0"}',
-        '{"t": 1.6, "type": "deactivate", "story": "window", "vehicle": "veh0", "reason": "condition"}',
+        '{"t":0.3,"type":"activate","story":"instant","vehicle":"veh0"}',
+        '{"t":0.4,"type":"deactivate","story":"instant","vehicle":"veh0","reason":"condition"}',
+        '{"t":1.3,"type":"activate","story":"window","vehicle":"veh0"}',
+        '{"t":1.6,"type":"deactivate","story":"window","vehicle":"veh0","reason":"condition"}',
     ]
     assert run.result.summary()["steps"] == "30"
 

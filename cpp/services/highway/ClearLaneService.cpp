@@ -1,5 +1,7 @@
 #include "sbsim/services/highway/ClearLaneService.h"
 
+#include <fmt/format.h>
+
 #include "sbsim/services/ServiceRegistry.h"
 #include "sbsim/services/highway/ClearLaneMessage.h"
 
@@ -15,7 +17,7 @@ void ClearLaneService::indicate(const V2xMessage& message) {
     const auto self = selfIndex();
     if (!self || snapshot().roadId(*self) != clear->road()) return;
     const std::string& lane = snapshot().laneId(*self);
-    if (lane == clear->road() + "_" + std::to_string(clear->lane())) return;
+    if (lane == fmt::format("{}_{}", clear->road(), clear->lane())) return;  // SUMO's lane id: <edge>_<index>
     vehicle().setMaxSpeed(speed_);
     slowed_ = true;
 }

@@ -1,12 +1,14 @@
 #include "sbsim/storyboard/conditions/LimitCondition.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 #include <string>
 
 namespace sbsim::storyboard {
 
 LimitCondition::LimitCondition(std::int64_t limit) : limit_(static_cast<std::uint64_t>(limit)) {
-    if (limit < 0) throw std::invalid_argument("LimitCondition: limit must be >= 0, not " + std::to_string(limit));
+    if (limit < 0) throw std::invalid_argument(fmt::format("LimitCondition: limit must be >= 0, not {}", limit));
 }
 
 ConditionResult LimitCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {

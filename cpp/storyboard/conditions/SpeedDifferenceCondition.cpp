@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -12,8 +14,8 @@ SpeedDifferenceCondition::SpeedDifferenceCondition(Direction direction, double d
     : direction_(direction), delta_(delta), distance_(distance) {
     if (std::isnan(delta_)) throw std::invalid_argument("SpeedDifferenceCondition: delta must not be NaN");
     if (distance_ && !(*distance_ >= 0 && std::isfinite(*distance_))) {
-        throw std::invalid_argument("SpeedDifferenceCondition: distance must be finite and >= 0, not " +
-                                    std::to_string(*distance_));
+        throw std::invalid_argument(
+            fmt::format("SpeedDifferenceCondition: distance must be finite and >= 0, not {:f}", *distance_));
     }
 }
 

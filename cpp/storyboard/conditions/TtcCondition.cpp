@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,10 +16,10 @@ using geometry::MovingFootprint;
 
 TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(distance) {
     if (!(ttc_ > 0 && std::isfinite(ttc_))) {
-        throw std::invalid_argument("TtcCondition: ttc must be finite and > 0, not " + std::to_string(ttc_));
+        throw std::invalid_argument(fmt::format("TtcCondition: ttc must be finite and > 0, not {:f}", ttc_));
     }
     if (!(distance_ >= 0 && std::isfinite(distance_))) {
-        throw std::invalid_argument("TtcCondition: distance must be finite and >= 0, not " + std::to_string(distance_));
+        throw std::invalid_argument(fmt::format("TtcCondition: distance must be finite and >= 0, not {:f}", distance_));
     }
 }
 

@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -8,7 +10,7 @@ namespace sbsim::storyboard {
 
 SpeedEffect::SpeedEffect(double mps) : mps_(mps) {
     if (!std::isfinite(mps) || mps < 0) {
-        throw std::invalid_argument("SpeedEffect needs a speed >= 0 in m/s, got " + std::to_string(mps));
+        throw std::invalid_argument(fmt::format("SpeedEffect needs a speed >= 0 in m/s, got {:f}", mps));
     }
 }
 

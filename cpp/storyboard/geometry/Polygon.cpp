@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/geometry/Polygon.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -8,7 +10,7 @@ namespace sbsim::storyboard::geometry {
 
 Polygon::Polygon(std::vector<Eigen::Vector2d> vertices) : vertices_(std::move(vertices)) {
     if (vertices_.size() < 3) {
-        throw std::invalid_argument("a polygon needs at least 3 vertices, got " + std::to_string(vertices_.size()));
+        throw std::invalid_argument(fmt::format("a polygon needs at least 3 vertices, got {}", vertices_.size()));
     }
     min_ = max_ = vertices_.front();
     for (const Eigen::Vector2d& v : vertices_) {

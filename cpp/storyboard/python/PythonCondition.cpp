@@ -2,6 +2,8 @@
 
 #include <pybind11/numpy.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "sbsim/storyboard/python/ScriptContext.h"
@@ -27,8 +29,8 @@ void PythonCondition::prepare(const EvaluationContext& ctx) {
         PyErr_Clear();  // ensure() leaves a conversion error behind for None and the like
         if (!mask || mask.ndim() != 1 || mask.shape(0) != ctx.snapshot().size()) {
             throwContractError(py::cast(static_cast<const Condition*>(this)),
-                               className(this) + ".test_all must return one boolean per vehicle (" +
-                                   std::to_string(ctx.snapshot().size()) + " this step)");
+                               fmt::format("{}.test_all must return one boolean per vehicle ({} this step)",
+                                           className(this), ctx.snapshot().size()));
         }
         mask_.assign(mask.data(), mask.data() + mask.shape(0));
     } catch (py::error_already_set& e) {

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ThrownMessage.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/Signal.h"
 #include "sbsim/kernel/Simulation.h"
@@ -70,6 +71,7 @@ TEST(Signal, RegisterSignalGivesOneStableIdPerName) {
     EXPECT_EQ(signalName(b), "test.beta");
     EXPECT_THROW(signalName(-1), std::out_of_range);
     EXPECT_THROW(signalName(1'000'000), std::out_of_range);
+    EXPECT_EQ(testing_support::thrownMessage([] { signalName(-1); }), "unknown signal id -1");
 }
 
 TEST(Signal, SignalNameStaysValidWhileMoreSignalsAreRegistered) {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "TestPrinters.h"
+#include "ThrownMessage.h"
 #include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::kernel {
@@ -52,6 +53,11 @@ TEST(SimTime, FromSecondsOutOfRangeThrows) {
     EXPECT_THROW(SimTime::fromSeconds(-std::numeric_limits<double>::infinity()), std::out_of_range);
     EXPECT_THROW(SimTime::fromSeconds(std::nan("")), std::out_of_range);
     EXPECT_NO_THROW(SimTime::fromSeconds(-9e9));
+    using testing_support::thrownMessage;
+    EXPECT_EQ(thrownMessage([] { SimTime::fromSeconds(-1e10); }),
+              "simulation time out of range: -10000000000.000000 s");
+    EXPECT_EQ(thrownMessage([] { SimTime::fromSeconds(std::numeric_limits<double>::infinity()); }),
+              "simulation time out of range: inf s");
 }
 
 TEST(SimTime, MillisecondsAndNanoseconds) {

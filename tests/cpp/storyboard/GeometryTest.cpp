@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ThrownMessage.h"
 #include "sbsim/storyboard/geometry/Footprint.h"
 #include "sbsim/storyboard/geometry/Polygon.h"
 
@@ -16,6 +17,10 @@ Polygon square() { return Polygon({V(0, 0), V(10, 0), V(10, 10), V(0, 10)}); }
 TEST(Polygon, RejectsFewerThanThreeVertices) {
     EXPECT_THROW(Polygon({}), std::invalid_argument);
     EXPECT_THROW(Polygon({V(0, 0), V(1, 0)}), std::invalid_argument);
+    EXPECT_EQ(testing_support::thrownMessage([] {
+                  Polygon({V(0, 0), V(1, 0)});
+              }),
+              "a polygon needs at least 3 vertices, got 2");
     EXPECT_NO_THROW(Polygon({V(0, 0), V(1, 0), V(0, 1)}));
     EXPECT_THROW(Polygon({V(0, 0), V(1, NAN), V(0, 1)}), std::invalid_argument);
 }

@@ -102,11 +102,11 @@ TEST_F(StoryboardTest, ActivatesByVehicleIdThenStoryOrderAndNamesUnnamedStories)
     board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionLess>(100.0), std::vector<EffectPtr>{}));
     step(1, {car("b", 10), car("a", 10), car("B", 1)});
     EXPECT_EQ(lines(), (std::vector<std::string>{
-                           R"({"t": 1, "type": "activate", "story": "story1", "vehicle": "B"})",
-                           R"({"t": 1, "type": "activate", "story": "fast", "vehicle": "a"})",
-                           R"({"t": 1, "type": "activate", "story": "story1", "vehicle": "a"})",
-                           R"({"t": 1, "type": "activate", "story": "fast", "vehicle": "b"})",
-                           R"({"t": 1, "type": "activate", "story": "story1", "vehicle": "b"})",
+                           R"({"t":1,"type":"activate","story":"story1","vehicle":"B"})",
+                           R"({"t":1,"type":"activate","story":"fast","vehicle":"a"})",
+                           R"({"t":1,"type":"activate","story":"story1","vehicle":"a"})",
+                           R"({"t":1,"type":"activate","story":"fast","vehicle":"b"})",
+                           R"({"t":1,"type":"activate","story":"story1","vehicle":"b"})",
                        }));
     EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 3.0);
     EXPECT_EQ(board.stories()[0]->activations(), 2u);
@@ -117,8 +117,7 @@ TEST_F(StoryboardTest, DeactivatesWhenTheConditionTurnsFalseAndRestores) {
                                                 std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "fast"));
     step(1, {car("a", 10)});
     step(2, {car("a", 4)});
-    EXPECT_EQ(lines().back(),
-              R"({"t": 2, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})");
+    EXPECT_EQ(lines().back(), R"({"t":2,"type":"deactivate","story":"fast","vehicle":"a","reason":"condition"})");
     EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 50.0);
     EXPECT_FALSE(board.isActive("a", *board.stories()[0]));
 }
@@ -133,12 +132,12 @@ TEST_F(StoryboardTest, VehiclesThatLeftAreDeactivatedFirstWithoutCommands) {
     const auto stopsBefore = commands.setSpeed.at("y").size();
     step(2, {car("a", 10)}, {"y", "x"});
     EXPECT_EQ(lines(), (std::vector<std::string>{
-                           R"({"t": 2, "type": "deactivate", "story": "s1", "vehicle": "x", "reason": "vehicle_left"})",
-                           R"({"t": 2, "type": "deactivate", "story": "s2", "vehicle": "x", "reason": "vehicle_left"})",
-                           R"({"t": 2, "type": "deactivate", "story": "s1", "vehicle": "y", "reason": "vehicle_left"})",
-                           R"({"t": 2, "type": "deactivate", "story": "s2", "vehicle": "y", "reason": "vehicle_left"})",
-                           R"({"t": 2, "type": "activate", "story": "s1", "vehicle": "a"})",
-                           R"({"t": 2, "type": "activate", "story": "s2", "vehicle": "a"})",
+                           R"({"t":2,"type":"deactivate","story":"s1","vehicle":"x","reason":"vehicle_left"})",
+                           R"({"t":2,"type":"deactivate","story":"s2","vehicle":"x","reason":"vehicle_left"})",
+                           R"({"t":2,"type":"deactivate","story":"s1","vehicle":"y","reason":"vehicle_left"})",
+                           R"({"t":2,"type":"deactivate","story":"s2","vehicle":"y","reason":"vehicle_left"})",
+                           R"({"t":2,"type":"activate","story":"s1","vehicle":"a"})",
+                           R"({"t":2,"type":"activate","story":"s2","vehicle":"a"})",
                        }));
     EXPECT_EQ(commands.setSpeed.at("y").size(), stopsBefore) << "no SUMO command for a vehicle that left";
     EXPECT_FALSE(board.isActive("x", *board.stories()[0]));
@@ -161,12 +160,11 @@ TEST_F(StoryboardTest, SignalComesRightAfterItsActivationWithSortedOthers) {
                                        std::make_shared<OthersCondition>()),
         std::vector<EffectPtr>{std::make_shared<SignalEffect>("siren on")}, "siren"));
     step(3, {car("z", 1), car("c", 1), car("a", 1)});
-    EXPECT_EQ(
-        lines(),
-        (std::vector<std::string>{
-            R"({"t": 3, "type": "activate", "story": "siren", "vehicle": "c"})",
-            R"({"t": 3, "type": "signal", "story": "siren", "vehicle": "c", "cause": "siren on", "others": ["a", "z"]})",
-        }));
+    EXPECT_EQ(lines(),
+              (std::vector<std::string>{
+                  R"({"t":3,"type":"activate","story":"siren","vehicle":"c"})",
+                  R"({"t":3,"type":"signal","story":"siren","vehicle":"c","cause":"siren on","others":["a","z"]})",
+              }));
     ASSERT_EQ(probe.signals.size(), 1u);
     EXPECT_EQ(probe.signals[0].ego, "c");
     EXPECT_EQ(probe.signals[0].story, "siren");
@@ -210,9 +208,9 @@ TEST_F(StoryboardTest, AVehicleMissingFromOneSnapshotKeepsItsStories) {
     EXPECT_TRUE(board.isActive("a", *board.stories()[0]));
     EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0}));
     step(4, {car("a", 1), car("b", 10)});
-    EXPECT_EQ(lines(),
-              (std::vector<std::string>{
-                  R"({"t": 4, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})"}));
+    EXPECT_EQ(
+        lines(),
+        (std::vector<std::string>{R"({"t":4,"type":"deactivate","story":"fast","vehicle":"a","reason":"condition"})"}));
     EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
 }
 
@@ -225,10 +223,10 @@ TEST_F(StoryboardTest, AStoryRegisteredBetweenPassesJoinsTheNextOne) {
     step(2, {car("a", 10), car("b", 1)});
     step(3, {car("a", 1), car("b", 1)});
     EXPECT_EQ(lines(), (std::vector<std::string>{
-                           R"({"t": 1, "type": "activate", "story": "fast", "vehicle": "a"})",
-                           R"({"t": 2, "type": "activate", "story": "slow", "vehicle": "b"})",
-                           R"({"t": 3, "type": "deactivate", "story": "fast", "vehicle": "a", "reason": "condition"})",
-                           R"({"t": 3, "type": "activate", "story": "slow", "vehicle": "a"})",
+                           R"({"t":1,"type":"activate","story":"fast","vehicle":"a"})",
+                           R"({"t":2,"type":"activate","story":"slow","vehicle":"b"})",
+                           R"({"t":3,"type":"deactivate","story":"fast","vehicle":"a","reason":"condition"})",
+                           R"({"t":3,"type":"activate","story":"slow","vehicle":"a"})",
                        }));
 }
 

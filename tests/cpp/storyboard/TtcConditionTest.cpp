@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "StoryboardTestSupport.h"
+#include "ThrownMessage.h"
 
 namespace sbsim::storyboard::test {
 namespace {
@@ -126,6 +127,10 @@ TEST(TtcCondition, RejectsBadParameters) {
     EXPECT_THROW(TtcCondition(std::nan("")), std::invalid_argument);
     EXPECT_THROW(TtcCondition(1, -5), std::invalid_argument);
     EXPECT_THROW(TtcCondition(1, std::numeric_limits<double>::infinity()), std::invalid_argument);
+    EXPECT_EQ(testing_support::thrownMessage([] { TtcCondition(-1.5); }),
+              "TtcCondition: ttc must be finite and > 0, not -1.500000");
+    EXPECT_EQ(testing_support::thrownMessage([] { TtcCondition(1, -5); }),
+              "TtcCondition: distance must be finite and >= 0, not -5.000000");
 }
 
 TEST(TtcCondition, ConflictEqualsSamplingEveryStep) {
