@@ -12,12 +12,12 @@
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/BundledScenario.h"
 #include "sbsim/app/Interruption.h"
-#include "sbsim/app/PluginLibrary.h"
 #include "sbsim/app/ProgressDisplay.h"
+#include "sbsim/app/RunInputs.h"
+#include "sbsim/app/Summary.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/services/Medium.h"
 #include "sbsim/services/ServiceManager.h"
-#include "sbsim/services/ServiceRegistry.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/CanvasFrame.h"
 #include "sbsim/storyboard/EventLog.h"
@@ -29,105 +29,6 @@
 namespace sbsim::app {
 
 namespace fs = std::filesystem;
-
-namespace {
-
-void requireReadableFile(const std::string& option, const fs::path& path) {
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw InputError(fmt::format("{}: no such file '{}'", option, path.string()));
-    if (fs::is_directory(path, ec)) {
-        throw InputError(fmt::format("{}: '{}' is a directory, not a file", option, path.string()));
-    }
-    if (std::ifstream(path).fail()) throw InputError(fmt::format("{}: cannot read '{}'", option, path.string()));
-}
-
-const char* endReasonText(traffic::SumoBridge::EndReason r) {
-    switch (r) {
-        case traffic::SumoBridge::EndReason::EndTime:
-            return "end time reached";
-        case traffic::SumoBridge::EndReason::NoMoreVehicles:
-            return "no more vehicles expected";
-        case traffic::SumoBridge::EndReason::Running:
-            break;
-    }
-    return "stopped";
-}
-
-std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<fs::path>& paths) {
-    std::vector<std::unique_ptr<PluginLibrary>> plugins;
-    for (const fs::path& plugin : paths) {
-        requireReadableFile("--plugin", plugin);
-        try {
-            plugins.push_back(std::make_unique<PluginLibrary>(plugin));
-        } catch (const std::exception& e) {
-            throw InputError(fmt::format("--plugin: cannot load '{}': {}", plugin.string(), e.what()));
-        }
-        if (const auto name = services::ServiceRegistry::instance().takeConflict()) {
-            throw InputError(fmt::format("--plugin: '{}' registers service type '{}', which is already registered",
-                                         plugin.string(), *name));
-        }
-    }
-    return plugins;
-}
-
-/// The services file, with every service type it names known to the registry.
-services::ServicesConfig loadServicesConfig(const fs::path& path) {
-    requireReadableFile("--services", path);
-    std::optional<services::ServicesConfig> config;
-    try {
-        config = services::ServicesConfig::load(path);
-    } catch (const std::exception& e) {
-        throw InputError(fmt::format("--services: {}", e.what()));
-    }
-    const services::ServiceRegistry& registry = services::ServiceRegistry::instance();
-    for (const services::ServiceSpec& spec : config->services()) {
-        if (registry.contains(spec.type)) continue;
-        throw InputError(fmt::format("--services: {}:{}: unknown service type '{}' (known: {})", path.string(),
-                                     spec.line, spec.type, fmt::join(registry.names(), ", ")));
-    }
-    return std::move(*config);
-}
-
-/// What the final summary reports on.
-struct RunFigures {
-    const fs::path& sumocfg;
-    const kernel::Simulation& sim;
-    const traffic::SumoBridge& sumo;
-    const storyboard::Storyboard* board;
-    const services::ServiceManager* services;
-    const services::Medium* medium;
-    double wall;  ///< s
-};
-
-/// `key: value` lines on stdout: first what the run did (identical for identical runs), then the
-/// timing lines.
-void printSummary(const RunFigures& f) {
-    fmt::print("sbsim {}: {}\n", SBSIM_VERSION, f.sumocfg.filename().string());
-    fmt::print("end: {} s ({})\n", f.sim.now().str(),
-               Interruption::requested() ? "interrupted" : endReasonText(f.sumo.endReason()));
-    fmt::print("steps: {}\n", f.sumo.steps());
-    fmt::print("vehicles seen: {}\n", f.sumo.vehiclesSeen());
-    fmt::print("peak running: {}\n", f.sumo.peakRunning());
-    if (f.board != nullptr) {
-        for (const auto& story : f.board->stories()) {
-            fmt::print("activations {}: {}\n", story->name(), story->activations());
-        }
-    }
-    if (f.services != nullptr) {
-        fmt::print("services created: {}\n", f.services->servicesCreated());
-        for (const auto& [type, counts] : f.medium->counts()) {
-            fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
-        }
-    }
-    const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
-    fmt::print("wall time: {:.3f} s\n", f.wall);
-    fmt::print("time in sumo: {:.3f} s\n", f.sumo.sumoSeconds());
-    fmt::print("time reading vehicles: {:.3f} s\n", f.sumo.snapshotSeconds());
-    if (f.board != nullptr) fmt::print("time in storyboard: {:.3f} s\n", f.board->updateSeconds());
-    fmt::print("real-time factor: {:.1f}\n", f.wall > 0 ? simulated / f.wall : 0.0);
-}
-
-}  // namespace
 
 int runSimulation(const CommandLine& cl) {
     using Clock = std::chrono::steady_clock;

@@ -1,0 +1,51 @@
+#include "sbsim/app/Summary.h"
+
+#include <fmt/format.h>
+
+#include "sbsim/app/Interruption.h"
+
+namespace sbsim::app {
+
+namespace {
+
+const char* endReasonText(traffic::SumoBridge::EndReason r) {
+    switch (r) {
+        case traffic::SumoBridge::EndReason::EndTime:
+            return "end time reached";
+        case traffic::SumoBridge::EndReason::NoMoreVehicles:
+            return "no more vehicles expected";
+        case traffic::SumoBridge::EndReason::Running:
+            break;
+    }
+    return "stopped";
+}
+
+}  // namespace
+
+void printSummary(const RunFigures& f) {
+    fmt::print("sbsim {}: {}\n", SBSIM_VERSION, f.sumocfg.filename().string());
+    fmt::print("end: {} s ({})\n", f.sim.now().str(),
+               Interruption::requested() ? "interrupted" : endReasonText(f.sumo.endReason()));
+    fmt::print("steps: {}\n", f.sumo.steps());
+    fmt::print("vehicles seen: {}\n", f.sumo.vehiclesSeen());
+    fmt::print("peak running: {}\n", f.sumo.peakRunning());
+    if (f.board != nullptr) {
+        for (const auto& story : f.board->stories()) {
+            fmt::print("activations {}: {}\n", story->name(), story->activations());
+        }
+    }
+    if (f.services != nullptr) {
+        fmt::print("services created: {}\n", f.services->servicesCreated());
+        for (const auto& [type, counts] : f.medium->counts()) {
+            fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
+        }
+    }
+    const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
+    fmt::print("wall time: {:.3f} s\n", f.wall);
+    fmt::print("time in sumo: {:.3f} s\n", f.sumo.sumoSeconds());
+    fmt::print("time reading vehicles: {:.3f} s\n", f.sumo.snapshotSeconds());
+    if (f.board != nullptr) fmt::print("time in storyboard: {:.3f} s\n", f.board->updateSeconds());
+    fmt::print("real-time factor: {:.1f}\n", f.wall > 0 ? simulated / f.wall : 0.0);
+}
+
+}  // namespace sbsim::app
