@@ -1,6 +1,6 @@
 # Locates every dependency from where the brief says it comes from: the Python packages
-# (pybind11, eclipse-sumo) through the Python interpreter being built for, Eigen and GoogleTest
-# from the system.
+# (pybind11, eclipse-sumo) through the Python interpreter being built for, Eigen, tinyxml2 and
+# GoogleTest from the system.
 
 find_package(Python 3.11 REQUIRED COMPONENTS Interpreter Development.Embed)
 
@@ -35,6 +35,15 @@ get_filename_component(SBSIM_SUMO_LIBDIR "${SBSIM_SUMO_LIBRARY}" DIRECTORY)
 get_filename_component(SBSIM_SUMO_HOME "${SBSIM_SUMO_LIBDIR}" DIRECTORY)
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+
+# The services file's XML reader (version 6 added line numbers). Debian's libtinyxml2-dev ships a
+# CMake package; elsewhere pkg-config may be all there is.
+find_package(tinyxml2 6 CONFIG QUIET)
+if(NOT TARGET tinyxml2::tinyxml2)
+  find_package(PkgConfig REQUIRED)
+  pkg_check_modules(tinyxml2 REQUIRED IMPORTED_TARGET GLOBAL tinyxml2>=6)
+  add_library(tinyxml2::tinyxml2 ALIAS PkgConfig::tinyxml2)
+endif()
 
 if(SBSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)
