@@ -1,6 +1,6 @@
 # Locates every dependency from where the brief says it comes from: the Python packages
 # (pybind11, eclipse-sumo) through the Python interpreter being built for; Eigen, CLI11, {fmt},
-# nlohmann-json and GoogleTest from the system.
+# nlohmann-json, tinyxml2 and GoogleTest from the system.
 
 find_package(Python 3.11 REQUIRED COMPONENTS Interpreter Development.Embed)
 
@@ -39,6 +39,15 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(CLI11 2.1 CONFIG REQUIRED)  # the program's command line (header-only)
 find_package(fmt 9 CONFIG REQUIRED)
 find_package(nlohmann_json 3.11 CONFIG REQUIRED)
+
+# The services file's XML reader (version 6 added line numbers). Debian's libtinyxml2-dev ships a
+# CMake package; elsewhere pkg-config may be all there is.
+find_package(tinyxml2 6 CONFIG QUIET)
+if(NOT TARGET tinyxml2::tinyxml2)
+  find_package(PkgConfig REQUIRED)
+  pkg_check_modules(tinyxml2 REQUIRED IMPORTED_TARGET GLOBAL tinyxml2>=6)
+  add_library(tinyxml2::tinyxml2 ALIAS PkgConfig::tinyxml2)
+endif()
 
 if(SBSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)

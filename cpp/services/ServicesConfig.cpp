@@ -1,14 +1,21 @@
 #include "sbsim/services/ServicesConfig.h"
 
+#include <tinyxml2.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-
-#include "sbsim/services/XmlDocument.h"
+#include <fstream>
+#include <iterator>
 
 namespace sbsim::services {
 
 namespace {
+
+using tinyxml2::XMLAttribute;
+using tinyxml2::XMLDocument;
+using tinyxml2::XMLElement;
+using tinyxml2::XMLNode;
 
 [[noreturn]] void fail(const std::string& source, int line, const std::string& message) {
     throw ServicesConfigError(source + ":" + std::to_string(line) + ": " + message);
@@ -21,112 +28,258 @@ std::string_view trimmed(std::string_view s) {
     return s.substr(first, s.find_last_not_of(kBlanks) - first + 1);
 }
 
-// Character data where the format has none is most likely a misplaced value: say so.
-void rejectText(const XmlElement& element, const std::string& source) {
-    if (!element.text.empty()) fail(source, element.line, "unexpected text in <" + element.name + ">");
+// The 1-based line of a byte of the text; lines end at '\n', as tinyxml2 counts them.
+int lineAt(std::string_view text, std::size_t offset) {
+    return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
 }
 
-void rejectAttributes(const XmlElement& element, const std::string& source) {
-    if (!element.attributes.empty()) {
-        fail(source, element.line,
-             "unexpected attribute '" + element.attributes.front().first + "' on <" + element.name + ">");
+std::string tag(std::string_view name) { return "<" + std::string(name) + ">"; }
+std::string tag(const XMLElement& element) { return tag(element.Name()); }
+
+// The element a tinyxml2 error is about: its error string ends in "XMLElement name=<name>" then.
+std::string erroneousElement(const XMLDocument& doc) {
+    constexpr std::string_view kKey = "XMLElement name=";
+    const std::string_view error = doc.ErrorStr();
+    const std::size_t at = error.find(kKey);
+    return at == std::string_view::npos ? std::string() : std::string(error.substr(at + kKey.size()));
+}
+
+// tinyxml2 takes an element whose start tag ends the text for one closed by a mismatched end tag;
+// with a blank after the text it reports it as never closed, as it is.
+tinyxml2::XMLError parseXml(XMLDocument& doc, std::string_view text) {
+    std::string buffer(text);
+    buffer += '\n';
+    return doc.Parse(buffer.data(), buffer.size());
+}
+
+// tinyxml2 reports a mismatched end tag at the start tag left open. The end tag itself is found
+// with tinyxml2 too: it reads forward only and stops right after that tag, so a prefix of the
+// text shows the mismatch exactly when it holds the whole tag (shorter ones only end too early).
+// A binary search over the prefix lengths finds the tag's closing '>'.
+[[noreturn]] void failMismatch(const XMLDocument& doc, std::string_view text, const std::string& source) {
+    std::size_t clean = 0;             // this long a prefix does not show the mismatch ...
+    std::size_t broken = text.size();  // ... and this long one does
+    while (broken - clean > 1) {
+        const std::size_t length = clean + (broken - clean) / 2;
+        XMLDocument prefix;
+        (parseXml(prefix, text.substr(0, length)) == tinyxml2::XML_ERROR_MISMATCHED_ELEMENT ? broken : clean) = length;
+    }
+    const std::size_t start = text.rfind("</", broken);
+    const std::string_view rest = text.substr(start + 2, broken - 1 - (start + 2));  // tinyxml2 allows attributes
+    const std::string_view name = rest.substr(0, rest.find_first_of(" \t\r\n"));
+    fail(source, lineAt(text, start),
+         "mismatched end tag </" + std::string(name) + ">, expected </" + erroneousElement(doc) + "> (opened on line " +
+             std::to_string(doc.ErrorLineNum()) + ")");
+}
+
+// A file tinyxml2 rejects, in words, at the line tinyxml2 names.
+[[noreturn]] void failXml(const XMLDocument& doc, std::string_view text, const std::string& source) {
+    const int line = doc.ErrorLineNum();
+    const std::string element = erroneousElement(doc);
+    switch (doc.ErrorID()) {
+        case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
+            fail(source, lineAt(text, text.size()), "no root element");
+        case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+            failMismatch(doc, text, source);
+        case tinyxml2::XML_ERROR_PARSING:
+            fail(source, line, "element never closed (or '<' without an element name)");
+        case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+            if (element.empty())
+                fail(source, line, "unexpected character in a tag (expected an attribute, '>' or '/>')");
+            fail(source, line, "unterminated tag " + tag(element));
+        case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+            fail(source, line,
+                 "malformed attribute in " + tag(element) +
+                     ": an unterminated quote, a missing '=' or quoted value, or a duplicate attribute");
+        case tinyxml2::XML_ERROR_PARSING_TEXT:
+            fail(source, line, "text runs to the end of the file (an element never closed, or text after the root)");
+        case tinyxml2::XML_ERROR_PARSING_CDATA:
+            fail(source, line, "unterminated CDATA section");
+        case tinyxml2::XML_ERROR_PARSING_COMMENT:
+            fail(source, line, "unterminated comment");
+        case tinyxml2::XML_ERROR_PARSING_DECLARATION:
+            fail(source, line, "unterminated or misplaced '<?' (the XML declaration belongs at the start of the file)");
+        case tinyxml2::XML_ERROR_PARSING_UNKNOWN:
+            fail(source, line, "unterminated '<!' declaration");
+        case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
+            fail(source, line, "elements nested too deeply");
+        default:
+            fail(source, line, std::string("malformed XML (") + doc.ErrorName() + ")");
     }
 }
 
-ServiceFilter parseFilter(const XmlElement& element, const std::string& source) {
+// tinyxml2 keeps <!DOCTYPE ...> and other declarations as opaque nodes. The format has none, and
+// entities declared there would silently not apply, so the first one anywhere is an error.
+class FirstDeclaration : public tinyxml2::XMLVisitor {
+public:
+    bool Visit(const tinyxml2::XMLUnknown& node) override {
+        if (!found) found = &node;
+        return false;
+    }
+    const tinyxml2::XMLUnknown* found = nullptr;
+};
+
+// tinyxml2 accepts text and several elements at the top; a well-formed file has one root element.
+const XMLElement& rootOf(const XMLDocument& doc, std::string_view text, const std::string& source) {
+    FirstDeclaration declaration;
+    doc.Accept(&declaration);
+    if (declaration.found) {
+        const std::string_view value = declaration.found->Value();
+        fail(source, declaration.found->GetLineNum(),
+             "unsupported declaration <!" + std::string(value.substr(0, value.find_first_of(" \t\r\n"))) + " ...>");
+    }
+    const XMLElement* root = nullptr;
+    for (const XMLNode* node = doc.FirstChild(); node; node = node->NextSibling()) {
+        if (node->ToComment() || node->ToDeclaration()) continue;
+        if (root) fail(source, node->GetLineNum(), "unexpected content after the root element " + tag(*root));
+        if (!node->ToElement()) fail(source, node->GetLineNum(), "expected the root element, found text");
+        root = node->ToElement();
+    }
+    if (!root) fail(source, lineAt(text, text.size()), "no root element");
+    return *root;
+}
+
+// Character data where the format has none is most likely a misplaced value: say so.
+void rejectText(const XMLElement& element, const std::string& source) {
+    for (const XMLNode* node = element.FirstChild(); node; node = node->NextSibling()) {
+        const tinyxml2::XMLText* text = node->ToText();
+        if (text && !trimmed(text->Value()).empty()) {
+            fail(source, element.GetLineNum(), "unexpected text in " + tag(element));
+        }
+    }
+}
+
+// The element's attributes in document order, with XML's attribute-value normalization, which
+// tinyxml2 leaves out: literal tabs and line ends become spaces (so a value quoted in a message
+// keeps it one line).
+std::vector<std::pair<std::string, std::string>> attributesOf(const XMLElement& element) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const XMLAttribute* attribute = element.FirstAttribute(); attribute; attribute = attribute->Next()) {
+        std::string value = attribute->Value();
+        std::replace_if(
+            value.begin(), value.end(), [](char c) { return c == '\t' || c == '\n' || c == '\r'; }, ' ');
+        out.emplace_back(attribute->Name(), std::move(value));
+    }
+    return out;
+}
+
+void rejectAttributes(const XMLElement& element, const std::string& source) {
+    if (const XMLAttribute* first = element.FirstAttribute()) {
+        fail(source, element.GetLineNum(),
+             "unexpected attribute '" + std::string(first->Name()) + "' on " + tag(element));
+    }
+}
+
+ServiceFilter parseFilter(const XMLElement& element, const std::string& source) {
+    const std::string_view name = element.Name();
+    const int line = element.GetLineNum();
     ServiceFilter filter;
-    filter.line = element.line;
-    filter.subject = element.name == "type" ? ServiceFilter::Subject::VehicleType : ServiceFilter::Subject::VehicleId;
+    filter.line = line;
+    filter.subject = name == "type" ? ServiceFilter::Subject::VehicleType : ServiceFilter::Subject::VehicleId;
     bool hasPattern = false;
-    for (const auto& [key, value] : element.attributes) {
+    for (const auto& [key, value] : attributesOf(element)) {
         if (key == "pattern") {
             filter.pattern = value;
             hasPattern = true;
         } else if (key == "match") {
             if (value != "inverse") {
-                fail(source, element.line,
-                     "unknown match '" + value + "' in <" + element.name + "> filter (the only value is 'inverse')");
+                fail(source, line,
+                     "unknown match '" + value + "' in " + tag(name) + " filter (the only value is 'inverse')");
             }
             filter.inverse = true;
         } else if (key == "rate") {
             // Artery draws a random number per vehicle here; we have no random stream for it (yet).
-            fail(source, element.line, "the 'rate' attribute of <" + element.name + "> filters is not supported");
+            fail(source, line, "the 'rate' attribute of " + tag(name) + " filters is not supported");
         } else {
-            fail(source, element.line, "unexpected attribute '" + key + "' on <" + element.name + "> filter");
+            fail(source, line, "unexpected attribute '" + key + "' on " + tag(name) + " filter");
         }
     }
-    if (!hasPattern) fail(source, element.line, "<" + element.name + "> filter has no 'pattern' attribute");
+    if (!hasPattern) fail(source, line, tag(name) + " filter has no 'pattern' attribute");
     try {
         filter.regex = std::regex(filter.pattern, std::regex::ECMAScript | std::regex::optimize);
     } catch (const std::regex_error& e) {
-        fail(source, element.line,
-             "invalid pattern '" + filter.pattern + "' in <" + element.name + "> filter: " + e.what());
+        fail(source, line, "invalid pattern '" + filter.pattern + "' in " + tag(name) + " filter: " + e.what());
     }
     rejectText(element, source);
     return filter;
 }
 
-void parseFilters(const XmlElement& element, const std::string& source, ServiceSpec& spec) {
-    for (const auto& [key, value] : element.attributes) {
-        if (key != "operator") fail(source, element.line, "unexpected attribute '" + key + "' on <filters>");
+void parseFilters(const XMLElement& element, const std::string& source, ServiceSpec& spec) {
+    for (const auto& [key, value] : attributesOf(element)) {
+        if (key != "operator") fail(source, element.GetLineNum(), "unexpected attribute '" + key + "' on <filters>");
         if (value == "and") {
             spec.combine = ServiceSpec::Combine::All;
         } else if (value == "or") {
             spec.combine = ServiceSpec::Combine::Any;
         } else {
-            fail(source, element.line, "unknown filter operator '" + value + "' (expected 'and' or 'or')");
+            fail(source, element.GetLineNum(), "unknown filter operator '" + value + "' (expected 'and' or 'or')");
         }
     }
     rejectText(element, source);
-    for (const XmlElement& child : element.children) {
-        if (child.name == "name" || child.name == "type") {
-            spec.filters.push_back(parseFilter(child, source));
-        } else if (child.name == "penetration") {
-            fail(source, child.line, "<penetration> filters are not supported (they need a random draw per vehicle)");
+    for (const XMLElement* child = element.FirstChildElement(); child; child = child->NextSiblingElement()) {
+        const std::string_view name = child->Name();
+        if (name == "name" || name == "type") {
+            spec.filters.push_back(parseFilter(*child, source));
+        } else if (name == "penetration") {
+            fail(source, child->GetLineNum(),
+                 "<penetration> filters are not supported (they need a random draw per vehicle)");
         } else {
-            fail(source, child.line, "unknown filter <" + child.name + "> (expected <name> or <type>)");
+            fail(source, child->GetLineNum(), "unknown filter " + tag(name) + " (expected <name> or <type>)");
         }
     }
 }
 
-ServiceSpec parseService(const XmlElement& element, const std::string& source) {
+ServiceSpec parseService(const XMLElement& element, const std::string& source) {
     ServiceSpec spec;
     spec.source = source;
-    spec.line = element.line;
-    const std::string* type = element.attribute("type");
-    if (!type) fail(source, element.line, "<service> has no 'type' attribute");
-    if (trimmed(*type).empty()) fail(source, element.line, "<service> has an empty 'type' attribute");
-    spec.type = *type;
-    for (const auto& [key, value] : element.attributes) {
+    spec.line = element.GetLineNum();
+    const auto attributes = attributesOf(element);
+    const auto type =
+        std::find_if(attributes.begin(), attributes.end(), [](const auto& a) { return a.first == "type"; });
+    if (type == attributes.end()) fail(source, spec.line, "<service> has no 'type' attribute");
+    if (trimmed(type->second).empty()) fail(source, spec.line, "<service> has an empty 'type' attribute");
+    spec.type = type->second;
+    for (const auto& [key, value] : attributes) {
         if (key != "type") spec.parameters.emplace(key, value);
     }
     rejectText(element, source);
     bool hasFilters = false;
-    for (const XmlElement& child : element.children) {
-        if (child.name == "listener") continue;  // Artery's port binding; services here talk in-process
-        if (child.name != "filters") {
-            fail(source, child.line,
-                 "unexpected element <" + child.name + "> in <service> (expected <filters> or <listener>)");
+    for (const XMLElement* child = element.FirstChildElement(); child; child = child->NextSiblingElement()) {
+        const std::string_view name = child->Name();
+        if (name == "listener") continue;  // Artery's port binding; services here talk in-process
+        if (name != "filters") {
+            fail(source, child->GetLineNum(),
+                 "unexpected element " + tag(name) + " in <service> (expected <filters> or <listener>)");
         }
-        if (hasFilters) fail(source, child.line, "a <service> may have only one <filters>");
+        if (hasFilters) fail(source, child->GetLineNum(), "a <service> may have only one <filters>");
         hasFilters = true;
-        parseFilters(child, source, spec);
+        parseFilters(*child, source, spec);
     }
     return spec;
 }
 
-void readServices(const XmlElement& root, const std::string& source, std::vector<ServiceSpec>& out) {
-    if (root.name != "services") {
-        fail(source, root.line, "the root element must be <services>, found <" + root.name + ">");
+std::vector<ServiceSpec> readServices(std::string_view text, const std::string& source) {
+    // tinyxml2 reads a C string: a NUL byte would silently end the file there.
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        fail(source, lineAt(text, nul), "NUL character in the file");
+    }
+    XMLDocument doc;
+    if (parseXml(doc, text) != tinyxml2::XML_SUCCESS) failXml(doc, text, source);
+    const XMLElement& root = rootOf(doc, text, source);
+    if (std::string_view(root.Name()) != "services") {
+        fail(source, root.GetLineNum(), "the root element must be <services>, found " + tag(root));
     }
     rejectAttributes(root, source);
     rejectText(root, source);
-    for (const XmlElement& child : root.children) {
-        if (child.name != "service") {
-            fail(source, child.line, "unexpected element <" + child.name + "> in <services> (expected <service>)");
+    std::vector<ServiceSpec> out;
+    for (const XMLElement* child = root.FirstChildElement(); child; child = child->NextSiblingElement()) {
+        if (std::string_view(child->Name()) != "service") {
+            fail(source, child->GetLineNum(),
+                 "unexpected element " + tag(*child) + " in <services> (expected <service>)");
         }
-        out.push_back(parseService(child, source));
+        out.push_back(parseService(*child, source));
     }
+    return out;
 }
 
 }  // namespace
@@ -180,23 +333,20 @@ bool ServiceSpec::boolean(std::string_view name, bool fallback) const {
 
 ServicesConfig ServicesConfig::parse(std::string_view text, const std::string& source) {
     ServicesConfig config;
-    try {
-        readServices(parseXml(text, source), source, config.services_);
-    } catch (const XmlError& e) {
-        // One exception type for callers: a broken file is a broken services file.
-        throw ServicesConfigError(e.what());
-    }
+    config.services_ = readServices(text, source);
     return config;
 }
 
 ServicesConfig ServicesConfig::load(const std::filesystem::path& path) {
-    ServicesConfig config;
-    try {
-        readServices(readXmlFile(path), path.string(), config.services_);
-    } catch (const XmlError& e) {
-        throw ServicesConfigError(e.what());
-    }
-    return config;
+    const std::string source = path.string();
+    std::error_code ec;
+    // An ifstream opens a directory without complaint and then reads nothing.
+    if (std::filesystem::is_directory(path, ec)) throw ServicesConfigError(source + ": cannot read");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ServicesConfigError(source + ": cannot read");
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw ServicesConfigError(source + ": cannot read");
+    return parse(text, source);
 }
 
 std::vector<const ServiceSpec*> ServicesConfig::matching(std::string_view vehicleId,

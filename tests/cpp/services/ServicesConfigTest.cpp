@@ -106,6 +106,79 @@ TEST(ServicesConfig, ParameterValuesAreEntityDecoded) {
     EXPECT_EQ(spec.parameter("cause"), "a & b <3");
 }
 
+TEST(ServicesConfig, AttributeQuotingAndCharacterReferences) {
+    const ServiceSpec spec = onlyService(parse(oneService(
+        "",
+        R"(type='S' single='say "hi"' double="it's" named="&lt;&gt;&amp;&quot;&apos;" numeric="&#65;&#x42;&#x20AC;")")));
+    EXPECT_EQ(spec.type, "S");
+    EXPECT_EQ(spec.parameter("single"), "say \"hi\"");
+    EXPECT_EQ(spec.parameter("double"), "it's");
+    EXPECT_EQ(spec.parameter("named"), "<>&\"'");
+    EXPECT_EQ(spec.parameter("numeric"), "AB\xE2\x82\xAC");
+    // Patterns are decoded before they are compiled.
+    const ServiceSpec filtered =
+        onlyService(parse(oneService(R"(<filters><name pattern="a&amp;b|&#x63;"/></filters>)")));
+    EXPECT_TRUE(filtered.matches("a&b", ""));
+    EXPECT_TRUE(filtered.matches("c", ""));
+    EXPECT_FALSE(filtered.matches("a&amp;b", ""));
+}
+
+TEST(ServicesConfig, AttributeWhitespaceIsNormalized) {
+    const ServiceSpec spec = onlyService(parse(oneService("", "type=\"S\" cause=\"x\ny\tz\r\nw\"")));
+    EXPECT_EQ(spec.parameter("cause"), "x y z w");
+    // ... so that a message quoting a value stays one line.
+    EXPECT_EQ(errorOf(oneService("<filters operator='a\nnd'/>\n")),
+              "s.xml:3: unknown filter operator 'a nd' (expected 'and' or 'or')");
+}
+
+TEST(ServicesConfig, ByteOrderMarkDeclarationCommentsAndBlankCData) {
+    const ServicesConfig config = parse(
+        "\xEF\xBB\xBF<?xml version='1.0' encoding='UTF-8'?><?style x?>\n"
+        "<!-- before the root -->\n"
+        "<services><!-- a - b -->\n"
+        "  <service type=\"S\"><![CDATA[  ]]><!-- inside -->\n"
+        "    <filters><!---->\n"
+        "      <name pattern=\"x\"/><!-- after -->\n"
+        "    </filters>\n"
+        "  </service>\n"
+        "</services>\n"
+        "<!-- after the root -->\n");
+    const ServiceSpec& spec = onlyService(config);
+    EXPECT_EQ(spec.line, 4);
+    ASSERT_EQ(spec.filters.size(), 1u);
+    EXPECT_EQ(spec.filters[0].line, 6);
+}
+
+TEST(ServicesConfig, LinesAreThoseOfTheStartTags) {
+    const ServicesConfig config = parse(
+        "<services\n"
+        ">\n"
+        "  <service\n"
+        "      type=\"A\"\n"
+        "      range=\"x\">\n"
+        "    <listener port=\"1\"><nested><deeper/></nested></listener>\n"
+        "    <filters\n"
+        "        operator=\"and\">\n"
+        "      <name pattern=\"a\"/><type\n"
+        "        pattern=\"b\"/>\n"
+        "    </filters>\n"
+        "  </service><service type=\"B\"/>\n"
+        "</services>\n");
+    const auto& services = config.services();
+    ASSERT_EQ(services.size(), 2u);
+    EXPECT_EQ(services[0].line, 3);
+    ASSERT_EQ(services[0].filters.size(), 2u);
+    EXPECT_EQ(services[0].filters[0].line, 9);
+    EXPECT_EQ(services[0].filters[1].line, 9);
+    EXPECT_EQ(services[1].line, 12);
+    try {
+        services[0].number("range", 0);
+        FAIL() << "no error";
+    } catch (const ServicesConfigError& e) {
+        EXPECT_EQ(std::string(e.what()), "s.xml:3: parameter 'range' of service 'A' must be a number, got 'x'");
+    }
+}
+
 TEST(ServicesConfig, NumberParameters) {
     const ServicesConfig config = parse(oneService("", R"(type="S" a="0.5" b=" 300 " c="-2e3" d="+7" e=".25" i="10")"));
     const ServiceSpec& spec = onlyService(config);
@@ -331,7 +404,72 @@ TEST(ServicesConfigErrors, XmlErrorsBecomeServicesConfigErrors) {
     EXPECT_EQ(errorOf("<services>\n<service type='S'>\n</services>"),
               "s.xml:3: mismatched end tag </services>, expected </service> (opened on line 2)");
     EXPECT_EQ(errorOf("<services>\n<service type='S' type='T'/>\n</services>"),
-              "s.xml:2: duplicate attribute 'type' in <service>");
+              "s.xml:2: malformed attribute in <service>: an unterminated quote, a missing '=' or quoted value, or a "
+              "duplicate attribute");
+}
+
+// Malformed XML, one case per kind of mistake: each is one line naming the file and the line.
+TEST(ServicesConfigErrors, MalformedXmlNamesTheLine) {
+    const std::string unterminatedAttribute =
+        ": an unterminated quote, a missing '=' or quoted value, or a duplicate attribute";
+    const std::pair<std::string, std::string> cases[] = {
+        // end tags
+        {"<services>\n<service type='A'></service>\n<service type='B'>\n<listener></listener>\n</services>",
+         "s.xml:5: mismatched end tag </services>, expected </service> (opened on line 3)"},
+        {"<services>\n<service type='S'><filters>\n  <name pattern='x'>\n  </type >\n</filters></service></services>",
+         "s.xml:4: mismatched end tag </type>, expected </name> (opened on line 3)"},
+        {"<services>\n<service type='S'>\n</servic\n>\n</services>",
+         "s.xml:3: mismatched end tag </servic>, expected </service> (opened on line 2)"},
+        {"<services>\n<service type='S'>\n<filters>\n\n",
+         "s.xml:3: element never closed (or '<' without an element name)"},
+        {"<services>\n  <service type='S'/>\n", "s.xml:1: element never closed (or '<' without an element name)"},
+        {"<services>\n<service type='S'>", "s.xml:2: element never closed (or '<' without an element name)"},
+        {"<services>\n<>\n</services>", "s.xml:2: element never closed (or '<' without an element name)"},
+        {"<services>\n</services", "s.xml:2: unterminated tag <services>"},
+        // start tags and attributes
+        {"<services>\n<service\n  type='S'\n", "s.xml:2: unterminated tag <service>"},
+        {"<services \"x\"/>", "s.xml:1: unexpected character in a tag (expected an attribute, '>' or '/>')"},
+        {"<services>\n  <service type=\"S\n  </service>\n</services>\n",
+         "s.xml:2: malformed attribute in <service>" + unterminatedAttribute},
+        {"<services>\n<service type=S/>\n</services>",
+         "s.xml:2: malformed attribute in <service>" + unterminatedAttribute},
+        {"<services>\n<service type='S'\n   type='T'/>\n</services>",
+         "s.xml:3: malformed attribute in <service>" + unterminatedAttribute},
+        {"<services>\n<service\n type/>\n</services>",
+         "s.xml:3: malformed attribute in <service>" + unterminatedAttribute},
+        // comments, CDATA, declarations
+        {"<services>\n<!-- x\n</services>\n", "s.xml:2: unterminated comment"},
+        {"<services>\n<![CDATA[ x </services>", "s.xml:2: unterminated CDATA section"},
+        {"<?xml version='1.0'\n<services/>",
+         "s.xml:1: unterminated or misplaced '<?' (the XML declaration belongs at the start of the file)"},
+        {"<services>\n<?xml version='1.0'?></services>",
+         "s.xml:2: unterminated or misplaced '<?' (the XML declaration belongs at the start of the file)"},
+        {"<!DOCTYPE services>\n<services/>", "s.xml:1: unsupported declaration <!DOCTYPE ...>"},
+        {"<services>\n<service type='S'>\n<listener><!ELEMENT a ANY></listener></service></services>",
+         "s.xml:3: unsupported declaration <!ELEMENT ...>"},
+        {"<services>\n<!DOCTYPE x", "s.xml:2: unterminated '<!' declaration"},
+        // around the root
+        {"", "s.xml:1: no root element"},
+        {"<?xml version='1.0'?>\n<!-- only a comment -->\n", "s.xml:3: no root element"},
+        {"\nhello <services/>", "s.xml:2: expected the root element, found text"},
+        {"<services/>\n<services/>", "s.xml:2: unexpected content after the root element <services>"},
+        {"<services/>\n<![CDATA[x]]>", "s.xml:2: unexpected content after the root element <services>"},
+        {"<services/>\n\ntext",
+         "s.xml:3: text runs to the end of the file (an element never closed, or text after the root)"},
+        {std::string("<services/>\n\n") + '\0' + "<x/>", "s.xml:3: NUL character in the file"},
+    };
+    for (const auto& [text, message] : cases) EXPECT_EQ(errorOf(text), message) << text;
+}
+
+TEST(ServicesConfigErrors, NestingIsLimited) {
+    const auto nested = [](int depth) {
+        std::string text = "<services>\n<service type='S'>\n<listener>\n";
+        for (int i = 0; i < depth; ++i) text += "<d>";
+        for (int i = 0; i < depth; ++i) text += "</d>";
+        return text + "\n</listener>\n</service>\n</services>\n";
+    };
+    EXPECT_EQ(onlyService(parse(nested(90))).type, "S");
+    EXPECT_EQ(errorOf(nested(1000)), "s.xml:4: elements nested too deeply");
 }
 
 // A file in the temporary directory, removed again when the test ends.
@@ -359,24 +497,35 @@ TEST(ServicesConfigFile, LoadsAFile) {
     EXPECT_EQ(config.services()[1].source, file.path().string());
 }
 
+// The message ServicesConfig::load gives for `path`, or "no error".
+std::string loadErrorOf(const std::filesystem::path& path) {
+    try {
+        ServicesConfig::load(path);
+    } catch (const ServicesConfigError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
 TEST(ServicesConfigFile, ErrorsNameTheFile) {
     const TempFile file("broken", "<services>\n<service/>\n</services>\n");
-    try {
-        ServicesConfig::load(file.path());
-        FAIL() << "no error";
-    } catch (const ServicesConfigError& e) {
-        EXPECT_EQ(std::string(e.what()), file.path().string() + ":2: <service> has no 'type' attribute");
-    }
+    EXPECT_EQ(loadErrorOf(file.path()), file.path().string() + ":2: <service> has no 'type' attribute");
 }
 
 TEST(ServicesConfigFile, UnreadableFile) {
     const std::filesystem::path missing = std::filesystem::temp_directory_path() / "sbsim_no_such_services.xml";
-    try {
-        ServicesConfig::load(missing);
-        FAIL() << "no error";
-    } catch (const ServicesConfigError& e) {
-        EXPECT_EQ(std::string(e.what()), missing.string() + ": cannot read");
-    }
+    EXPECT_EQ(loadErrorOf(missing), missing.string() + ": cannot read");
+}
+
+TEST(ServicesConfigFile, ADirectoryIsUnreadable) {
+    const std::filesystem::path directory = std::filesystem::temp_directory_path();
+    EXPECT_EQ(loadErrorOf(directory), directory.string() + ": cannot read");
+}
+
+TEST(ServicesConfigFile, MalformedXmlInAFileNamesTheFileAndLine) {
+    const TempFile file("malformed", "<services>\n  <service type=\"S\">\n  </servic>\n</services>\n");
+    EXPECT_EQ(loadErrorOf(file.path()),
+              file.path().string() + ":3: mismatched end tag </servic>, expected </service> (opened on line 2)");
 }
 
 TEST(ServicesConfigFile, MalformedNumberInALoadedFileNamesTheFile) {
