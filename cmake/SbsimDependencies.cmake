@@ -34,6 +34,7 @@ get_target_property(SBSIM_SUMO_LIBRARY SUMO::libsumocpp IMPORTED_LOCATION_RELEAS
 get_filename_component(SBSIM_SUMO_LIBDIR "${SBSIM_SUMO_LIBRARY}" DIRECTORY)
 get_filename_component(SBSIM_SUMO_HOME "${SBSIM_SUMO_LIBDIR}" DIRECTORY)
 
+find_package(Threads REQUIRED)  # the kernel's worker pool
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 # Used only behind the sources, never in a public header: libsbsim's users need none of them.
 find_package(CLI11 2.1 CONFIG REQUIRED)  # the program's command line (header-only)
