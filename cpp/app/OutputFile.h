@@ -58,8 +58,8 @@ private:
     [[noreturn]] void fail(int error) const;
 
     std::string option_;
-    std::filesystem::path path_;    ///< as given, for messages
-    std::filesystem::path target_;  ///< where the finished file goes (symlinks resolved)
+    std::filesystem::path path_;     ///< as given, for messages
+    std::filesystem::path target_;   ///< where the finished file goes (symlinks resolved)
     std::filesystem::path writing_;  ///< the file being written: target_ + ".incomplete", or target_
     int fd_ = -1;
     std::unique_ptr<Buffer> buffer_;

@@ -53,8 +53,8 @@ void requireReadableFile(const std::string& option, const fs::path& path) {
         throw InputError(fmt::format("{}: '{}' is a directory, not a file", option, path.string()));
     }
     if (!fs::is_regular_file(status)) {
-        throw InputError(
-            fmt::format("{}: '{}' is {}; sbsim reads regular files only", option, path.string(), kindOf(status.type())));
+        throw InputError(fmt::format("{}: '{}' is {}; sbsim reads regular files only", option, path.string(),
+                                     kindOf(status.type())));
     }
     // A regular file: opening it cannot block.
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
@@ -75,8 +75,8 @@ void RunFiles::addReferencedInput(const std::string& source, const fs::path& pat
         throw InputError(fmt::format("{}: '{}' is a directory, not a file", source, path.string()));
     }
     if (!ec && !fs::is_regular_file(status)) {
-        throw InputError(
-            fmt::format("{}: '{}' is {}; sbsim reads regular files only", source, path.string(), kindOf(status.type())));
+        throw InputError(fmt::format("{}: '{}' is {}; sbsim reads regular files only", source, path.string(),
+                                     kindOf(status.type())));
     }
     inputs_.push_back({source, path});
 }
@@ -84,13 +84,14 @@ void RunFiles::addReferencedInput(const std::string& source, const fs::path& pat
 void RunFiles::claimOutput(const std::string& option, const fs::path& path) {
     for (const File& input : inputs_) {
         if (!sameFile(path, input.path)) continue;
-        throw OutputError(fmt::format("{}: '{}' is the same file as the input '{}' ({}); an output must not overwrite it",
-                                      option, path.string(), input.path.string(), input.source));
+        throw OutputError(
+            fmt::format("{}: '{}' is the same file as the input '{}' ({}); an output must not overwrite it", option,
+                        path.string(), input.path.string(), input.source));
     }
     for (const File& output : outputs_) {
         if (!sameFile(path, output.path)) continue;
-        throw OutputError(fmt::format("{}: '{}' is the same file as the output of {}", option, path.string(),
-                                      output.source));
+        throw OutputError(
+            fmt::format("{}: '{}' is the same file as the output of {}", option, path.string(), output.source));
     }
     outputs_.push_back({option, path});
 }

@@ -23,8 +23,8 @@ std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<fs::pa
         for (std::size_t j = 0; j < i; ++j) {
             std::error_code ec;
             if (fs::equivalent(plugin, paths[j], ec)) {
-                throw UsageError(fmt::format("--plugin: '{}' is given twice (also as '{}')", plugin.string(),
-                                             paths[j].string()));
+                throw UsageError(
+                    fmt::format("--plugin: '{}' is given twice (also as '{}')", plugin.string(), paths[j].string()));
             }
         }
         requireLoadableElf("--plugin", plugin);
@@ -39,9 +39,10 @@ std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<fs::pa
                                          plugin.string(), *name));
         }
         if (registry.names().size() == known) {
-            throw InputError(fmt::format(
-                "--plugin: '{}' registers no service (a service module registers its types with SBSIM_REGISTER_SERVICE)",
-                plugin.string()));
+            throw InputError(
+                fmt::format("--plugin: '{}' registers no service (a service module registers its types with "
+                            "SBSIM_REGISTER_SERVICE)",
+                            plugin.string()));
         }
     }
     return plugins;

@@ -111,8 +111,8 @@ int runSimulation(const CommandLine& cl) {
     }
     Interruption::checkpoint("while SUMO was loading");
     if (settings.end && *settings.end < sumo.beginTime()) {
-        throw UsageError(fmt::format("--end: {} s is before SUMO's begin time ({} s)", settings.end->str(),
-                                     sumo.beginTime().str()));
+        throw UsageError(
+            fmt::format("--end: {} s is before SUMO's begin time ({} s)", settings.end->str(), sumo.beginTime().str()));
     }
 
     std::optional<storyboard::EventLog> log;

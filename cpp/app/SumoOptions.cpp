@@ -30,7 +30,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kShortNam
 
 /// Options whose values are files SUMO reads.
 constexpr std::array<std::string_view, 5> kInputOptions{"net-file", "route-files", "additional-files", "weight-files",
-                                                       "load-state"};
+                                                        "load-state"};
 
 struct Unrunnable {
     std::string_view name;

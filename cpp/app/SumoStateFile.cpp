@@ -72,8 +72,8 @@ void checkSumoState(const std::string& source, const fs::path& state, const std:
     }
     const tinyxml2::XMLElement* root = doc.RootElement();
     if (root == nullptr || std::string_view(root->Name()) != "snapshot") {
-        throw InputError(fmt::format("{}: {}: not a SUMO state: the root element is <{}>, not <snapshot>", source,
-                                     name, root == nullptr ? "" : root->Name()));
+        throw InputError(fmt::format("{}: {}: not a SUMO state: the root element is <{}>, not <snapshot>", source, name,
+                                     root == nullptr ? "" : root->Name()));
     }
     double time = NAN;
     if (root->QueryDoubleAttribute("time", &time) != tinyxml2::XML_SUCCESS || !std::isfinite(time) ||
