@@ -37,8 +37,9 @@ CLI::Validator seconds(bool allowZero) {
         return numberWhere<double>("seconds >= 0 and at most 3e9",
                                    [](double s) { return std::isfinite(s) && s >= 0 && s <= kMaxSeconds; });
     }
-    return numberWhere<double>("seconds > 0 (at least 1e-9) and at most 3e9",
-                               [](double s) { return std::isfinite(s) && s >= 1e-9 && s <= kMaxSeconds; });
+    // At least 1 ms: a shorter interval makes a few seconds of traffic take minutes.
+    return numberWhere<double>("seconds > 0, at least 0.001 (1 ms) and at most 3e9",
+                               [](double s) { return std::isfinite(s) && s >= 1e-3 && s <= kMaxSeconds; });
 }
 
 CLI::Validator metres(bool allowZero) {

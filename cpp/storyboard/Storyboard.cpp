@@ -25,6 +25,7 @@ public:
     const Story& story() const override { return story_; }
     const std::string& vehicleId() const override { return id_; }
     traffic::VehicleController& vehicle() override { return *state_.controller; }
+    VehicleHandle handle() override { return VehicleHandle(id_, state_.controller); }
     EffectStack& stack() override { return *state_.stack; }
     EffectStack::Token token() const override { return token_; }
     /// Converted from snapshot indices on first use: most activations never ask.

@@ -65,7 +65,8 @@ private:
         EffectStack::Token token;
     };
     struct VehicleState {
-        std::unique_ptr<traffic::VehicleController> controller;
+        /// Shared only with the weak VehicleHandles given to scripts; gone when the vehicle leaves.
+        std::shared_ptr<traffic::VehicleController> controller;
         std::unique_ptr<EffectStack> stack;
         std::vector<std::vector<AppliedEffect>> applied;  // per story; non-empty iff active
         std::vector<bool> active;                         // per story

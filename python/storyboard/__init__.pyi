@@ -38,7 +38,7 @@ class RandomNumberGenerator:
     def uniform(self, a: float = 0.0, b: float = 1.0) -> float: ...
 
 class Vehicle:
-    """One vehicle of the current step's snapshot (valid during the call it is passed to)."""
+    """One vehicle of the current step's snapshot; reading it after that step raises ValueError."""
 
     id: str
     index: int
@@ -57,7 +57,11 @@ class Vehicle:
     time: float
 
 class Snapshot:
-    """All running vehicles after a step, ascending id order; arrays are read-only views."""
+    """All running vehicles after a step, ascending id order.
+
+    Arrays are read-only copies (made on first access, safe to keep); the snapshot itself raises
+    ValueError when read after its step.
+    """
 
     time: float
     ids: list[str]
@@ -71,8 +75,14 @@ class Snapshot:
     def __len__(self) -> int: ...
     def index_of(self, id: str) -> int | None: ...
 
+class VehicleGoneError(RuntimeError):
+    """A VehicleController used after its vehicle left the simulation."""
+
 class VehicleController:
+    """Commands one vehicle; may be kept, but raises VehicleGoneError once the vehicle has left."""
+
     id: str
+    alive: bool
     type_id: str
     road_id: str
     lane_id: str
