@@ -9,6 +9,7 @@
 
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/SumoArguments.h"
+#include "sbsim/kernel/StudyParameters.h"
 
 namespace sbsim::app {
 
@@ -90,6 +91,22 @@ void CommandLine::declareOptions(CLI::App& app) {
         ->type_name("LIB.so")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
         ->allow_extra_args(false);  // one library per --plugin, so a stray word is not taken for one
+    app.add_option("--param", params,
+                   "a study parameter NAME=VALUE for the story (board.parameters) and\n"
+                   "services (studyParameter); repeatable")
+        ->type_name("NAME=VALUE")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->allow_extra_args(false)
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                try {
+                    kernel::StudyParameters().add(text);
+                    return {};
+                } catch (const kernel::StudyParameterError& e) {
+                    return e.what();
+                }
+            },
+            ""));
     app.add_option("--middleware-interval", middlewareInterval, "time between service triggers")
         ->type_name("SECONDS")
         ->check(seconds(false))

@@ -25,6 +25,7 @@ struct CommandLine {
     std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`
     std::optional<std::filesystem::path> services;  ///< Artery-format services file
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
+    std::vector<std::string> params;                ///< study parameters, NAME=VALUE
     double middlewareInterval = 0.1;                ///< s between service triggers
     double v2xRange = 500;                          ///< m
     double v2xLatency = 0.001;                      ///< s

@@ -103,6 +103,13 @@ int runSimulation(const CommandLine& cl) {
     if (story) python.emplace();
 
     kernel::Simulation sim(static_cast<std::uint64_t>(cl.seed.value_or(CommandLine::kDefaultSeed)), cl.threads);
+    for (const std::string& param : cl.params) {
+        try {
+            sim.parameters().add(param);
+        } catch (const kernel::StudyParameterError& e) {
+            throw UsageError(fmt::format("--param: {}", e.what()));
+        }
+    }
     auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
     try {
         sumo.load();
@@ -185,6 +192,11 @@ int runSimulation(const CommandLine& cl) {
             fmt::print(stderr, "sbsim: warning: the story left threads running ({}); sbsim exits without them\n",
                        fmt::join(lingering, ", "));
         }
+    }
+    // Only after a whole run: a story may read a parameter late, or only in some branch.
+    for (const std::string& name : sim.parameters().unread()) {
+        if (Interruption::requested()) break;
+        fmt::print(stderr, "sbsim: warning: --param {} was never read by the story or a service\n", name);
     }
     if (Interruption::requested()) {
         fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "sbsim/app/Interruption.h"
+#include "sbsim/kernel/StudyParameters.h"
 
 namespace sbsim::app {
 
@@ -29,6 +30,10 @@ void printSummary(const RunFigures& f) {
     fmt::print("steps: {}\n", f.sumo.steps());
     fmt::print("vehicles seen: {}\n", f.sumo.vehiclesSeen());
     fmt::print("peak running: {}\n", f.sumo.peakRunning());
+    fmt::print("seed: {}\n", f.sim.seed());
+    for (const auto& [name, value] : f.sim.parameters().all()) {
+        fmt::print("parameter {}: {}\n", name, kernel::StudyParameters::format(value));
+    }
     if (f.board != nullptr) {
         for (const auto& story : f.board->stories()) {
             fmt::print("activations {}: {}\n", story->name(), story->activations());
