@@ -20,7 +20,9 @@ struct CommandLine {
     std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
     std::optional<std::filesystem::path> story;
     std::optional<std::filesystem::path> events;
-    std::optional<double> end;  ///< seconds
+    std::optional<std::filesystem::path> summary;  ///< the summary as JSON
+    std::vector<std::string> arguments;            ///< the command line as given (for the JSON summary)
+    std::optional<double> end;                     ///< seconds
     std::optional<std::int64_t> seed;
     std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`
     std::optional<std::filesystem::path> services;  ///< Artery-format services file

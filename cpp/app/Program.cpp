@@ -48,6 +48,7 @@ int parseAndRun(const std::vector<std::string>& args) {
     app.set_version_flag("--version", fmt::format("sbsim {}", SBSIM_VERSION), "print the version and exit");
     app.footer(kFooter);
     CommandLine options;
+    options.arguments = args;
     options.declareOptions(app);
 
     const std::vector<std::unique_ptr<Subcommand>> subcommands = makeSubcommands();

@@ -88,6 +88,8 @@ int runSimulation(const CommandLine& cl) {
     // it cannot write fails at once.
     std::optional<OutputFile> events;
     if (cl.events) events.emplace("--events", *cl.events, files);
+    std::optional<OutputFile> summary;
+    if (cl.summary) summary.emplace("--summary", *cl.summary, files);
     Interruption::checkpoint("before SUMO loaded");
 
     traffic::SumoSettings settings;
@@ -180,9 +182,20 @@ int runSimulation(const CommandLine& cl) {
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
 
+    const RunFigures figures{sumocfg,
+                             sim,
+                             sumo,
+                             board,
+                             serviceManager,
+                             medium,
+                             std::chrono::duration<double>(Clock::now() - started).count(),
+                             cl.arguments};
+    if (summary) {
+        summary->stream() << summaryJson(figures).dump(2) << '\n';
+        if (!Interruption::requested()) summary->commit();
+    }
     if (!cl.quiet) {
-        printSummary(RunFigures{sumocfg, sim, sumo, board, serviceManager, medium,
-                                std::chrono::duration<double>(Clock::now() - started).count()});
+        printSummary(figures);
         std::fflush(stdout);
     }
     if (python) {

@@ -129,13 +129,21 @@ Storyboard::VehicleState& Storyboard::stateFor(const std::string& id) {
 
 void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left) {
     const auto started = std::chrono::steady_clock::now();
+    // The vehicles active since the last pass were active for the time in between.
+    if (updated_ && snapshot.time() > now_) {
+        const kernel::SimTime elapsed = snapshot.time() - now_;
+        for (const StoryPtr& story : stories_)
+            story->activeTime_ += elapsed * static_cast<kernel::SimTime::rep>(story->activeVehicles_);
+    }
+    updated_ = true;
     now_ = snapshot.time();
     std::sort(left.begin(), left.end());
     for (const std::string& id : left) {
         if (const auto it = vehicles_.find(id); it != vehicles_.end()) {
             for (std::size_t s = 0; s < stories_.size(); ++s) {
-                if (it->second.active[s] && log_ != nullptr)
-                    log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
+                if (!it->second.active[s]) continue;
+                --stories_[s]->activeVehicles_;
+                if (log_ != nullptr) log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
             }
             forgetState(id);
             vehicles_.erase(it);
@@ -247,6 +255,7 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
     Story& story = *stories_[s];
     state.active[s] = true;
     ++story.activations_;
+    ++story.activeVehicles_;
     if (log_ != nullptr) log_->activate(now_, story.name(), id);
     Scope scope(*this, state, story, id, &result, &snapshot);
     for (const EffectPtr& effect : story.effects()) {
@@ -260,6 +269,7 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
 void Storyboard::deactivate(VehicleState& state, std::size_t s, const std::string& id) {
     Story& story = *stories_[s];
     state.active[s] = false;
+    --story.activeVehicles_;
     if (log_ != nullptr) log_->deactivate(now_, story.name(), id, "condition");
     Scope scope(*this, state, story, id);
     auto& applied = state.applied[s];

@@ -92,6 +92,7 @@ private:
 
     EventLog* log_;
     kernel::SimTime now_;
+    bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;
     std::vector<bool> pure_;                                 // per story: its whole tree is pure
     std::vector<std::size_t> pureStories_;                   // indices of the pure stories

@@ -178,6 +178,8 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     scheduleNextStep();
 }
 
+std::string SumoBridge::sumoVersion() const { return libsumo::Simulation::getVersion().second; }
+
 void SumoBridge::step() {
     if (const auto failure = capturingErrors(capture_, [] { libsumo::Simulation::step(); })) {
         throw SumoError(*failure);

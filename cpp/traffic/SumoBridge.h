@@ -87,6 +87,8 @@ public:
     std::size_t peakRunning() const { return peakRunning_; }
     /// Wall-clock seconds spent inside SUMO's steps and reading the snapshot (profiling figures).
     double sumoSeconds() const { return sumoSeconds_; }
+    /// SUMO's version string, e.g. "SUMO v1_28_0" (asked of libsumo; SUMO must be loaded).
+    std::string sumoVersion() const;
     double snapshotSeconds() const { return snapshotSeconds_; }
 
 private:

@@ -16,7 +16,7 @@ The TOML names the scenario, the seeds and the parameter values (paths relative 
 Each run is one ``sbsim`` process (crash isolation; SUMO is not re-entrant) started by a Dask task,
 on a ``distributed.LocalCluster`` with one single-threaded worker process per core, or on an
 existing cluster (``--scheduler``; workers must see the same file system). Every run writes its
-own folder ``runs/<id>/`` (events.jsonl, stdout, stderr, result.json, written last); a run whose
+own folder ``runs/<id>/`` (events.jsonl, summary.json, stderr, result.json, written last); a run whose
 result.json says it succeeded is not run again, so an interrupted study resumes where it stopped.
 At the end ``runs.parquet`` (one row per run) and ``events.parquet`` (every event with its run's
 parameters and seed) are written beside them.
@@ -142,6 +142,7 @@ class StudySpec:
 
     def command(self, run: Run, folder: Path, program: str) -> list[str]:
         cmd = [program, "--sumocfg", str(self.sumocfg), "--events", str(folder / "events.jsonl")]
+        cmd += ["--summary", str(folder / "summary.json"), "--quiet"]
         if self.story is not None:
             cmd += ["--story", str(self.story)]
         if self.services is not None:
@@ -151,23 +152,20 @@ class StudySpec:
         return cmd + run.arguments() + list(self.args)
 
 
-def parse_summary(stdout: str) -> dict[str, Any]:
-    """sbsim's summary lines as table columns: steps, vehicles, activations and messages per name."""
-    row: dict[str, Any] = {}
-    for line in stdout.splitlines():
-        key, sep, value = line.partition(": ")
-        if not sep or key.startswith("sbsim "):
-            continue
-        if key.startswith("activations "):
-            row[f"activations:{key.removeprefix('activations ')}"] = int(value)
-        elif key.startswith("messages "):
-            sent, delivered = (int(part.split()[-1]) for part in value.split(","))
-            row[f"sent:{key.removeprefix('messages ')}"] = sent
-            row[f"delivered:{key.removeprefix('messages ')}"] = delivered
-        elif key in ("steps", "vehicles seen", "peak running", "services created"):
-            row[key.replace(" ", "_")] = int(value)
-        elif key in ("time in sumo", "time in storyboard"):
-            row[key.replace(" ", "_") + "_s"] = float(value.split()[0])
+def summary_columns(summary: dict[str, Any]) -> dict[str, Any]:
+    """A run's --summary JSON as table columns: counts, per-story activations and active
+    vehicle-seconds, messages per type, the time in SUMO and in the storyboard."""
+    row: dict[str, Any] = {k: summary[k] for k in ("steps", "vehicles_seen", "peak_running") if k in summary}
+    row["end_reason"] = summary.get("end", {}).get("reason")
+    for story in summary.get("stories", []):
+        row[f"activations:{story['name']}"] = story["activations"]
+        row[f"active_vehicle_s:{story['name']}"] = story["active_vehicle_seconds"]
+    for kind, counts in summary.get("messages", {}).items():
+        row[f"sent:{kind}"] = counts["sent"]
+        row[f"delivered:{kind}"] = counts["delivered"]
+    timing = summary.get("timing", {})
+    row["sumo_s"] = timing.get("sumo_s")
+    row["storyboard_s"] = timing.get("storyboard_s")
     return row
 
 
@@ -192,16 +190,17 @@ def execute(spec: StudySpec, run: Run, program: str, timeout: float | None = Non
             timeout=timeout,
             stdin=subprocess.DEVNULL,
         )
-        code, stdout, stderr = proc.returncode, proc.stdout, proc.stderr
-    except subprocess.TimeoutExpired as e:
-        code, stdout, stderr = -1, str(e.stdout or ""), f"study: the run took longer than {timeout} s"
+        code, stderr = proc.returncode, proc.stderr
+    except subprocess.TimeoutExpired:
+        code, stderr = -1, f"study: the run took longer than {timeout} s"
     wall = time.monotonic() - started
-    (folder / "stdout.txt").write_text(stdout, encoding="utf-8")
     (folder / "stderr.txt").write_text(stderr, encoding="utf-8")
     row: dict[str, Any] = {"run": run.id, **dict(run.parameters), "seed": run.seed, "exit_code": code}
     row["wall_s"] = round(wall, 3)
     row["stderr_tail"] = stderr[-STDERR_TAIL:] if code != 0 else ""
-    row.update(parse_summary(stdout))
+    summary = folder / "summary.json"
+    if code == 0 and summary.exists():
+        row.update(summary_columns(json.loads(summary.read_text(encoding="utf-8"))))
     # Written last, through a rename: its presence says the run is finished.
     tmp = folder / "result.json.tmp"
     tmp.write_text(json.dumps(row), encoding="utf-8")

@@ -63,11 +63,13 @@ def test_study_on_two_workers_writes_both_tables_like_sequential_runs(
         (5.0, 1), (5.0, 2), (5.0, 3), (20.0, 1), (20.0, 2), (20.0, 3)
     ]  # fmt: skip
     assert (runs["exit_code"] == 0).all()
-    assert {"activations:fast", "activations:picked", "steps", "wall_s"} <= set(runs.columns)
+    assert {"activations:fast", "activations:picked", "active_vehicle_s:fast", "steps", "wall_s"} <= set(runs.columns)
     assert (runs["steps"] == 40).all()
     # The parameter reaches the story: nobody drives above 20 m/s on this grid (13.89 m/s limit).
     by = runs.set_index(["threshold", "seed"])["activations:fast"]
     assert all(by[(20.0, s)] == 0 < by[(5.0, s)] for s in (1, 2, 3))
+    seconds = runs.set_index(["threshold", "seed"])["active_vehicle_s:fast"]
+    assert all(seconds[(20.0, s)] == 0 < seconds[(5.0, s)] for s in (1, 2, 3))
     # Seeds matter for the random story.
     assert runs[runs["threshold"] == 5]["activations:picked"].nunique() > 1
 

@@ -75,3 +75,25 @@ def test_parameters_are_read_only(trips_cfg: Path, tmp_path: Path) -> None:
 def test_bad_param_is_bad_input(trips_cfg: Path) -> None:
     assert_bad_input(run(trips_cfg, extra=["--param", "rain"]), "--param", "NAME=VALUE")
     assert_bad_input(run(trips_cfg, extra=["--param", "x=1", "--param", "x=2"]), "--param", "'x' is given twice")
+
+
+def test_summary_json_has_the_figures_a_table_needs(trips_cfg: Path, tmp_path: Path) -> None:
+    from storyboard.runner import read_summary
+
+    story = write_story(tmp_path, READER)
+    out = tmp_path / "summary.json"
+    params = ["--param", "rain_speed=10", "--param", "factor=0.8", "--param", "wet=true", "--param", "label=heavy rain"]
+    result = run(trips_cfg, story=story, end=30, seed=5, extra=[*params, "--summary", str(out)])
+    assert result.returncode == 0, result.stderr
+    summary = read_summary(out)
+    assert summary["seed"] == 5 and summary["steps"] == 30
+    assert summary["parameters"] == {"factor": 0.8, "label": "heavy rain", "rain_speed": 10, "wet": True}
+    assert summary["end"] == {"time": 30.0, "reason": "end time reached"}
+    assert summary["sumo"].startswith("SUMO")
+    assert "--summary" in summary["command"]
+    (rain,) = summary["stories"]
+    text = result.summary()
+    assert rain["name"] == "rain" and rain["activations"] == int(text["activations rain"])
+    # Vehicle-seconds under the story: at most the active vehicles x the 29 s between the first and last step.
+    assert 0 < rain["active_vehicle_seconds"] <= 29 * int(text["peak running"])
+    assert not (tmp_path / "summary.json.incomplete").exists()

@@ -326,5 +326,24 @@ TEST_F(StoryboardTest, HandleRefusesValuesSumoCannotTake) {
     EXPECT_EQ(commands.setSpeed.at("x").back(), -1.0);
 }
 
+TEST_F(StoryboardTest, ActiveVehicleSecondsSumTheTimeVehiclesSpendUnderAStory) {
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{}, "fast"));
+    const Story& fast = *board.stories()[0];
+    step(1, {car("a", 10), car("b", 1)});
+    EXPECT_EQ(fast.activeVehicles(), 1u);
+    step(2, {car("a", 10), car("b", 10)});  // a: 1 s so far; b joins
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 1.0);
+    step(2.5, {car("a", 1), car("b", 10)});  // both active for 0.5 s, then a stops being fast
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 2.0);
+    EXPECT_EQ(fast.activeVehicles(), 1u);
+    step(4, {car("a", 1)}, {"b"});  // b was active until it left
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 3.5);
+    EXPECT_EQ(fast.activeVehicles(), 0u);
+    step(9, {car("a", 1)});
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 3.5);
+    EXPECT_EQ(fast.activations(), 2u);
+}
+
 }  // namespace
 }  // namespace sbsim::storyboard
