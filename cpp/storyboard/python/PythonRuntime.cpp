@@ -84,7 +84,10 @@ PythonRuntime::~PythonRuntime() {
     } catch (const std::exception&) {
         PyErr_Clear();
     }
-    (void)interpreter_.release();
+    // Kept reachable from a global, never destroyed: the process ends without finalizing (that
+    // would wait for the thread), and LeakSanitizer sees a live object rather than a leak.
+    static const pybind11::scoped_interpreter* abandoned = nullptr;
+    abandoned = interpreter_.release();
 }
 
 std::vector<std::string> PythonRuntime::abandonLingeringThreads(std::chrono::milliseconds grace) {
