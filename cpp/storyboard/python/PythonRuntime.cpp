@@ -86,7 +86,7 @@ PythonRuntime::~PythonRuntime() {
     }
     // Kept reachable from a global, never destroyed: the process ends without finalizing (that
     // would wait for the thread), and LeakSanitizer sees a live object rather than a leak.
-    static const pybind11::scoped_interpreter* abandoned = nullptr;
+    static const pybind11::scoped_interpreter* volatile abandoned = nullptr;  // volatile: the store stays
     abandoned = interpreter_.release();
 }
 
