@@ -22,6 +22,7 @@ struct CommandLine {
     std::optional<std::filesystem::path> events;
     std::optional<double> end;  ///< seconds
     std::optional<std::int64_t> seed;
+    double warmup = 0;                              ///< s; what board.getWarmupEndTime() returns
     std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`
     std::optional<std::filesystem::path> services;  ///< Artery-format services file
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
