@@ -27,9 +27,6 @@ public:
     virtual double maxSpeed() const;
     virtual double emergencyDecel() const;
     virtual int speedMode() const;
-    /// The factor on the lanes' speed limits the driver keeps to (SUMO's chosen speed factor).
-    virtual double speedFactor() const;
-    virtual Color color() const;
 
     virtual void setMaxSpeed(double mps);
     /// Holds the vehicle at `mps`; a negative value hands speed control back to SUMO.
@@ -39,6 +36,11 @@ public:
     virtual void setSpeedMode(int mode);
     virtual void changeLane(int laneIndex, double seconds);
     virtual void changeLaneRelative(int offset, double seconds);
+
+    // Added after the others so that service modules built against the older class keep working.
+    /// The factor on the lanes' speed limits the driver keeps to (SUMO's chosen speed factor).
+    virtual double speedFactor() const;
+    virtual Color color() const;
     virtual void setSpeedFactor(double factor);
     /// Gives the vehicle another type (its max speed becomes the type's).
     virtual void setType(const std::string& typeId);
