@@ -1,6 +1,6 @@
 # Locates every dependency from where the brief says it comes from: the Python packages
 # (pybind11, eclipse-sumo) through the Python interpreter being built for; Eigen, CLI11, {fmt},
-# nlohmann-json, tinyxml2, RE2 and GoogleTest from the system.
+# nlohmann-json, tinyxml2, RE2, zlib and GoogleTest from the system.
 
 find_package(Python 3.11 REQUIRED COMPONENTS Interpreter Development.Embed)
 
@@ -50,14 +50,17 @@ if(NOT TARGET tinyxml2::tinyxml2)
   add_library(tinyxml2::tinyxml2 ALIAS PkgConfig::tinyxml2)
 endif()
 
-# TypeCondition's regular expressions (linear time, so a story's pattern cannot stall a step).
-# Debian's libre2-dev ships only a pkg-config file; elsewhere RE2 may bring its CMake package.
+# Regular expressions in linear time (TypeCondition, services filters: a pattern cannot stall a
+# step). Debian's libre2-dev ships only a pkg-config file; elsewhere RE2 may bring its CMake package.
 find_package(re2 CONFIG QUIET)
 if(NOT TARGET re2::re2)
   find_package(PkgConfig REQUIRED)
   pkg_check_modules(re2 REQUIRED IMPORTED_TARGET GLOBAL re2)
   add_library(re2::re2 ALIAS PkgConfig::re2)
 endif()
+
+# gzip-compressed SUMO files (a state to load, its network), read by the program's checks.
+find_package(ZLIB REQUIRED)
 
 if(SBSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)

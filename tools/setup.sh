@@ -7,9 +7,11 @@ set -euo pipefail
 SBSIM_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="$SBSIM_ROOT/.venv"
 # Build: compilers, Eigen, GoogleTest and the C++ libraries sbsim uses (XML, command line, JSON,
-# formatting, regular expressions, allocator); tests: clang-format and a virtual X server for sumo-gui.
+# formatting, regular expressions, allocator, gzip); tests: clang-format and a virtual X server for sumo-gui.
 DEBIAN_PACKAGES=(cmake g++ python3-dev libeigen3-dev libgtest-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev
-  libfmt-dev libre2-dev libjemalloc-dev clang-format xvfb xauth)
+  libfmt-dev libre2-dev libjemalloc-dev zlib1g-dev clang-format xvfb xauth)
+# Studies (python -m storyboard.study): Dask runs the sweep, pyarrow writes the tables.
+STUDY_DEPENDENCIES=("dask>=2024" "distributed>=2024" "pyarrow>=14" "tqdm>=4" "matplotlib>=3.7")
 PYTHON_DEPENDENCIES=(pip "scikit-build-core>=0.10" "pybind11>=2.12" "numpy>=1.24" "eclipse-sumo==1.28.*")
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
 

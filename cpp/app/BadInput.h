@@ -22,4 +22,10 @@ public:
     using BadInput::BadInput;
 };
 
+/// An output that cannot be written: a missing folder, a full disk, the path of an input.
+class OutputError : public BadInput {
+public:
+    using BadInput::BadInput;
+};
+
 }  // namespace sbsim::app

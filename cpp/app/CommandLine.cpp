@@ -9,6 +9,7 @@
 
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/SumoArguments.h"
+#include "sbsim/kernel/StudyParameters.h"
 
 namespace sbsim::app {
 
@@ -37,8 +38,9 @@ CLI::Validator seconds(bool allowZero) {
         return numberWhere<double>("seconds >= 0 and at most 3e9",
                                    [](double s) { return std::isfinite(s) && s >= 0 && s <= kMaxSeconds; });
     }
-    return numberWhere<double>("seconds > 0 (at least 1e-9) and at most 3e9",
-                               [](double s) { return std::isfinite(s) && s >= 1e-9 && s <= kMaxSeconds; });
+    // At least 1 ms: a shorter interval makes a few seconds of traffic take minutes.
+    return numberWhere<double>("seconds > 0, at least 0.001 (1 ms) and at most 3e9",
+                               [](double s) { return std::isfinite(s) && s >= 1e-3 && s <= kMaxSeconds; });
 }
 
 CLI::Validator metres(bool allowZero) {
@@ -95,6 +97,22 @@ void CommandLine::declareOptions(CLI::App& app) {
         ->type_name("LIB.so")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
         ->allow_extra_args(false);  // one library per --plugin, so a stray word is not taken for one
+    app.add_option("--param", params,
+                   "a study parameter NAME=VALUE for the story (board.parameters) and\n"
+                   "services (studyParameter); repeatable")
+        ->type_name("NAME=VALUE")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->allow_extra_args(false)
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                try {
+                    kernel::StudyParameters().add(text);
+                    return {};
+                } catch (const kernel::StudyParameterError& e) {
+                    return e.what();
+                }
+            },
+            ""));
     app.add_option("--middleware-interval", middlewareInterval, "time between service triggers")
         ->type_name("SECONDS")
         ->check(seconds(false))
@@ -115,6 +133,7 @@ void CommandLine::declareOptions(CLI::App& app) {
 
     app.option_defaults()->group("Run and output");
     app.add_option("--events", events, "write storyboard events as JSON Lines")->type_name("FILE.jsonl");
+    app.add_option("--summary", summary, "also write the summary as one JSON document")->type_name("FILE.json");
     app.add_option("--threads", threads, "threads reading vehicle states after each step (0: all\ncores)")
         ->type_name("N")
         ->check(numberWhere<unsigned>("0 (all cores) to 256", [](unsigned n) { return n <= 256; }))

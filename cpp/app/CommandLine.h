@@ -20,12 +20,15 @@ struct CommandLine {
     std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
     std::optional<std::filesystem::path> story;
     std::optional<std::filesystem::path> events;
-    std::optional<double> end;  ///< seconds
+    std::optional<std::filesystem::path> summary;  ///< the summary as JSON
+    std::vector<std::string> arguments;            ///< the command line as given (for the JSON summary)
+    std::optional<double> end;                     ///< seconds
     std::optional<std::int64_t> seed;
     double warmup = 0;                              ///< s; what board.getWarmupEndTime() returns
     std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`
     std::optional<std::filesystem::path> services;  ///< Artery-format services file
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
+    std::vector<std::string> params;                ///< study parameters, NAME=VALUE
     double middlewareInterval = 0.1;                ///< s between service triggers
     double v2xRange = 500;                          ///< m
     double v2xLatency = 0.001;                      ///< s

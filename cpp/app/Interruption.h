@@ -1,32 +1,33 @@
 #pragma once
 
 #include <csignal>
-
-#include "sbsim/kernel/Signal.h"
-
-namespace sbsim::kernel {
-class Simulation;
-}
+#include <stdexcept>
+#include <string>
 
 namespace sbsim::app {
 
-/// Ctrl-C (SIGINT) or SIGTERM during a run: the run stops after the current step, finishes its
-/// modules and closes SUMO, so outputs are complete; a second Ctrl-C ends the process at once.
-/// Installed for the guard's lifetime; checked on every SUMO step.
-class Interruption : public kernel::Listener {
+/// The program's one signal policy, for the whole life of the process. The first SIGINT or
+/// SIGTERM, whatever is running (SUMO loading, createStories, a step, a custom condition), asks
+/// the run to stop at its next safe point: the program checks requested() between phases and
+/// after every step, and Python code running at that moment gets KeyboardInterrupt. The run then
+/// ends with exit code 130 and its outputs left marked incomplete. A second signal ends the
+/// process at once, also with code 130.
+class Interruption {
 public:
-    explicit Interruption(kernel::Simulation& sim);
-    ~Interruption() override;
-    Interruption(const Interruption&) = delete;
-    Interruption& operator=(const Interruption&) = delete;
-
+    /// Installs the handlers; called once, first thing in the program.
+    static void install();
     static bool requested();
-    void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
+    /// Installs the handlers again if something (a story calling signal.signal) replaced them.
+    static void reassert();
+    /// Throws Interrupted if an interruption was requested; `phase` completes "interrupted ...".
+    static void checkpoint(const std::string& phase);
+};
 
-private:
-    kernel::Simulation& sim_;
-    struct sigaction previousInt_ {};
-    struct sigaction previousTerm_ {};
+/// The run stopped at a safe point before stepping began, because of SIGINT or SIGTERM: the
+/// program prints "sbsim: interrupted <what()>" and exits with code 130.
+class Interrupted : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
 };
 
 }  // namespace sbsim::app

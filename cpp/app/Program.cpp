@@ -9,6 +9,7 @@
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/CommandLine.h"
 #include "sbsim/app/HelpFormatter.h"
+#include "sbsim/app/Interruption.h"
 #include "sbsim/app/SimulationRun.h"
 #include "sbsim/app/Subcommands.h"
 #include "sbsim/storyboard/StoryError.h"
@@ -24,7 +25,8 @@ constexpr const char* kDescription =
 constexpr const char* kFooter =
     "Words after -- go to SUMO as they are, e.g. sbsim --story s.py -- -c x.sumocfg --begin 600;\n"
     "a -c FILE or --configuration-file FILE among them is the SUMO configuration.\n"
-    "Exit codes: 0 done, 1 failure during the run, 2 bad input, 130 interrupted (Ctrl-C).";
+    "Exit codes: 0 done, 2 bad input (SUMO's errors included), 130 interrupted (SIGINT,\n"
+    "SIGTERM), 1 an internal error.";
 
 /// The command line up to its first `--`, and the words after it (SUMO's). Split here rather than
 /// by CLI11, which would take the words after `--`, and stray ones before it, as positionals alike.
@@ -46,6 +48,7 @@ int parseAndRun(const std::vector<std::string>& args) {
     app.set_version_flag("--version", fmt::format("sbsim {}", SBSIM_VERSION), "print the version and exit");
     app.footer(kFooter);
     CommandLine options;
+    options.arguments = args;
     options.declareOptions(app);
 
     const std::vector<std::unique_ptr<Subcommand>> subcommands = makeSubcommands();
@@ -84,15 +87,27 @@ int parseAndRun(const std::vector<std::string>& args) {
 }  // namespace
 
 int runProgram(const std::vector<std::string>& args) {
+    Interruption::install();
+    // Once interrupted, a failure other than bad input is the interruption's doing (a story's
+    // KeyboardInterrupt, SUMO closed midway): exit code 130, not the failure's.
+    const auto interrupted = [] {
+        fmt::print(stderr, "sbsim: interrupted\n");
+        return 130;
+    };
     try {
         return parseAndRun(args);
+    } catch (const Interrupted& e) {
+        fmt::print(stderr, "sbsim: interrupted {}\n", e.what());
+        return 130;
     } catch (const BadInput& e) {
         fmt::print(stderr, "sbsim: {}\n", e.what());
         return 2;
     } catch (const storyboard::StoryError& e) {
+        if (Interruption::requested()) return interrupted();
         fmt::print(stderr, "{}sbsim: {}\n", e.details(), e.what());
         return 2;
     } catch (const std::exception& e) {
+        if (Interruption::requested()) return interrupted();
         fmt::print(stderr, "sbsim: error: {}\n", e.what());
         return 1;
     }

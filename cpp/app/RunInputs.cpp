@@ -7,40 +7,49 @@
 #include <optional>
 
 #include "sbsim/app/BadInput.h"
+#include "sbsim/app/ElfFile.h"
 #include "sbsim/services/ServiceRegistry.h"
 
 namespace sbsim::app {
 
 namespace fs = std::filesystem;
 
-void requireReadableFile(const std::string& option, const fs::path& path) {
-    std::error_code ec;
-    if (!fs::exists(path, ec)) throw InputError(fmt::format("{}: no such file '{}'", option, path.string()));
-    if (fs::is_directory(path, ec)) {
-        throw InputError(fmt::format("{}: '{}' is a directory, not a file", option, path.string()));
-    }
-    if (std::ifstream(path).fail()) throw InputError(fmt::format("{}: cannot read '{}'", option, path.string()));
-}
-
-std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<fs::path>& paths) {
+std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<fs::path>& paths, RunFiles& files) {
     std::vector<std::unique_ptr<PluginLibrary>> plugins;
-    for (const fs::path& plugin : paths) {
-        requireReadableFile("--plugin", plugin);
+    services::ServiceRegistry& registry = services::ServiceRegistry::instance();
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        const fs::path& plugin = paths[i];
+        files.requireInput("--plugin", plugin);
+        for (std::size_t j = 0; j < i; ++j) {
+            std::error_code ec;
+            if (fs::equivalent(plugin, paths[j], ec)) {
+                throw UsageError(
+                    fmt::format("--plugin: '{}' is given twice (also as '{}')", plugin.string(), paths[j].string()));
+            }
+        }
+        requireLoadableElf("--plugin", plugin);
+        const std::size_t known = registry.names().size();
         try {
             plugins.push_back(std::make_unique<PluginLibrary>(plugin));
         } catch (const std::exception& e) {
             throw InputError(fmt::format("--plugin: cannot load '{}': {}", plugin.string(), e.what()));
         }
-        if (const auto name = services::ServiceRegistry::instance().takeConflict()) {
+        if (const auto name = registry.takeConflict()) {
             throw InputError(fmt::format("--plugin: '{}' registers service type '{}', which is already registered",
                                          plugin.string(), *name));
+        }
+        if (registry.names().size() == known) {
+            throw InputError(
+                fmt::format("--plugin: '{}' registers no service (a service module registers its types with "
+                            "SBSIM_REGISTER_SERVICE)",
+                            plugin.string()));
         }
     }
     return plugins;
 }
 
-services::ServicesConfig loadServicesConfig(const fs::path& path) {
-    requireReadableFile("--services", path);
+services::ServicesConfig loadServicesConfig(const fs::path& path, RunFiles& files) {
+    files.requireInput("--services", path);
     std::optional<services::ServicesConfig> config;
     try {
         config = services::ServicesConfig::load(path);

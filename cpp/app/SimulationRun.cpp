@@ -1,26 +1,32 @@
 #include "sbsim/app/SimulationRun.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <libsumo/TraCIDefs.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 
+#include "sbsim/app/AfterEachStep.h"
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/BundledScenario.h"
 #include "sbsim/app/Interruption.h"
+#include "sbsim/app/OutputFile.h"
 #include "sbsim/app/ProgressDisplay.h"
+#include "sbsim/app/RunFiles.h"
 #include "sbsim/app/RunInputs.h"
 #include "sbsim/app/Summary.h"
+#include "sbsim/app/SumoOptions.h"
+#include "sbsim/app/SumoStateFile.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/services/Medium.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/CanvasFrame.h"
 #include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/StoryError.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 #include "sbsim/storyboard/python/StoryScript.h"
@@ -29,6 +35,34 @@
 namespace sbsim::app {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// Runs one phase of the run. A story error while an interruption is pending is the story's
+/// Python code getting KeyboardInterrupt: the phase ends there, as the interruption asked.
+template <typename F>
+void untilInterrupted(F phase) {
+    try {
+        phase();
+    } catch (const storyboard::StoryError&) {
+        if (!Interruption::requested()) throw;
+    }
+}
+
+/// Checks what SUMO will read before it reads it: regular files, no option that keeps SUMO from
+/// running, a state it can load.
+void checkSumoInputs(const fs::path& sumocfg, const std::vector<std::string>& words, RunFiles& files) {
+    files.requireInput("--sumocfg", sumocfg);
+    const SumoOptions options(sumocfg, words);
+    options.rejectUnrunnable();
+    options.addInputs(files);
+    for (const fs::path& state : options.files("load-state")) {
+        checkSumoState(fmt::format("--load-state in {}", options.sourceOf("load-state")), state,
+                       options.files("net-file"));
+    }
+}
+
+}  // namespace
 
 int runSimulation(const CommandLine& cl) {
     using Clock = std::chrono::steady_clock;
@@ -43,17 +77,20 @@ int runSimulation(const CommandLine& cl) {
         sumocfg = bundled.sumocfg;
         if (!story && !cl.noSnapshot) story = bundled.story;
     }
-    requireReadableFile("--sumocfg", sumocfg);
-    if (story) requireReadableFile("--story", *story);
+    RunFiles files;
+    checkSumoInputs(sumocfg, cl.sumoOptions, files);
+    if (story) files.requireInput("--story", *story);
     // Plugins first: their services must be registered before the services file is checked.
-    const std::vector<std::unique_ptr<PluginLibrary>> plugins = loadPlugins(cl.plugins);
+    const std::vector<std::unique_ptr<PluginLibrary>> plugins = loadPlugins(cl.plugins, files);
     std::optional<services::ServicesConfig> servicesConfig;
-    if (cl.services) servicesConfig = loadServicesConfig(*cl.services);
-    std::ofstream events;
-    if (cl.events) {
-        events.open(*cl.events, std::ios::out | std::ios::trunc);
-        if (!events) throw InputError(fmt::format("--events: cannot write '{}'", cl.events->string()));
-    }
+    if (cl.services) servicesConfig = loadServicesConfig(*cl.services, files);
+    // Opened once every input is known, so it can be none of them; before SUMO loads, so a path
+    // it cannot write fails at once.
+    std::optional<OutputFile> events;
+    if (cl.events) events.emplace("--events", *cl.events, files);
+    std::optional<OutputFile> summary;
+    if (cl.summary) summary.emplace("--summary", *cl.summary, files);
+    Interruption::checkpoint("before SUMO loaded");
 
     traffic::SumoSettings settings;
     settings.sumocfg = sumocfg;
@@ -68,15 +105,27 @@ int runSimulation(const CommandLine& cl) {
     if (story) python.emplace();
 
     kernel::Simulation sim(static_cast<std::uint64_t>(cl.seed.value_or(CommandLine::kDefaultSeed)), cl.threads);
+    for (const std::string& param : cl.params) {
+        try {
+            sim.parameters().add(param);
+        } catch (const kernel::StudyParameterError& e) {
+            throw UsageError(fmt::format("--param: {}", e.what()));
+        }
+    }
     auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
     try {
         sumo.load();
     } catch (const traffic::SumoLoadError& e) {
         throw InputError(fmt::format("SUMO cannot load '{}': {}", sumocfg.string(), e.what()));
     }
+    Interruption::checkpoint("while SUMO was loading");
+    if (settings.end && *settings.end < sumo.beginTime()) {
+        throw UsageError(
+            fmt::format("--end: {} s is before SUMO's begin time ({} s)", settings.end->str(), sumo.beginTime().str()));
+    }
 
     std::optional<storyboard::EventLog> log;
-    if (events.is_open()) log.emplace(events);
+    if (events) log.emplace(events->stream());
     storyboard::Storyboard* board = nullptr;
     std::unique_ptr<storyboard::StoryScript> script;
     if (story) {
@@ -85,9 +134,11 @@ int runSimulation(const CommandLine& cl) {
         board->setWarmupEndTime(kernel::SimTime::fromSeconds(cl.warmup));
         script = std::make_unique<storyboard::StoryScript>(*python, *story, *board,
                                                            storyboard::CanvasFrame(sumo.netBoundary()));
-        if (script->createStories() == 0) {
-            fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
-        }
+        std::size_t created = 0;
+        untilInterrupted([&] { created = script->createStories(); });
+        Interruption::reassert();  // the script may have set handlers of its own
+        Interruption::checkpoint("while the story was being created");
+        if (created == 0) fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
     }
 
     services::ServiceManager* serviceManager = nullptr;
@@ -111,22 +162,55 @@ int runSimulation(const CommandLine& cl) {
         progress = std::make_unique<ProgressDisplay>(stderr, sumo.endTime());
         sim.subscribe(traffic::SumoBridge::stepSignal, *progress);
     }
-    Interruption interruption(sim);
-    sim.subscribe(traffic::SumoBridge::stepSignal, interruption);
+    AfterEachStep checks([&] {
+        Interruption::reassert();
+        if (Interruption::requested()) sim.stop();
+        if (events) events->check();  // a full disk ends the run now, not at its end
+    });
+    sim.subscribe(traffic::SumoBridge::stepSignal, checks);
     try {
-        sim.run();
+        untilInterrupted([&] { sim.run(); });
+        untilInterrupted([&] { sim.finish(); });
+    } catch (const traffic::SumoError& e) {
+        throw InputError(fmt::format("SUMO error in '{}' at t={} s: {}", sumocfg.string(), sim.now().str(), e.what()));
     } catch (const libsumo::TraCIException& e) {
-        throw std::runtime_error(fmt::format("SUMO error at t={} s: {}", sim.now().str(), e.what()));
+        throw InputError(fmt::format("SUMO error at t={} s: {}", sim.now().str(), e.what()));
     } catch (const services::ServicesConfigError& e) {
         // A service reads its parameters when its first vehicle departs: still bad input.
         throw InputError(fmt::format("--services: {}", e.what()));
     }
-    sim.finish();
     if (progress) progress->clear();
+    // Only a run that ended as it should gives outputs their names; others stay .incomplete.
+    if (events && !Interruption::requested()) events->commit();
 
+    const RunFigures figures{sumocfg,
+                             sim,
+                             sumo,
+                             board,
+                             serviceManager,
+                             medium,
+                             std::chrono::duration<double>(Clock::now() - started).count(),
+                             cl.arguments};
+    if (summary) {
+        summary->stream() << summaryJson(figures).dump(2) << '\n';
+        if (!Interruption::requested()) summary->commit();
+    }
     if (!cl.quiet) {
-        printSummary(RunFigures{sumocfg, sim, sumo, board, serviceManager, medium,
-                                std::chrono::duration<double>(Clock::now() - started).count()});
+        printSummary(figures);
+        std::fflush(stdout);
+    }
+    if (python) {
+        const std::vector<std::string> lingering =
+            python->abandonLingeringThreads(storyboard::PythonRuntime::kThreadGrace);
+        if (!lingering.empty()) {
+            fmt::print(stderr, "sbsim: warning: the story left threads running ({}); sbsim exits without them\n",
+                       fmt::join(lingering, ", "));
+        }
+    }
+    // Only after a whole run: a story may read a parameter late, or only in some branch.
+    for (const std::string& name : sim.parameters().unread()) {
+        if (Interruption::requested()) break;
+        fmt::print(stderr, "sbsim: warning: --param {} was never read by the story or a service\n", name);
     }
     if (Interruption::requested()) {
         fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());

@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include "sbsim/app/Interruption.h"
+#include "sbsim/kernel/StudyParameters.h"
+
+#include <variant>
 
 namespace sbsim::app {
 
@@ -29,6 +32,10 @@ void printSummary(const RunFigures& f) {
     fmt::print("steps: {}\n", f.sumo.steps());
     fmt::print("vehicles seen: {}\n", f.sumo.vehiclesSeen());
     fmt::print("peak running: {}\n", f.sumo.peakRunning());
+    fmt::print("seed: {}\n", f.sim.seed());
+    for (const auto& [name, value] : f.sim.parameters().all()) {
+        fmt::print("parameter {}: {}\n", name, kernel::StudyParameters::format(value));
+    }
     if (f.board != nullptr) {
         for (const auto& story : f.board->stories()) {
             fmt::print("activations {}: {}\n", story->name(), story->activations());
@@ -46,6 +53,50 @@ void printSummary(const RunFigures& f) {
     fmt::print("time reading vehicles: {:.3f} s\n", f.sumo.snapshotSeconds());
     if (f.board != nullptr) fmt::print("time in storyboard: {:.3f} s\n", f.board->updateSeconds());
     fmt::print("real-time factor: {:.1f}\n", f.wall > 0 ? simulated / f.wall : 0.0);
+}
+
+nlohmann::ordered_json summaryJson(const RunFigures& f) {
+    using nlohmann::ordered_json;
+    ordered_json out;
+    out["sbsim"] = SBSIM_VERSION;
+    out["sumo"] = f.sumo.sumoVersion();
+    out["command"] = f.arguments;
+    out["sumocfg"] = f.sumocfg.string();
+    out["seed"] = f.sim.seed();
+    ordered_json parameters = ordered_json::object();
+    for (const auto& [name, value] : f.sim.parameters().all()) {
+        std::visit([&](const auto& v) { parameters[name] = v; }, value);
+    }
+    out["parameters"] = std::move(parameters);
+    out["end"] = {{"time", f.sim.now().seconds()},
+                  {"reason", Interruption::requested() ? "interrupted" : endReasonText(f.sumo.endReason())}};
+    out["steps"] = f.sumo.steps();
+    out["vehicles_seen"] = f.sumo.vehiclesSeen();
+    out["peak_running"] = f.sumo.peakRunning();
+    ordered_json stories = ordered_json::array();
+    if (f.board != nullptr) {
+        for (const auto& story : f.board->stories()) {
+            stories.push_back({{"name", story->name()},
+                               {"activations", story->activations()},
+                               {"active_vehicle_seconds", story->activeVehicleSeconds()}});
+        }
+    }
+    out["stories"] = std::move(stories);
+    ordered_json messages = ordered_json::object();
+    if (f.services != nullptr) {
+        out["services_created"] = f.services->servicesCreated();
+        for (const auto& [type, counts] : f.medium->counts()) {
+            messages[type] = {{"sent", counts.sent}, {"delivered", counts.delivered}};
+        }
+    }
+    out["messages"] = std::move(messages);
+    const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
+    out["timing"] = {{"wall_s", f.wall},
+                     {"sumo_s", f.sumo.sumoSeconds()},
+                     {"reading_vehicles_s", f.sumo.snapshotSeconds()},
+                     {"storyboard_s", f.board != nullptr ? f.board->updateSeconds() : 0.0},
+                     {"real_time_factor", f.wall > 0 ? simulated / f.wall : 0.0}};
+    return out;
 }
 
 }  // namespace sbsim::app

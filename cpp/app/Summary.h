@@ -1,6 +1,10 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/services/Medium.h"
@@ -18,11 +22,16 @@ struct RunFigures {
     const storyboard::Storyboard* board;
     const services::ServiceManager* services;
     const services::Medium* medium;
-    double wall;  ///< s
+    double wall;                                ///< s
+    const std::vector<std::string>& arguments;  ///< the command line
 };
 
 /// `key: value` lines on stdout: first what the run did (identical for identical runs), then the
 /// timing lines.
 void printSummary(const RunFigures& figures);
+
+/// The same figures as one JSON document (--summary), plus what a table of runs needs: active
+/// vehicle-seconds per story, SUMO's version, the command line.
+nlohmann::ordered_json summaryJson(const RunFigures& figures);
 
 }  // namespace sbsim::app

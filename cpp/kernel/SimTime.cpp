@@ -15,6 +15,10 @@ SimTime SimTime::fromSeconds(double seconds) {
     return SimTime(static_cast<rep>(ns));
 }
 
+void SimTime::throwOverflow() {
+    throw std::out_of_range("simulation time out of range: the result is beyond about ±292 years");
+}
+
 std::string SimTime::str() const {
     // Magnitudes of both parts: min() has no positive counterpart, but its parts do.
     const rep whole = ns_ / kPerSecond;

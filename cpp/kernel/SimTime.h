@@ -35,23 +35,27 @@ public:
 
     constexpr auto operator<=>(const SimTime&) const = default;
 
-    constexpr SimTime operator+(SimTime o) const { return SimTime(ns_ + o.ns_); }
-    constexpr SimTime operator-(SimTime o) const { return SimTime(ns_ - o.ns_); }
+    // Checked: times come from scripts and files, and a wrapped sum would be a silent wrong time.
+    constexpr SimTime operator+(SimTime o) const {
+        rep sum = 0;
+        if (__builtin_add_overflow(ns_, o.ns_, &sum)) throwOverflow();
+        return SimTime(sum);
+    }
+    constexpr SimTime operator-(SimTime o) const {
+        rep difference = 0;
+        if (__builtin_sub_overflow(ns_, o.ns_, &difference)) throwOverflow();
+        return SimTime(difference);
+    }
     constexpr SimTime operator-() const { return SimTime(-ns_); }
     constexpr SimTime operator*(rep k) const { return SimTime(ns_ * k); }
     constexpr rep operator/(SimTime o) const { return ns_ / o.ns_; }
     constexpr SimTime operator%(SimTime o) const { return SimTime(ns_ % o.ns_); }
-    constexpr SimTime& operator+=(SimTime o) {
-        ns_ += o.ns_;
-        return *this;
-    }
-    constexpr SimTime& operator-=(SimTime o) {
-        ns_ -= o.ns_;
-        return *this;
-    }
+    constexpr SimTime& operator+=(SimTime o) { return *this = *this + o; }
+    constexpr SimTime& operator-=(SimTime o) { return *this = *this - o; }
 
 private:
     constexpr explicit SimTime(rep ns) : ns_(ns) {}
+    [[noreturn]] static void throwOverflow();
     rep ns_ = 0;
 };
 

@@ -12,6 +12,7 @@
 #include "sbsim/kernel/RandomStream.h"
 #include "sbsim/kernel/Signal.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/kernel/StudyParameters.h"
 
 namespace sbsim::kernel {
 
@@ -56,6 +57,9 @@ public:
     /// Random stream `index`, seeded by seed(); the same index always gives the same stream, so a
     /// module drawing from its own index never shifts another's draws.
     std::shared_ptr<RandomStream> randomStream(unsigned index);
+    /// The run's study parameters (--param), read by stories and services alike.
+    StudyParameters& parameters() { return parameters_; }
+    const StudyParameters& parameters() const { return parameters_; }
 
     /// initialize() on every module, in the order they were added.
     void initialize();
@@ -75,6 +79,7 @@ private:
     std::uint64_t seed_;
     ParallelFor parallel_;
     std::map<unsigned, std::shared_ptr<RandomStream>> streams_;
+    StudyParameters parameters_;
     std::vector<std::unique_ptr<Module>> modules_;
     FutureEventSet fes_;
     SignalTable signals_;

@@ -27,6 +27,10 @@ void Service::send(std::unique_ptr<V2xMessage> message) {
 
 void Service::listenToAllSignals() { hostOf(middleware_).manager().listenToAllSignals(*this); }
 
+std::optional<kernel::StudyParameters::Value> Service::studyParameter(const std::string& name) const {
+    return simulation().parameters().get(name);
+}
+
 std::optional<std::string> Service::parameter(const std::string& name) const {
     return spec_ == nullptr ? std::nullopt : spec_->parameter(name);
 }

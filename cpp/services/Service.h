@@ -6,6 +6,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/StudyParameters.h"
 #include "sbsim/services/V2xMessage.h"
 #include "sbsim/storyboard/StoryboardSignal.h"
 #include "sbsim/traffic/VehicleController.h"
@@ -50,6 +51,9 @@ protected:
     /// From now on, also receive storyboard signals meant for other vehicles.
     void listenToAllSignals();
 
+    /// A study parameter of the run (`--param NAME=VALUE`), or nothing; reading it counts as
+    /// used. Lets a sweep vary a service's threshold or range without editing the services file.
+    std::optional<kernel::StudyParameters::Value> studyParameter(const std::string& name) const;
     /// A parameter from the services file (an attribute of the <service> element).
     std::optional<std::string> parameter(const std::string& name) const;
     /// A numeric parameter, or `fallback` when absent; a malformed value is a configuration error.

@@ -1,5 +1,7 @@
 #include "sbsim/services/ServicesConfig.h"
 
+#include <fmt/format.h>
+#include <re2/re2.h>
 #include <tinyxml2.h>
 
 #include <algorithm>
@@ -195,11 +197,18 @@ ServiceFilter parseFilter(const XMLElement& element, const std::string& source) 
         }
     }
     if (!hasPattern) fail(source, line, tag(name) + " filter has no 'pattern' attribute");
-    try {
-        filter.regex = std::regex(filter.pattern, std::regex::ECMAScript | std::regex::optimize);
-    } catch (const std::regex_error& e) {
-        fail(source, line, "invalid pattern '" + filter.pattern + "' in " + tag(name) + " filter: " + e.what());
+    if (filter.pattern.size() > ServiceFilter::kMaxPatternLength) {
+        fail(source, line,
+             fmt::format("the pattern of {} filter is {} characters long (at most {})", tag(name),
+                         filter.pattern.size(), ServiceFilter::kMaxPatternLength));
     }
+    RE2::Options options;
+    options.set_log_errors(false);  // the error goes into our one line instead
+    auto regex = std::make_shared<const RE2>(filter.pattern, options);
+    if (!regex->ok()) {
+        fail(source, line, "invalid pattern '" + filter.pattern + "' in " + tag(name) + " filter: " + regex->error());
+    }
+    filter.regex = std::move(regex);
     rejectText(element, source);
     return filter;
 }
@@ -286,7 +295,7 @@ std::vector<ServiceSpec> readServices(std::string_view text, const std::string& 
 
 bool ServiceFilter::matches(std::string_view vehicleId, std::string_view vehicleType) const {
     const std::string_view subjectText = subject == Subject::VehicleId ? vehicleId : vehicleType;
-    return std::regex_match(subjectText.begin(), subjectText.end(), regex) != inverse;
+    return RE2::FullMatch(re2::StringPiece(subjectText.data(), subjectText.size()), *regex) != inverse;
 }
 
 bool ServiceSpec::matches(std::string_view vehicleId, std::string_view vehicleType) const {

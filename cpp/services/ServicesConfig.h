@@ -3,14 +3,18 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
-#include <regex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
+
+namespace re2 {
+class RE2;
+}
 
 namespace sbsim::services {
 
@@ -26,8 +30,13 @@ struct SBSIM_API ServiceFilter {
     enum class Subject { VehicleId, VehicleType };
 
     Subject subject = Subject::VehicleId;
-    std::string pattern;   ///< as written, for messages
-    std::regex regex;      ///< ECMAScript, compiled once at load; must match the whole id or type
+    /// Longest pattern accepted; RE2 also bounds the memory a compiled pattern may take.
+    static constexpr std::size_t kMaxPatternLength = 1000;
+
+    std::string pattern;  ///< as written, for messages
+    /// RE2, compiled once at load; must match the whole id or type. RE2 matches in time linear in
+    /// the id's length whatever the pattern (no backtracking), so no pattern can hang a run.
+    std::shared_ptr<const re2::RE2> regex;
     bool inverse = false;  ///< match="inverse": the filter passes when the pattern does not match
     int line = 0;
 

@@ -7,6 +7,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/storyboard/ConditionResult.h"
 #include "sbsim/storyboard/EffectStack.h"
+#include "sbsim/storyboard/VehicleHandle.h"
 #include "sbsim/traffic/VehicleController.h"
 
 namespace sbsim::storyboard {
@@ -20,6 +21,8 @@ public:
     virtual const Story& story() const = 0;
     virtual const std::string& vehicleId() const = 0;
     virtual traffic::VehicleController& vehicle() = 0;
+    /// A handle to the vehicle that may outlive the call (what scripts get).
+    virtual VehicleHandle handle() = 0;
     /// The vehicle's composition of built-in effects.
     virtual EffectStack& stack() = 0;
     /// Identifies this activation of this effect (for EffectStack::remove).

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/SimTime.h"
 #include "sbsim/storyboard/Condition.h"
 #include "sbsim/storyboard/Effect.h"
 
@@ -28,6 +29,12 @@ public:
     std::optional<std::uint64_t> maxActivations() const { return maxActivations_; }
 
     std::uint64_t activations() const { return activations_; }
+    /// Vehicles the story is active on now.
+    std::uint64_t activeVehicles() const { return activeVehicles_; }
+    /// The time vehicles spent under the story, summed over vehicles (a vehicle active from its
+    /// activation step to its deactivation step counts that difference): a measure of how much a
+    /// story did that, unlike activations, does not depend on how often it flickers.
+    double activeVehicleSeconds() const { return activeTime_.seconds(); }
 
 private:
     friend class Storyboard;
@@ -37,6 +44,8 @@ private:
     bool explicitName_ = false;
     std::optional<std::uint64_t> maxActivations_;
     std::uint64_t activations_ = 0;
+    std::uint64_t activeVehicles_ = 0;
+    kernel::SimTime activeTime_;
 };
 
 using StoryPtr = std::shared_ptr<Story>;

@@ -26,6 +26,7 @@ public:
     const Story& story() const override { return story_; }
     const std::string& vehicleId() const override { return id_; }
     traffic::VehicleController& vehicle() override { return *state_.controller; }
+    VehicleHandle handle() override { return VehicleHandle(id_, state_.controller); }
     EffectStack& stack() override { return *state_.stack; }
     EffectStack::Token token() const override { return token_; }
     /// Converted from snapshot indices on first use: most activations never ask.
@@ -134,13 +135,21 @@ Storyboard::VehicleState& Storyboard::stateFor(const std::string& id) {
 
 void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left) {
     const auto started = std::chrono::steady_clock::now();
+    // The vehicles active since the last pass were active for the time in between.
+    if (updated_ && snapshot.time() > now_) {
+        const kernel::SimTime elapsed = snapshot.time() - now_;
+        for (const StoryPtr& story : stories_)
+            story->activeTime_ += elapsed * static_cast<kernel::SimTime::rep>(story->activeVehicles_);
+    }
+    updated_ = true;
     now_ = snapshot.time();
     std::sort(left.begin(), left.end());
     for (const std::string& id : left) {
         if (const auto it = vehicles_.find(id); it != vehicles_.end()) {
             for (std::size_t s = 0; s < stories_.size(); ++s) {
-                if (it->second.active[s] && log_ != nullptr)
-                    log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
+                if (!it->second.active[s]) continue;
+                --stories_[s]->activeVehicles_;
+                if (log_ != nullptr) log_->deactivate(now_, stories_[s]->name(), id, "vehicle_left");
             }
             forgetState(id);
             vehicles_.erase(it);
@@ -255,6 +264,7 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
     state.active[s] = true;
     ++state.activations[s];
     ++story.activations_;
+    ++story.activeVehicles_;
     if (log_ != nullptr) log_->activate(now_, story.name(), id);
     Scope scope(*this, state, story, id, &result, &snapshot);
     for (const EffectPtr& effect : story.effects()) {
@@ -268,6 +278,7 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
 void Storyboard::deactivate(VehicleState& state, std::size_t s, const std::string& id) {
     Story& story = *stories_[s];
     state.active[s] = false;
+    --story.activeVehicles_;
     if (log_ != nullptr) log_->deactivate(now_, story.name(), id, "condition");
     Scope scope(*this, state, story, id);
     auto& applied = state.applied[s];

@@ -72,7 +72,8 @@ private:
         EffectStack::Token token;
     };
     struct VehicleState {
-        std::unique_ptr<traffic::VehicleController> controller;
+        /// Shared only with the weak VehicleHandles given to scripts; gone when the vehicle leaves.
+        std::shared_ptr<traffic::VehicleController> controller;
         std::unique_ptr<EffectStack> stack;
         std::vector<std::vector<AppliedEffect>> applied;  // per story; non-empty iff active
         std::vector<bool> active;                         // per story
@@ -99,6 +100,7 @@ private:
 
     EventLog* log_;
     kernel::SimTime now_;
+    bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;
     std::vector<bool> pure_;                                 // per story: its whole tree is pure
     std::vector<std::uint64_t> maxActivations_;              // per story, per vehicle (max: unlimited)

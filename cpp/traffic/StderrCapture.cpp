@@ -1,39 +1,52 @@
 #include "sbsim/traffic/StderrCapture.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <iostream>
 
 namespace sbsim::traffic {
 
-StderrCapture::StderrCapture() {
+namespace {
+void flushStderr() {
     std::cerr.flush();
     std::fflush(stderr);
-    file_ = std::tmpfile();
-    if (file_ == nullptr) return;  // cannot capture: errors simply stay on stderr
-    savedFd_ = dup(STDERR_FILENO);
-    if (savedFd_ < 0 || dup2(fileno(file_), STDERR_FILENO) < 0) {
-        if (savedFd_ >= 0) close(savedFd_);
+}
+}  // namespace
+
+StderrCapture::StderrCapture() : file_(std::tmpfile()) {}  // none: errors simply stay on stderr
+
+StderrCapture::~StderrCapture() {
+    stop();
+    if (file_ != nullptr) std::fclose(file_);
+}
+
+void StderrCapture::start() {
+    if (file_ == nullptr || savedFd_ >= 0) return;
+    flushStderr();
+    savedFd_ = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
+    if (savedFd_ >= 0 && dup2(fileno(file_), STDERR_FILENO) < 0) {
+        close(savedFd_);
         savedFd_ = -1;
-        std::fclose(file_);
-        file_ = nullptr;
     }
 }
 
-StderrCapture::~StderrCapture() { finish(); }
-
-std::string StderrCapture::finish() {
-    if (file_ == nullptr) return {};
-    std::cerr.flush();
-    std::fflush(stderr);
+std::string StderrCapture::stop() {
+    if (savedFd_ < 0) return {};
+    flushStderr();
     dup2(savedFd_, STDERR_FILENO);
     close(savedFd_);
-    std::string text;
-    std::rewind(file_);
-    char buf[4096];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, file_)) > 0;) text.append(buf, n);
-    std::fclose(file_);
-    file_ = nullptr;
+    savedFd_ = -1;
+    // Usually nothing was written: one lseek tells.
+    const int fd = fileno(file_);
+    const off_t size = lseek(fd, 0, SEEK_END);
+    if (size <= 0) return {};
+    std::string text(static_cast<std::size_t>(size), '\0');
+    const ssize_t n = pread(fd, text.data(), text.size(), 0);
+    text.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+    // Empty again for the next start(); the descriptor's offset is shared with stderr's writes.
+    if (ftruncate(fd, 0) != 0) text += "\n(sbsim: cannot reuse the capture file)";
+    lseek(fd, 0, SEEK_SET);
     return text;
 }
 

@@ -5,9 +5,10 @@
 
 namespace sbsim::traffic {
 
-/// Redirects file descriptor 2 into a temporary file for its lifetime. SUMO reports load errors
-/// only by printing them to stderr (the exception just says "Process Error"), so the bridge
-/// captures them to build one clear error line. Restores stderr when destroyed.
+/// Catches what is written to file descriptor 2 between start() and stop(), in a temporary file
+/// kept for the object's lifetime. SUMO reports many errors only by printing them (the exception
+/// just says "Process Error"), so the bridge captures its load and its every step to turn them
+/// into one clear line. Restores stderr when destroyed.
 class StderrCapture {
 public:
     StderrCapture();
@@ -15,8 +16,10 @@ public:
     StderrCapture(const StderrCapture&) = delete;
     StderrCapture& operator=(const StderrCapture&) = delete;
 
-    /// Restores stderr and returns everything written meanwhile.
-    std::string finish();
+    /// Redirects stderr into the file (does nothing if the file could not be made).
+    void start();
+    /// Restores stderr and returns what was written since start().
+    std::string stop();
 
 private:
     std::FILE* file_ = nullptr;

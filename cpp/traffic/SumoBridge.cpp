@@ -3,13 +3,15 @@
 #include <libsumo/Simulation.h>
 #include <libsumo/Vehicle.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "sbsim/kernel/OneLine.h"
-#include "sbsim/traffic/StderrCapture.h"
 
 namespace sbsim::traffic {
 
@@ -39,6 +41,26 @@ std::string sumoErrorLine(const std::string& printed, const std::string& fallbac
     }
     return kernel::oneLine(line.empty() ? fallback : line);
 }
+
+/// Runs `call` with stderr captured. Returns nothing if it succeeded (having passed SUMO's
+/// warnings on to stderr, as SUMO printed them), else SUMO's error as one line. Every exception
+/// counts: libsumo's, and SUMO's own ProcessErrors, which are plain std::runtime_errors.
+template <typename F>
+std::optional<std::string> capturingErrors(StderrCapture& capture, F call) {
+    std::optional<std::string> failure;
+    capture.start();
+    try {
+        call();
+    } catch (const std::exception& e) {
+        failure = e.what();
+    } catch (...) {
+        failure = "unknown error";
+    }
+    const std::string printed = capture.stop();
+    if (failure) return sumoErrorLine(printed, failure->empty() ? "unknown error" : *failure);
+    if (!printed.empty()) std::fputs(printed.c_str(), stderr);
+    return std::nullopt;
+}
 }  // namespace
 
 const kernel::SignalId SumoBridge::departedSignal = kernel::registerSignal("vehicleDeparted");
@@ -65,19 +87,16 @@ void SumoBridge::load() {
     if (settings_.quiet) defaultOption(args, "--no-warnings", "true");
     args.insert(args.end(), extra.begin(), extra.end());
 
-    StderrCapture capture;
-    std::string failure;
-    try {
-        libsumo::Simulation::load(args);
-    } catch (const libsumo::TraCIException& e) {
-        failure = e.what();
-    } catch (const libsumo::FatalTraCIError& e) {
-        failure = e.what();
+    if (const auto failure = capturingErrors(capture_, [&] { libsumo::Simulation::load(args); })) {
+        throw SumoLoadError(*failure);
     }
-    const std::string printed = capture.finish();
-    if (!failure.empty()) throw SumoLoadError(sumoErrorLine(printed, failure));
-    std::fputs(printed.c_str(), stderr);  // warnings of a successful load, as SUMO printed them
     loaded_ = true;
+    try {
+        checkTimes(libsumo::Simulation::getTime(), libsumo::Simulation::getEndTime());
+    } catch (const SumoLoadError&) {
+        close();
+        throw;
+    }
 
     stepLength_ = kernel::SimTime::fromSeconds(libsumo::Simulation::getDeltaT());
     builder_.setStepLength(libsumo::Simulation::getDeltaT());
@@ -87,6 +106,18 @@ void SumoBridge::load() {
     if (!end_ && configuredEnd >= 0) end_ = kernel::SimTime::fromSeconds(configuredEnd);
     const libsumo::TraCIPositionVector b = libsumo::Simulation::getNetBoundary();
     if (b.value.size() >= 2) boundary_ << b.value[0].x, b.value[1].x, b.value[0].y, b.value[1].y;
+}
+
+void SumoBridge::checkTimes(double begin, double end) {
+    // Beyond these, sbsim's nanosecond clock would overflow (SUMO's millisecond one does not).
+    if (!(std::fabs(begin) <= kMaxSeconds)) {
+        throw SumoLoadError(
+            fmt::format("the begin time {:g} s is beyond what sbsim runs (at most {:g} s)", begin, kMaxSeconds));
+    }
+    if (!(end <= kMaxSeconds)) {
+        throw SumoLoadError(
+            fmt::format("the end time {:g} s is beyond what sbsim runs (at most {:g} s)", end, kMaxSeconds));
+    }
 }
 
 void SumoBridge::initialize() {
@@ -124,7 +155,7 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     if (&msg != &stepMessage_) return kernel::Module::handleMessage(msg);
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
-    libsumo::Simulation::step();
+    step();
     const Clock::time_point stepped = Clock::now();
     ++steps_;
     std::vector<std::string> departed = libsumo::Simulation::getDepartedIDList();
@@ -145,6 +176,14 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
 
     if (libsumo::Simulation::getMinExpectedNumber() <= 0) return endRun(EndReason::NoMoreVehicles);
     scheduleNextStep();
+}
+
+std::string SumoBridge::sumoVersion() const { return libsumo::Simulation::getVersion().second; }
+
+void SumoBridge::step() {
+    if (const auto failure = capturingErrors(capture_, [] { libsumo::Simulation::step(); })) {
+        throw SumoError(*failure);
+    }
 }
 
 // SUMO stays loaded until the bridge is destroyed, so other modules' finish() can still ask it

@@ -10,6 +10,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/traffic/SnapshotBuilder.h"
+#include "sbsim/traffic/StderrCapture.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
@@ -26,10 +27,17 @@ struct SBSIM_API SumoSettings {
     bool readVehicles = true;
 };
 
-/// Raised when SUMO refuses the configuration; carries SUMO's own message.
-class SBSIM_API SumoLoadError : public std::runtime_error {
+/// An error SUMO reported, as one line: its exception's message, or the "Error:" lines it printed
+/// (which name the file and line where SUMO knows them).
+class SBSIM_API SumoError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+};
+
+/// Raised when SUMO refuses the configuration (or sbsim refuses what SUMO loaded).
+class SBSIM_API SumoLoadError : public SumoError {
+public:
+    using SumoError::SumoError;
 };
 
 /// Drives SUMO through libsumo as a kernel module: one self-message per SUMO step. After each step
@@ -38,7 +46,8 @@ public:
 /// Vehicles are reported in ascending byte order of id. The run stops after the step that reaches
 /// the end time, or when SUMO expects no more vehicles, once every other event due at that time has
 /// been delivered. SUMO is closed by the destructor, whatever happened (not in finish(): other
-/// modules' finish() may still ask SUMO about their vehicles).
+/// modules' finish() may still ask SUMO about their vehicles). Whatever SUMO throws from a step
+/// (libsumo's exceptions and its own ProcessErrors alike) comes out as a SumoError.
 class SBSIM_API SumoBridge : public kernel::Module {
 public:
     static const kernel::SignalId departedSignal;
@@ -47,13 +56,16 @@ public:
 
     /// Steps come before other events due at the same time, so everything at time t sees step t.
     static constexpr int kStepPriority = -1000;
+    /// The latest begin or end time sbsim runs (about 95 years): every step must fit its clock.
+    static constexpr double kMaxSeconds = 3.0e9;
 
     enum class EndReason { Running, EndTime, NoMoreVehicles };
 
     explicit SumoBridge(SumoSettings settings);
     ~SumoBridge() override;
 
-    /// Loads SUMO now (initialize() does it otherwise); throws SumoLoadError with SUMO's message.
+    /// Loads SUMO now (initialize() does it otherwise); throws SumoLoadError with SUMO's message,
+    /// or if the begin or end time is beyond kMaxSeconds.
     void load();
     bool loaded() const { return loaded_; }
 
@@ -75,10 +87,14 @@ public:
     std::size_t peakRunning() const { return peakRunning_; }
     /// Wall-clock seconds spent inside SUMO's steps and reading the snapshot (profiling figures).
     double sumoSeconds() const { return sumoSeconds_; }
+    /// SUMO's version string, e.g. "SUMO v1_28_0" (asked of libsumo; SUMO must be loaded).
+    std::string sumoVersion() const;
     double snapshotSeconds() const { return snapshotSeconds_; }
 
 private:
     void close();
+    void checkTimes(double begin, double end);
+    void step();
     void scheduleNextStep();
     void endRun(EndReason reason);
     void announce(const std::vector<std::string>& ids, kernel::SignalId signal);
@@ -93,6 +109,7 @@ private:
     kernel::Message endMessage_{"end of run"};
     SnapshotBuilder builder_;
     VehicleSnapshot snapshot_;
+    StderrCapture capture_;
     EndReason endReason_ = EndReason::Running;
     std::uint64_t steps_ = 0;
     std::uint64_t vehiclesSeen_ = 0;

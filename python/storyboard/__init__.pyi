@@ -1,5 +1,5 @@
 # Types of the story API that sbsim provides to story scripts (implemented in C++).
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from typing import Protocol
 
 import numpy as np
@@ -40,7 +40,7 @@ class RandomNumberGenerator:
 RNG = RandomNumberGenerator
 
 class Vehicle:
-    """One vehicle of the current step's snapshot (valid during the call it is passed to)."""
+    """One vehicle of the current step's snapshot; reading it after that step raises ValueError."""
 
     id: str
     index: int
@@ -59,7 +59,11 @@ class Vehicle:
     time: float
 
 class Snapshot:
-    """All running vehicles after a step, ascending id order; arrays are read-only views."""
+    """All running vehicles after a step, ascending id order.
+
+    Arrays are read-only copies (made on first access, safe to keep); the snapshot itself raises
+    ValueError when read after its step.
+    """
 
     time: float
     ids: list[str]
@@ -73,8 +77,14 @@ class Snapshot:
     def __len__(self) -> int: ...
     def index_of(self, id: str) -> int | None: ...
 
+class VehicleGoneError(RuntimeError):
+    """A VehicleController used after its vehicle left the simulation."""
+
 class VehicleController:
+    """Commands one vehicle; may be kept, but raises VehicleGoneError once the vehicle has left."""
+
     id: str
+    alive: bool
     type_id: str
     road_id: str
     lane_id: str
@@ -227,6 +237,17 @@ class Story:
         max_activations: int | None = None,
     ) -> None: ...
 
+class Parameters:
+    """The run's study parameters (--param NAME=VALUE), read-only; values are bool, int, float or str."""
+
+    def __getitem__(self, name: str) -> bool | int | float | str: ...
+    def get(self, name: str, default: object = None) -> object: ...
+    def __contains__(self, name: str) -> bool: ...
+    def __len__(self) -> int: ...
+    def __iter__(self) -> Iterator[str]: ...
+    def keys(self) -> list[str]: ...
+    def items(self) -> list[tuple[str, bool | int | float | str]]: ...
+
 class Storyboard:
     stories: list[Story]
     warmup_end_time: SimTime
@@ -234,6 +255,9 @@ class Storyboard:
     def register_story(self, story: Story) -> None: ...
     def getRandomNumberGenerator(self, k: int = 0) -> RandomNumberGenerator: ...
     def random_generator(self, k: int = 0) -> RandomNumberGenerator: ...
+    @property
+    def parameters(self) -> Parameters: ...
+    def parameter(self, name: str, default: object = None) -> object: ...
     def getWarmupEndTime(self) -> SimTime: ...
     def convertTraciPosition(self, x: float, y: float) -> Coord: ...
     def convert_traci_position(self, x: float, y: float) -> Coord: ...

@@ -89,6 +89,13 @@ def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
         return [json.loads(line) for line in f if line.strip()]
 
 
+def read_summary(path: str | os.PathLike[str]) -> dict[str, Any]:
+    """The run's ``--summary`` JSON document (machine-readable; the text summary on stdout is for people)."""
+    with open(path, encoding="utf-8") as f:
+        data: dict[str, Any] = json.load(f)
+    return data
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """``python -m storyboard.runner --cmake-prefix`` prints :func:`cmake_prefix`."""
     import argparse

@@ -3,6 +3,9 @@
 From 120 s to 420 s a downpour covers the 3 x 3 junctions at x, y in {400, 600, 800}: every
 vehicle in that district is capped at 5 m/s. A second story warns the drivers that reach the
 district still faster than 8 m/s, to show conditions composing with the same area.
+
+Study parameters (``--param``): ``rain_speed`` (m/s, default 5) and ``warn_above`` (m/s, default 8);
+``stories/grid-rain/study.toml`` sweeps the first.
 """
 
 from __future__ import annotations
@@ -28,10 +31,12 @@ WARN_ABOVE_MPS = 8.0
 
 def createStories(board: storyboard.Storyboard) -> None:
     # One shared condition object for both stories: its area and window are defined once.
+    rain_speed = float(board.parameter("rain_speed", RAIN_SPEED_MPS))  # type: ignore[arg-type]
+    warn_above = float(board.parameter("warn_above", WARN_ABOVE_MPS))  # type: ignore[arg-type]
     raining_here = storyboard.all_of(PolygonCondition(DISTRICT), TimeCondition(RAIN_BEGIN_S, RAIN_END_S))
 
-    board.registerStory(Story(raining_here, [SpeedEffect(RAIN_SPEED_MPS)], name="rain"))
+    board.registerStory(Story(raining_here, [SpeedEffect(rain_speed)], name="rain"))
 
     # Vehicles entering the district still fast (the cap makes them brake over the next steps).
-    too_fast = storyboard.all_of(raining_here, SpeedConditionGreater(WARN_ABOVE_MPS))
+    too_fast = storyboard.all_of(raining_here, SpeedConditionGreater(warn_above))
     board.registerStory(Story(too_fast, [SignalEffect("heavy rain: slow down")], name="rain-warning"))

@@ -24,7 +24,17 @@ OFFSET_BOUNDARY = (-100.0, -50.0, 700.0, 650.0)
 TIMING_KEYS = ("wall time:", "real-time factor:", "time in sumo:", "time reading vehicles:", "time in storyboard:")
 
 #: What a C++ crash looks like on stderr.
-CRASH_MARKERS = ("terminate called", "Aborted", "core dumped", "Segmentation fault", "what():")
+CRASH_MARKERS = (
+    "terminate called",
+    "Aborted",
+    "core dumped",
+    "Segmentation fault",
+    "what():",
+    # Sanitizer reports (./run-tests --sanitize).
+    "AddressSanitizer",
+    "LeakSanitizer",
+    "runtime error:",
+)
 
 
 def stable_stdout(stdout: str) -> str:

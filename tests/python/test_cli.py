@@ -68,6 +68,8 @@ OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--sumo-option": (None, None),
     "--services": (None, None),
     "--plugin": (None, None),
+    "--param": (None, None),
+    "--summary": (None, None),
     "--middleware-interval": (None, "0.1"),
     "--v2x-range": (None, "500"),
     "--v2x-latency": (None, "0.001"),

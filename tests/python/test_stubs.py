@@ -43,7 +43,8 @@ TYPED_DUNDERS = {dunders!r}
 def members(cls):
     names = set()
     for klass in cls.__mro__:
-        if klass is object or klass.__module__ == "pybind11_builtins":
+        # Python's own bases (object, the exceptions' BaseException...) are typed by typeshed.
+        if klass.__module__ in ("builtins", "pybind11_builtins"):
             continue
         names |= {{n for n in vars(klass) if not n.startswith("_") or n in TYPED_DUNDERS}}
     return sorted(names)

@@ -2,6 +2,9 @@
 
 #include <pybind11/stl.h>
 
+#include <variant>
+
+#include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
@@ -24,9 +27,69 @@ struct BoardHandle {
     }
 };
 
+/// `board.parameters`: the run's study parameters as a read-only mapping. Reading a value counts
+/// as using it (the run warns about parameters never used).
+struct ParametersView {
+    const kernel::StudyParameters& parameters() const { return BoardHandle{}.board().simulation().parameters(); }
+};
+
+py::object toPython(const kernel::StudyParameters::Value& value) {
+    return std::visit([](const auto& v) -> py::object { return py::cast(v); }, value);
+}
+
+py::object lookup(const kernel::StudyParameters& parameters, const std::string& name, const py::object& fallback) {
+    const auto value = parameters.get(name);
+    return value ? toPython(*value) : fallback;
+}
+
 }  // namespace
 
 void bindBoard(py::module_& m) {
+    py::class_<ParametersView>(m, "Parameters")
+        .def("__getitem__",
+             [](const ParametersView& p, const std::string& name) {
+                 const auto value = p.parameters().get(name);
+                 if (!value) throw py::key_error(name);
+                 return toPython(*value);
+             })
+        .def(
+            "get",
+            [](const ParametersView& p, const std::string& name, const py::object& fallback) {
+                return lookup(p.parameters(), name, fallback);
+            },
+            py::arg("name"), py::arg("default") = py::none())
+        .def("__contains__",
+             [](const ParametersView& p, const std::string& name) { return p.parameters().contains(name); })
+        .def("__len__", [](const ParametersView& p) { return p.parameters().all().size(); })
+        .def("__iter__",
+             [](const ParametersView& p) {
+                 py::list names;
+                 for (const auto& [name, value] : p.parameters().all()) names.append(name);
+                 return py::iter(names);
+             })
+        .def("keys",
+             [](const ParametersView& p) {
+                 py::list names;
+                 for (const auto& [name, value] : p.parameters().all()) names.append(name);
+                 return names;
+             })
+        .def("items",
+             [](const ParametersView& p) {
+                 py::list items;
+                 for (const auto& [name, value] : p.parameters().all()) {
+                     items.append(py::make_tuple(name, lookup(p.parameters(), name, py::none())));
+                 }
+                 return items;
+             })
+        .def("__repr__", [](const ParametersView& p) {
+            std::string out = "Parameters({";
+            for (const auto& [name, value] : p.parameters().all()) {
+                if (out.back() != '{') out += ", ";
+                out += py::repr(py::str(name)).cast<std::string>() + ": " + kernel::StudyParameters::format(value);
+            }
+            return out + "})";
+        });
+
     py::class_<Story, py::smart_holder>(m, "Story")
         .def(py::init([](ConditionPtr condition, const py::object& effects, std::optional<std::string> name,
                          const py::object& maxActivations) {
@@ -76,6 +139,13 @@ void bindBoard(py::module_& m) {
         .def("register_story", registerStory, py::arg("story"))
         .def("getRandomNumberGenerator", randomGenerator, py::arg("k") = 0)
         .def("random_generator", randomGenerator, py::arg("k") = 0)
+        .def_property_readonly("parameters", [](const BoardHandle&) { return ParametersView{}; })
+        .def(
+            "parameter",
+            [](const BoardHandle& h, const std::string& name, const py::object& fallback) {
+                return lookup(h.board().simulation().parameters(), name, fallback);
+            },
+            py::arg("name"), py::arg("default") = py::none())
         .def("getWarmupEndTime", [](const BoardHandle& h) { return h.board().warmupEndTime(); })
         .def_property_readonly("warmup_end_time", [](const BoardHandle& h) { return h.board().warmupEndTime(); })
         .def("convertTraciPosition", convert, py::arg("x"), py::arg("y"))

@@ -2,6 +2,8 @@
 
 #include <pybind11/stl.h>
 
+#include <limits>
+
 #include "sbsim/storyboard/conditions/AccelerationCondition.h"
 #include "sbsim/storyboard/conditions/AllCondition.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
@@ -205,10 +207,12 @@ void bindConditions(py::module_& m) {
                      throw py::type_error("LimitCondition needs a whole number of vehicles, got " +
                                           py::repr(n).cast<std::string>());
                  }
-                 const long long count = n.cast<long long>();
-                 if (count < 0)
-                     throw py::value_error("LimitCondition needs a count >= 0, got " + std::to_string(count));
-                 return std::make_shared<LimitCondition>(static_cast<unsigned>(count));
+                 // Compared as Python ints: a count beyond 64 bits must not wrap into a small one.
+                 if (n < py::int_(0) || n > py::int_(std::numeric_limits<std::int64_t>::max())) {
+                     throw py::value_error("LimitCondition needs a count from 0 to 2**63-1, got " +
+                                           py::repr(n).cast<std::string>());
+                 }
+                 return std::make_shared<LimitCondition>(n.cast<std::int64_t>());
              }),
              py::arg("n"));
     py::class_<LikelihoodCondition, Condition, py::smart_holder>(m, "LikelihoodCondition")

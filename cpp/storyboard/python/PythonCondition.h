@@ -4,6 +4,7 @@
 #include <pybind11/trampoline_self_life_support.h>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "sbsim/storyboard/Condition.h"
@@ -17,9 +18,12 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     void forget(std::string_view vehicleId) override;
+    ~PythonCondition() override;
 
 private:
     std::vector<std::uint8_t> mask_;
+    /// The views handed out this step; set false when the next step begins (or at destruction).
+    std::shared_ptr<bool> stepValid_;
     bool vectorised_ = false;
 };
 

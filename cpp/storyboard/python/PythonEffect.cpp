@@ -19,7 +19,7 @@ void PythonEffect::call(const char* method, EffectScope& scope) {
             throwContractError(self, py::str(py::type::of(self).attr("__name__")).cast<std::string>() +
                                          " must define " + method + "(self, vehicle)");
         }
-        f(py::cast(&scope.vehicle(), py::return_value_policy::reference));
+        f(py::cast(scope.handle()));
     } catch (py::error_already_set& e) {
         throwStoryError(e, where);
     }

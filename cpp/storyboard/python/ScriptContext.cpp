@@ -22,9 +22,13 @@ void throwStoryError(py::error_already_set& error, const std::string& during) {
         for (const py::handle line : lines) details += line.cast<std::string>();
 
         if (error.matches(PyExc_SyntaxError)) {
+            // A file Python cannot even compile (null bytes, a bad encoding) has no filename or
+            // line in the error: then it is the script, as a whole.
             const py::object value = error.value();
-            where = py::str(value.attr("filename")).cast<std::string>() + ":" +
-                    py::str(value.attr("lineno")).cast<std::string>();
+            const py::object file = value.attr("filename");
+            const py::object line = value.attr("lineno");
+            where = file.is_none() ? script : py::str(file).cast<std::string>();
+            if (!line.is_none()) where += ":" + py::str(line).cast<std::string>();
         } else {
             std::string innermost;
             for (py::object tb = error.trace(); !tb.is_none(); tb = tb.attr("tb_next")) {

@@ -9,25 +9,32 @@ namespace sbsim::storyboard {
 
 namespace {
 
-/// A read-only numpy view of `n` doubles at `data` (stride in doubles).
-py::array view(const double* data, py::ssize_t n, py::ssize_t columns, const py::handle& owner) {
-    py::array out =
-        columns == 1
-            ? py::array(py::dtype::of<double>(), {n}, {static_cast<py::ssize_t>(sizeof(double))}, data, owner)
-            : py::array(py::dtype::of<double>(), {n, columns},
-                        {static_cast<py::ssize_t>(columns * sizeof(double)), static_cast<py::ssize_t>(sizeof(double))},
-                        data, owner);
+/// A read-only numpy copy of `n` rows of `columns` doubles at `data`.
+py::array copy(const double* data, py::ssize_t n, py::ssize_t columns) {
+    py::array out = columns == 1 ? py::array(py::dtype::of<double>(), {n}, {}, data)
+                                 : py::array(py::dtype::of<double>(), {n, columns}, {}, data);
     out.attr("setflags")(py::arg("write") = false);
     return out;
 }
 
-const traffic::VehicleSnapshot& snap(const VehicleView& v) { return *v.snapshot; }
+const traffic::VehicleSnapshot& current(const traffic::VehicleSnapshot* snapshot, const StepValidity& valid,
+                                        const char* what) {
+    if (!valid || !*valid) {
+        throw py::value_error(std::string("storyboard: this ") + what +
+                              " belongs to an earlier step; read what you need during the call it is passed to");
+    }
+    return *snapshot;
+}
 
-/// A per-vehicle column of the snapshot behind the SnapshotView `self`.
+const traffic::VehicleSnapshot& snap(const VehicleView& v) { return current(v.snapshot, v.valid, "Vehicle"); }
+const traffic::VehicleSnapshot& snap(const SnapshotView& s) { return current(s.snapshot, s.valid, "Snapshot"); }
+
+/// A per-vehicle column of the snapshot, copied on first access in the call.
 template <const Eigen::VectorXd& (traffic::VehicleSnapshot::*Column)() const>
-py::array column(py::object self) {
-    const auto& s = *self.cast<const SnapshotView&>().snapshot;
-    return view((s.*Column)().data(), s.size(), 1, self);
+py::object column(SnapshotView& self, const char* name) {
+    const auto& s = snap(self);
+    if (!self.columns.contains(name)) self.columns[name] = copy((s.*Column)().data(), s.size(), 1);
+    return self.columns[name];
 }
 
 }  // namespace
@@ -56,23 +63,33 @@ void bindSnapshotView(py::module_& m) {
         .def("__repr__", [](const VehicleView& v) { return "<Vehicle " + snap(v).ids()[v.index] + ">"; });
 
     py::class_<SnapshotView>(m, "Snapshot")
-        .def_property_readonly("time", [](const SnapshotView& s) { return s.snapshot->time().seconds(); })
-        .def("__len__", [](const SnapshotView& s) { return s.snapshot->size(); })
-        .def_property_readonly("ids", [](const SnapshotView& s) { return s.snapshot->ids(); })
+        .def_property_readonly("time", [](const SnapshotView& s) { return snap(s).time().seconds(); })
+        .def("__len__", [](const SnapshotView& s) { return snap(s).size(); })
+        .def_property_readonly("ids", [](const SnapshotView& s) { return snap(s).ids(); })
         .def(
-            "index_of", [](const SnapshotView& s, const std::string& id) { return s.snapshot->indexOf(id); },
-            py::arg("id"))
+            "index_of", [](const SnapshotView& s, const std::string& id) { return snap(s).indexOf(id); }, py::arg("id"))
         .def_property_readonly("positions",
-                               [](py::object self) {
-                                   const auto& s = *self.cast<const SnapshotView&>().snapshot;
-                                   return view(s.positions().data(), s.size(), 2, self);
+                               [](SnapshotView& self) -> py::object {
+                                   const auto& s = snap(self);
+                                   // Eigen keeps positions column-major 2 x N: one vehicle's x, y adjacent.
+                                   if (!self.columns.contains("positions"))
+                                       self.columns["positions"] = copy(s.positions().data(), s.size(), 2);
+                                   return self.columns["positions"];
                                })
-        .def_property_readonly("speeds", &column<&traffic::VehicleSnapshot::speeds>)
-        .def_property_readonly("angles", &column<&traffic::VehicleSnapshot::angles>)
-        .def_property_readonly("accelerations", &column<&traffic::VehicleSnapshot::accelerations>)
-        .def_property_readonly("lengths", &column<&traffic::VehicleSnapshot::lengths>)
-        .def_property_readonly("widths", &column<&traffic::VehicleSnapshot::widths>)
-        .def_property_readonly("max_speeds", &column<&traffic::VehicleSnapshot::maxSpeeds>);
+        .def_property_readonly("speeds",
+                               [](SnapshotView& s) { return column<&traffic::VehicleSnapshot::speeds>(s, "speeds"); })
+        .def_property_readonly("angles",
+                               [](SnapshotView& s) { return column<&traffic::VehicleSnapshot::angles>(s, "angles"); })
+        .def_property_readonly(
+            "accelerations",
+            [](SnapshotView& s) { return column<&traffic::VehicleSnapshot::accelerations>(s, "accelerations"); })
+        .def_property_readonly("lengths",
+                               [](SnapshotView& s) { return column<&traffic::VehicleSnapshot::lengths>(s, "lengths"); })
+        .def_property_readonly("widths",
+                               [](SnapshotView& s) { return column<&traffic::VehicleSnapshot::widths>(s, "widths"); })
+        .def_property_readonly("max_speeds", [](SnapshotView& s) {
+            return column<&traffic::VehicleSnapshot::maxSpeeds>(s, "max_speeds");
+        });
 }
 
 }  // namespace sbsim::storyboard

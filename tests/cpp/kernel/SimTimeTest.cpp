@@ -121,5 +121,15 @@ TEST(SimTime, Arithmetic) {
     EXPECT_EQ(t, SimTime::fromMilliseconds(998));
 }
 
+TEST(SimTime, ArithmeticBeyondTheRangeThrowsInsteadOfWrapping) {
+    const SimTime far = SimTime::fromSeconds(9e9);
+    EXPECT_THROW((void)(far + far), std::out_of_range);
+    EXPECT_THROW((void)(-far - far), std::out_of_range);
+    SimTime t = far;
+    EXPECT_THROW(t += far, std::out_of_range);
+    EXPECT_EQ(t, far) << "a failed += leaves the time as it was";
+    EXPECT_EQ((far - far).raw(), 0);
+}
+
 }  // namespace
 }  // namespace sbsim::kernel

@@ -541,5 +541,22 @@ TEST(ServicesConfigFile, MalformedNumberInALoadedFileNamesTheFile) {
     }
 }
 
+TEST(ServicesConfigFilters, NestedQuantifiersMatchInLinearTime) {
+    // (a+)+$ against "aaa…ab" takes 2^n steps in a backtracking engine (std::regex never returned
+    // for 41 characters); RE2 answers at once, whatever the length.
+    const ServiceSpec spec = onlyService(parse(oneService("<filters><name pattern='(a+)+$'/></filters>")));
+    EXPECT_FALSE(spec.matches(std::string(41, 'a') + "b", "car"));
+    EXPECT_FALSE(spec.matches(std::string(1'000'000, 'a') + "b", "car"));
+    EXPECT_TRUE(spec.matches(std::string(1'000'000, 'a'), "car"));
+}
+
+TEST(ServicesConfigErrors, OverlongPatternIsRefused) {
+    const std::string pattern(ServiceFilter::kMaxPatternLength + 1, 'a');
+    EXPECT_EQ(errorOf(oneService("<filters>\n<name pattern='" + pattern + "'/>\n</filters>\n")),
+              "s.xml:4: the pattern of <name> filter is 1001 characters long (at most 1000)");
+    const std::string nested = std::string(450, '(') + "a" + std::string(450, ')');
+    EXPECT_NO_THROW(parse(oneService("<filters><name pattern='" + nested + "'/></filters>")));
+}
+
 }  // namespace
 }  // namespace sbsim::services

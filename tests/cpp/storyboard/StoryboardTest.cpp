@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,7 @@
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/StoryboardSignal.h"
+#include "sbsim/storyboard/VehicleHandle.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
@@ -316,6 +319,72 @@ TEST(StoryboardParallel, ThreadsChangeNothingButTheTime) {
     EXPECT_GT(std::count(one.begin(), one.end(), '\n'), 1000);
     EXPECT_EQ(runWithThreads(2), one);
     EXPECT_EQ(runWithThreads(4), one);
+}
+
+/// Keeps the handle of every vehicle it is applied to, as a script may.
+class KeepingEffect : public Effect {
+public:
+    void apply(EffectScope& scope) override { kept.push_back(scope.handle()); }
+    void remove(EffectScope&) override {}
+    std::vector<VehicleHandle> kept;
+};
+
+TEST_F(StoryboardTest, KeptHandleOfAVehicleThatLeftThrowsInsteadOfDangling) {
+    auto keeping = std::make_shared<KeepingEffect>();
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{keeping}, "keep"));
+    step(1, {car("x", 10), car("y", 10)});
+    ASSERT_EQ(keeping->kept.size(), 2u);
+    VehicleHandle& x = keeping->kept[0];
+    x.setMaxSpeed(12.0);
+    EXPECT_EQ(commands.maxSpeed.at("x"), 12.0);
+    step(2, {car("y", 10)}, {"x"});
+    EXPECT_FALSE(x.alive());
+    EXPECT_TRUE(keeping->kept[1].alive());
+    try {
+        x.setMaxSpeed(3.0);
+        FAIL() << "a handle of a vehicle that left must throw";
+    } catch (const VehicleGone& e) {
+        EXPECT_STREQ(e.what(), "vehicle 'x' has left the simulation; its VehicleController can no longer be used");
+    }
+    EXPECT_THROW((void)x.speed(), VehicleGone);
+    EXPECT_EQ(commands.maxSpeed.at("x"), 12.0);
+}
+
+TEST_F(StoryboardTest, HandleRefusesValuesSumoCannotTake) {
+    auto keeping = std::make_shared<KeepingEffect>();
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{keeping}, "keep"));
+    step(1, {car("x", 10)});
+    VehicleHandle& x = keeping->kept.at(0);
+    EXPECT_THROW(x.setMaxSpeed(std::nan("")), std::invalid_argument);
+    EXPECT_THROW(x.setMaxSpeed(-1.0), std::invalid_argument);
+    EXPECT_THROW(x.slowDown(5.0, -10.0), std::invalid_argument);
+    EXPECT_THROW(x.slowDown(INFINITY, 1.0), std::invalid_argument);
+    EXPECT_THROW(x.setSpeed(std::nan("")), std::invalid_argument);
+    EXPECT_THROW(x.changeLane(-1, 1.0), std::invalid_argument);
+    EXPECT_EQ(commands.maxSpeed.at("x"), 50.0) << "nothing reached the vehicle";
+    x.setSpeed(-1.0);  // hands control back to SUMO, as in libsumo
+    EXPECT_EQ(commands.setSpeed.at("x").back(), -1.0);
+}
+
+TEST_F(StoryboardTest, ActiveVehicleSecondsSumTheTimeVehiclesSpendUnderAStory) {
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{}, "fast"));
+    const Story& fast = *board.stories()[0];
+    step(1, {car("a", 10), car("b", 1)});
+    EXPECT_EQ(fast.activeVehicles(), 1u);
+    step(2, {car("a", 10), car("b", 10)});  // a: 1 s so far; b joins
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 1.0);
+    step(2.5, {car("a", 1), car("b", 10)});  // both active for 0.5 s, then a stops being fast
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 2.0);
+    EXPECT_EQ(fast.activeVehicles(), 1u);
+    step(4, {car("a", 1)}, {"b"});  // b was active until it left
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 3.5);
+    EXPECT_EQ(fast.activeVehicles(), 0u);
+    step(9, {car("a", 1)});
+    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 3.5);
+    EXPECT_EQ(fast.activations(), 2u);
 }
 
 }  // namespace

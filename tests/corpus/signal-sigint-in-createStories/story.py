@@ -1,0 +1,3 @@
+import time
+def createStories(board):
+    time.sleep(60)

@@ -1,0 +1,4 @@
+
+import storyboard
+def createStories(board):
+    sum(range(10**12))

@@ -1,0 +1,2 @@
+def createStories(board):
+    board.registerStory(42)

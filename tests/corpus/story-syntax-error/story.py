@@ -1,0 +1,2 @@
+def createStories(board)
+    pass

@@ -1,0 +1,3 @@
+import sys
+def createStories(board):
+    sys.exit(3)

@@ -1,0 +1,139 @@
+"""storyboard.study: a 2 x 3 study on a 2-worker LocalCluster, its tables, resuming, failures."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pandas as pd
+import pytest
+from sbsim_helpers import write_story
+from storyboard import study
+from storyboard.runner import run
+
+STORY = """
+    import storyboard
+
+    def createStories(board):
+        fast = storyboard.SpeedConditionGreater(float(board.parameter("threshold", 5)))
+        board.registerStory(storyboard.Story(fast, [storyboard.SignalEffect("fast")], name="fast"))
+        picked = storyboard.LikelihoodCondition(board.getRandomNumberGenerator(), 0.3)
+        board.registerStory(storyboard.Story(picked, [storyboard.SpeedEffect(4.0)], name="picked"))
+"""
+
+
+@pytest.fixture(scope="module")
+def cluster_env(monkeypatch_module: pytest.MonkeyPatch) -> None:
+    """Dask workers import storyboard.study: they must see this tree's python/ folder."""
+    root = Path(__file__).resolve().parents[2] / "python"
+    monkeypatch_module.setenv("PYTHONPATH", f"{root}:{__import__('os').environ.get('PYTHONPATH', '')}")
+
+
+@pytest.fixture(scope="module")
+def monkeypatch_module() -> pytest.MonkeyPatch:
+    with pytest.MonkeyPatch.context() as mp:
+        yield mp
+
+
+def make_spec(trips_cfg: Path, folder: Path, **changes: object) -> study.StudySpec:
+    story = write_story(folder, STORY)
+    data: dict[str, object] = {
+        "sumocfg": str(trips_cfg),
+        "story": str(story),
+        "seeds": {"first": 1, "count": 3},
+        "end": 40,
+        "args": ["--threads", "1"],
+        "parameters": {"threshold": [5, 20.0]},
+        "outputs": {"directory": str(folder / "results")},
+    }
+    data.update(changes)
+    return study.StudySpec.from_dict(data, base=folder)
+
+
+def test_study_on_two_workers_writes_both_tables_like_sequential_runs(
+    trips_cfg: Path, tmp_path: Path, cluster_env: None
+) -> None:
+    spec = make_spec(trips_cfg, tmp_path)
+    result = study.run(spec, workers=2, progress=False)
+    assert result.ran == 6 and not result.failed
+
+    runs = pd.read_parquet(spec.directory / "runs.parquet")
+    assert len(runs) == 6
+    assert sorted(zip(runs["threshold"], runs["seed"], strict=True)) == [
+        (5.0, 1), (5.0, 2), (5.0, 3), (20.0, 1), (20.0, 2), (20.0, 3)
+    ]  # fmt: skip
+    assert (runs["exit_code"] == 0).all()
+    assert {"activations:fast", "activations:picked", "active_vehicle_s:fast", "steps", "wall_s"} <= set(runs.columns)
+    assert (runs["steps"] == 40).all()
+    # The parameter reaches the story: nobody drives above 20 m/s on this grid (13.89 m/s limit).
+    by = runs.set_index(["threshold", "seed"])["activations:fast"]
+    assert all(by[(20.0, s)] == 0 < by[(5.0, s)] for s in (1, 2, 3))
+    seconds = runs.set_index(["threshold", "seed"])["active_vehicle_s:fast"]
+    assert all(seconds[(20.0, s)] == 0 < seconds[(5.0, s)] for s in (1, 2, 3))
+    # Seeds matter for the random story.
+    assert runs[runs["threshold"] == 5]["activations:picked"].nunique() > 1
+
+    events = pd.read_parquet(spec.directory / "events.parquet")
+    assert {"run", "threshold", "seed", "t", "type", "story", "vehicle"} <= set(events.columns)
+    assert set(events["run"]) == set(runs["run"])
+
+    # Every run's event log is byte for byte that of the same run made by hand, one after another.
+    for r in spec.runs():
+        alone = tmp_path / f"alone-{r.id}.jsonl"
+        direct = run(
+            trips_cfg, story=spec.story, events=alone, end=40, quiet=True, extra=[*r.arguments(), "--threads", "1"]
+        )
+        assert direct.returncode == 0, direct.stderr
+        assert (spec.directory / "runs" / r.id / "events.jsonl").read_bytes() == alone.read_bytes(), r.id
+
+
+def test_interrupted_study_runs_only_what_is_missing(trips_cfg: Path, tmp_path: Path, cluster_env: None) -> None:
+    spec = make_spec(trips_cfg, tmp_path, parameters={"threshold": [5]})
+    first = study.run(spec, workers=2, progress=False)
+    assert first.ran == 3
+    # As if stopped half-way: one run never finished, one never started.
+    ids = [r.id for r in spec.runs()]
+    (spec.directory / "runs" / ids[0] / "result.json").unlink()
+    shutil.rmtree(spec.directory / "runs" / ids[2])
+    kept = (spec.directory / "runs" / ids[1] / "result.json").stat().st_mtime_ns
+    again = study.run(spec, workers=2, progress=False)
+    assert again.ran == 2
+    assert (spec.directory / "runs" / ids[1] / "result.json").stat().st_mtime_ns == kept
+    assert len(pd.read_parquet(spec.directory / "runs.parquet")) == 3
+
+
+def test_a_failing_run_is_recorded_not_fatal(trips_cfg: Path, tmp_path: Path, cluster_env: None) -> None:
+    # The story refuses one parameter value: those runs fail (exit 2), the others go on.
+    story = write_story(
+        tmp_path,
+        """
+        import storyboard
+        def createStories(board):
+            if board.parameter("mode") == "broken":
+                raise RuntimeError("this mode is broken")
+            board.registerStory(storyboard.Story(storyboard.TimeCondition(1), [storyboard.SignalEffect("x")]))
+        """,
+        name="modes.py",
+    )
+    spec = make_spec(trips_cfg, tmp_path, story=str(story), parameters={"mode": ["fine", "broken"]})
+    result = study.run(spec, workers=2, progress=False)
+    runs = pd.read_parquet(spec.directory / "runs.parquet")
+    assert len(runs) == 6 and len(result.failed) == 3
+    failed = runs[runs["mode"] == "broken"]
+    assert (failed["exit_code"] == 2).all()
+    assert failed["stderr_tail"].str.contains("this mode is broken").all()
+    assert (runs[runs["mode"] == "fine"]["exit_code"] == 0).all()
+
+
+def test_bad_study_files_are_one_line(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text('sumocfg = "x.sumocfg"\nseeds = []\n')
+    with pytest.raises(study.StudyError, match="seeds must be"):
+        study.StudySpec.load(bad)
+    bad.write_text('sumocfg = "x.sumocfg"\nrain = 5\n')
+    with pytest.raises(study.StudyError, match="unknown key 'rain'"):
+        study.StudySpec.load(bad)
+    bad.write_text("sumocfg = \n")
+    with pytest.raises(study.StudyError, match="bad.toml"):
+        study.StudySpec.load(bad)
+    assert study.main([str(bad)]) == 2
