@@ -50,10 +50,14 @@ if(NOT TARGET tinyxml2::tinyxml2)
   add_library(tinyxml2::tinyxml2 ALIAS PkgConfig::tinyxml2)
 endif()
 
-# Regular expressions in linear time (services filters): Debian's libre2-dev ships pkg-config only.
-find_package(PkgConfig REQUIRED)
-pkg_check_modules(re2 REQUIRED IMPORTED_TARGET GLOBAL re2)
-add_library(re2::re2 ALIAS PkgConfig::re2)
+# Regular expressions in linear time (TypeCondition, services filters: a pattern cannot stall a
+# step). Debian's libre2-dev ships only a pkg-config file; elsewhere RE2 may bring its CMake package.
+find_package(re2 CONFIG QUIET)
+if(NOT TARGET re2::re2)
+  find_package(PkgConfig REQUIRED)
+  pkg_check_modules(re2 REQUIRED IMPORTED_TARGET GLOBAL re2)
+  add_library(re2::re2 ALIAS PkgConfig::re2)
+endif()
 
 # gzip-compressed SUMO files (a state to load, its network), read by the program's checks.
 find_package(ZLIB REQUIRED)

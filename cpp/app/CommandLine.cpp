@@ -73,6 +73,12 @@ void CommandLine::declareOptions(CLI::App& app) {
                                kDefaultSeed))
         ->type_name("N")
         ->check(numberWhere<std::int64_t>("an integer", [](std::int64_t) { return true; }));
+    app.add_option("--warmup", warmup,
+                   "end of the warm-up period, for scripts that ask\n"
+                   "board.getWarmupEndTime() (stories run during it too, as in Artery)")
+        ->type_name("SECONDS")
+        ->check(seconds(true))
+        ->capture_default_str();
     app.add_option("--sumo-option",
                    "extra SUMO options, split into words as a shell would\n"
                    "(quotes, $VARIABLES; no command substitution); repeatable;\n"

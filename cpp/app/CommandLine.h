@@ -24,6 +24,7 @@ struct CommandLine {
     std::vector<std::string> arguments;            ///< the command line as given (for the JSON summary)
     std::optional<double> end;                     ///< seconds
     std::optional<std::int64_t> seed;
+    double warmup = 0;                              ///< s; what board.getWarmupEndTime() returns
     std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`
     std::optional<std::filesystem::path> services;  ///< Artery-format services file
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load

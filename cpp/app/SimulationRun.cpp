@@ -131,6 +131,7 @@ int runSimulation(const CommandLine& cl) {
     if (story) {
         board = &sim.emplaceModule<storyboard::Storyboard>(log ? &*log : nullptr);
         board->attach(sumo);
+        board->setWarmupEndTime(kernel::SimTime::fromSeconds(cl.warmup));
         script = std::make_unique<storyboard::StoryScript>(*python, *story, *board,
                                                            storyboard::CanvasFrame(sumo.netBoundary()));
         std::size_t created = 0;

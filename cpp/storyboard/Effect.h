@@ -29,8 +29,8 @@ public:
     virtual EffectStack::Token token() const = 0;
     /// The condition's other vehicles at activation, ascending ids.
     virtual const std::vector<std::string>& others() const = 0;
-    /// Emits a StoryboardSignal for this vehicle (and logs it).
-    virtual void emitSignal(const std::string& cause) = 0;
+    /// Emits a StoryboardSignal for this vehicle (and logs it); `onExit` when the story deactivates.
+    virtual void emitSignal(const std::string& cause, bool onExit = false) = 0;
 };
 
 /// An effect of a story (Artery's EffectFactory role): apply() when the story activates for a

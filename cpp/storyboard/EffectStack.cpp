@@ -27,6 +27,45 @@ void EffectStack::pushHold(Token token, Hold hold) {
     applyHold(before);
 }
 
+void EffectStack::pushSpeedFactor(Token token, double factor) {
+    if (const auto v = factors_.push(token, factor, [this] { return vehicle_->speedFactor(); }))
+        vehicle_->setSpeedFactor(*v);
+}
+
+void EffectStack::pushType(Token token, std::string typeId) {
+    if (const auto v = types_.push(token, std::move(typeId), [this] { return ownType(); })) applyType(*v);
+}
+
+void EffectStack::pushColor(Token token, traffic::Color color) {
+    if (const auto v = colors_.push(token, color, [this] { return vehicle_->color(); })) vehicle_->setColor(*v);
+}
+
+std::string EffectStack::ownType() const {
+    // A command that changed one vehicle's type parameters (setMaxSpeed) left it on SUMO's private
+    // copy "<type>@<id>", which SUMO drops when the type is replaced: the type to come back is the
+    // one that copy was made of.
+    std::string type = vehicle_->typeId();
+    const std::string suffix = "@" + vehicle_->id();
+    if (type.size() > suffix.size() && type.ends_with(suffix)) type.resize(type.size() - suffix.size());
+    return type;
+}
+
+void EffectStack::applyType(const std::string& typeId) {
+    // SUMO carries the speed factor over to the new type (mapped onto its distribution), so it is
+    // the vehicle's own factor that must cross over; the active one is set again after.
+    const auto factor = factors_.effective();
+    if (factor) vehicle_->setSpeedFactor(factors_.original());
+    vehicle_->setType(typeId);
+    if (factor) {
+        factors_.setOriginal(vehicle_->speedFactor());
+        vehicle_->setSpeedFactor(*factor);
+    }
+    if (const auto cap = effectiveCap()) {
+        recordedMaxSpeed_ = vehicle_->maxSpeed();  // the new type's own, for when the caps end
+        vehicle_->setMaxSpeed(*cap);
+    }
+}
+
 void EffectStack::remove(Token token) {
     const auto matches = [token](const auto& entry) { return entry.first == token; };
     if (const auto it = std::find_if(caps_.begin(), caps_.end(), matches); it != caps_.end()) {
@@ -37,6 +76,12 @@ void EffectStack::remove(Token token) {
         const auto before = effectiveHold();
         holds_.erase(h);
         applyHold(before);
+    } else if (factors_.contains(token)) {
+        if (const auto v = factors_.remove(token)) vehicle_->setSpeedFactor(*v);
+    } else if (types_.contains(token)) {
+        if (const auto v = types_.remove(token)) applyType(*v);
+    } else if (colors_.contains(token)) {
+        if (const auto v = colors_.remove(token)) vehicle_->setColor(*v);
     }
 }
 

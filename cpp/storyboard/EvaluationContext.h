@@ -1,29 +1,40 @@
 #pragma once
 
+#include <stdexcept>
+
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/TrafficQueries.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::storyboard {
 
 /// What conditions may read during one evaluation pass (one SUMO step): the step's snapshot, the
 /// time, and a spatial index over the snapshot built once for the step. Conditions never call
-/// libsumo per vehicle.
+/// libsumo directly; the few that need a value the snapshot lacks ask queries(), only for the
+/// vehicles that reach them.
 class SBSIM_API EvaluationContext {
 public:
-    EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid& neighbours)
-        : snapshot_(snapshot), neighbours_(neighbours) {}
+    EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid& neighbours,
+                      traffic::TrafficQueries* queries = nullptr)
+        : snapshot_(snapshot), neighbours_(neighbours), queries_(queries) {}
 
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     kernel::SimTime now() const { return snapshot_.time(); }
     /// Built over this snapshot with a cell size at least the largest radius any registered
     /// condition asked for (Condition::neighbourRadius()).
     const traffic::NeighbourGrid& neighbours() const { return neighbours_; }
+    /// Throws std::logic_error if this context has none (a snapshot evaluated without SUMO).
+    traffic::TrafficQueries& queries() const {
+        if (queries_ == nullptr) throw std::logic_error("this evaluation has no traffic to query");
+        return *queries_;
+    }
 
 private:
     const traffic::VehicleSnapshot& snapshot_;
     const traffic::NeighbourGrid& neighbours_;
+    traffic::TrafficQueries* queries_;
 };
 
 }  // namespace sbsim::storyboard

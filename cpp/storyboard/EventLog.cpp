@@ -50,10 +50,11 @@ void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::string
 }
 
 void EventLog::signal(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view cause,
-                      const std::vector<std::string>& others) {
+                      const std::vector<std::string>& others, bool onExit) {
     Event e = event(t, "signal", story, vehicle);
     e["cause"] = cause;
     e["others"] = others;
+    if (onExit) e["phase"] = "exit";
     write(out_, e);
 }
 

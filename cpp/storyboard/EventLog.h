@@ -20,8 +20,9 @@ public:
 
     void activate(kernel::SimTime t, std::string_view story, std::string_view vehicle);
     void deactivate(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view reason);
+    /// `onExit`: sent as the story deactivated; the line gets "phase":"exit".
     void signal(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view cause,
-                const std::vector<std::string>& others);
+                const std::vector<std::string>& others, bool onExit = false);
     void flush() { out_.flush(); }
 
 private:

@@ -4,8 +4,9 @@
 
 namespace sbsim::storyboard {
 
-Story::Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name)
-    : condition_(std::move(condition)), effects_(std::move(effects)) {
+Story::Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name,
+             std::optional<std::uint64_t> maxActivations)
+    : condition_(std::move(condition)), effects_(std::move(effects)), maxActivations_(maxActivations) {
     if (!condition_) throw std::invalid_argument("Story needs a condition, got None");
     for (const EffectPtr& e : effects_) {
         if (!e) throw std::invalid_argument("Story effects must not contain None");

@@ -16,7 +16,8 @@ namespace sbsim::storyboard {
 class SBSIM_API Story {
 public:
     /// Throws std::invalid_argument for a null condition or effect.
-    Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name = std::nullopt);
+    Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name = std::nullopt,
+          std::optional<std::uint64_t> maxActivations = std::nullopt);
 
     Condition& condition() const { return *condition_; }
     const ConditionPtr& conditionPtr() const { return condition_; }
@@ -24,6 +25,8 @@ public:
     /// The given name, or "story<N>" with N the registration index once registered.
     const std::string& name() const { return name_; }
     bool hasExplicitName() const { return explicitName_; }
+    /// How often the story may activate per vehicle (then never again for it); none: unlimited.
+    std::optional<std::uint64_t> maxActivations() const { return maxActivations_; }
 
     std::uint64_t activations() const { return activations_; }
     /// Vehicles the story is active on now.
@@ -39,6 +42,7 @@ private:
     std::vector<EffectPtr> effects_;
     std::string name_;
     bool explicitName_ = false;
+    std::optional<std::uint64_t> maxActivations_;
     std::uint64_t activations_ = 0;
     std::uint64_t activeVehicles_ = 0;
     kernel::SimTime activeTime_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 
 #include "sbsim/storyboard/StoryboardSignal.h"
@@ -39,14 +40,15 @@ public:
         }
         return others_;
     }
-    void emitSignal(const std::string& cause) override {
-        if (board_.log_ != nullptr) board_.log_->signal(board_.now_, story_.name(), id_, cause, others());
+    void emitSignal(const std::string& cause, bool onExit) override {
+        if (board_.log_ != nullptr) board_.log_->signal(board_.now_, story_.name(), id_, cause, others(), onExit);
         if (!board_.hasListeners(signalEmitted)) return;  // nobody to tell: build nothing
         StoryboardSignal signal;
         signal.cause = cause;
         signal.story = story_.name();
         signal.ego = id_;
         signal.others = others();
+        signal.onExit = onExit;
         board_.emit(signalEmitted, static_cast<const kernel::Object&>(signal));
     }
 
@@ -65,7 +67,8 @@ private:
 Storyboard::Storyboard(EventLog* log)
     : kernel::Module("storyboard"),
       log_(log),
-      makeController_([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); }) {}
+      makeController_([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); }),
+      queries_(std::make_unique<traffic::SumoQueries>()) {}
 
 Storyboard::~Storyboard() = default;
 
@@ -97,12 +100,14 @@ void Storyboard::registerStory(StoryPtr story) {
     if (!story->explicitName_) story->name_ = fmt::format("story{}", stories_.size());
     collectConditions(story->condition());
     pure_.push_back(story->condition().pure());
+    maxActivations_.push_back(story->maxActivations().value_or(std::numeric_limits<std::uint64_t>::max()));
     if (pure_.back()) pureStories_.push_back(stories_.size());
     stories_.push_back(std::move(story));
     precomputed_.resize(stories_.size());
     for (auto& [id, state] : vehicles_) {
         state.applied.resize(stories_.size());
         state.active.resize(stories_.size());
+        state.activations.resize(stories_.size());
     }
 }
 
@@ -123,6 +128,7 @@ Storyboard::VehicleState& Storyboard::stateFor(const std::string& id) {
         state.stack = std::make_unique<EffectStack>(*state.controller);
         state.applied.resize(stories_.size());
         state.active.resize(stories_.size());
+        state.activations.resize(stories_.size());
     }
     return state;
 }
@@ -152,7 +158,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     }
 
     if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 5.0));
-    const EvaluationContext ctx(snapshot, grid_);
+    const EvaluationContext ctx(snapshot, grid_, queries_.get());
     for (Condition* c : conditions_) c->prepare(ctx);
 
     // All pure stories in one parallel loop: one hand-over to the workers per step, and each
@@ -184,6 +190,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
             const ConditionResult& result =
                 pure_[s] ? precomputed_[s][i] : (tested = stories_[s]->condition().test(ctx, i));
             if (!active[s] && result.isTrue()) {
+                // A vehicle without state has never activated anything.
+                if ((row.state != nullptr ? row.state->activations[s] : 0) >= maxActivations_[s]) continue;
                 if (row.state == nullptr) row.state = &stateFor(id);
                 activate(*row.state, s, id, result, snapshot);
                 active[s] = 1;
@@ -254,6 +262,7 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
                           const traffic::VehicleSnapshot& snapshot) {
     Story& story = *stories_[s];
     state.active[s] = true;
+    ++state.activations[s];
     ++story.activations_;
     ++story.activeVehicles_;
     if (log_ != nullptr) log_->activate(now_, story.name(), id);

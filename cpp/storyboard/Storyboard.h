@@ -17,6 +17,7 @@
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/TrafficQueries.h"
 #include "sbsim/traffic/VehicleController.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -46,6 +47,12 @@ public:
     void attach(kernel::Module& sumo);
     /// Replaces how vehicles are commanded (default: libsumo through traffic::VehicleController).
     void setControllerFactory(ControllerFactory factory) { makeController_ = std::move(factory); }
+    /// Replaces what conditions ask of the traffic beyond the snapshot (default: libsumo).
+    void setTrafficQueries(std::unique_ptr<traffic::TrafficQueries> queries) { queries_ = std::move(queries); }
+
+    /// Artery's warm-up period, as scripts ask for it (getWarmupEndTime); it changes nothing else.
+    void setWarmupEndTime(kernel::SimTime t) { warmupEnd_ = t; }
+    kernel::SimTime warmupEndTime() const { return warmupEnd_; }
 
     void registerStory(StoryPtr story);
     const std::vector<StoryPtr>& stories() const { return stories_; }
@@ -70,6 +77,7 @@ private:
         std::unique_ptr<EffectStack> stack;
         std::vector<std::vector<AppliedEffect>> applied;  // per story; non-empty iff active
         std::vector<bool> active;                         // per story
+        std::vector<std::uint64_t> activations;           // per story: how often it activated for the vehicle
     };
     /// A vehicle of the current pass, by snapshot index.
     struct Row {
@@ -95,6 +103,7 @@ private:
     bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;
     std::vector<bool> pure_;                                 // per story: its whole tree is pure
+    std::vector<std::uint64_t> maxActivations_;              // per story, per vehicle (max: unlimited)
     std::vector<std::size_t> pureStories_;                   // indices of the pure stories
     std::vector<std::vector<ConditionResult>> precomputed_;  // per pure story, per vehicle of the step
     std::vector<Condition*> conditions_;                     // every distinct node of every tree, for prepare/forget
@@ -112,7 +121,9 @@ private:
     std::vector<std::string> leftSinceStep_;
     EffectStack::Token nextToken_ = 1;
     ControllerFactory makeController_;
+    std::unique_ptr<traffic::TrafficQueries> queries_;
     double updateSeconds_ = 0;
+    kernel::SimTime warmupEnd_;
 };
 
 }  // namespace sbsim::storyboard

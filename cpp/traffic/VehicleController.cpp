@@ -16,6 +16,12 @@ double VehicleController::speed() const { return Vehicle::getSpeed(id_); }
 double VehicleController::maxSpeed() const { return Vehicle::getMaxSpeed(id_); }
 double VehicleController::emergencyDecel() const { return Vehicle::getEmergencyDecel(id_); }
 int VehicleController::speedMode() const { return Vehicle::getSpeedMode(id_); }
+double VehicleController::speedFactor() const { return Vehicle::getSpeedFactor(id_); }
+Color VehicleController::color() const {
+    const libsumo::TraCIColor c = Vehicle::getColor(id_);
+    return {static_cast<std::uint8_t>(c.r), static_cast<std::uint8_t>(c.g), static_cast<std::uint8_t>(c.b),
+            static_cast<std::uint8_t>(c.a)};
+}
 
 void VehicleController::setMaxSpeed(double mps) {
     Vehicle::setMaxSpeed(id_, mps);
@@ -27,6 +33,14 @@ void VehicleController::setSpeedMode(int mode) { Vehicle::setSpeedMode(id_, mode
 void VehicleController::changeLane(int laneIndex, double seconds) { Vehicle::changeLane(id_, laneIndex, seconds); }
 void VehicleController::changeLaneRelative(int offset, double seconds) {
     Vehicle::changeLaneRelative(id_, offset, seconds);
+}
+void VehicleController::setSpeedFactor(double factor) { Vehicle::setSpeedFactor(id_, factor); }
+void VehicleController::setType(const std::string& typeId) {
+    Vehicle::setType(id_, typeId);
+    SnapshotBuilder::maxSpeedChanged(id_);  // the new type brings its own max speed
+}
+void VehicleController::setColor(const Color& color) {
+    Vehicle::setColor(id_, libsumo::TraCIColor(color.r, color.g, color.b, color.a));
 }
 
 }  // namespace sbsim::traffic

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/traffic/Color.h"
 
 namespace sbsim::traffic {
 
@@ -35,6 +36,15 @@ public:
     virtual void setSpeedMode(int mode);
     virtual void changeLane(int laneIndex, double seconds);
     virtual void changeLaneRelative(int offset, double seconds);
+
+    // Added after the others so that service modules built against the older class keep working.
+    /// The factor on the lanes' speed limits the driver keeps to (SUMO's chosen speed factor).
+    virtual double speedFactor() const;
+    virtual Color color() const;
+    virtual void setSpeedFactor(double factor);
+    /// Gives the vehicle another type (its max speed becomes the type's).
+    virtual void setType(const std::string& typeId);
+    virtual void setColor(const Color& color);
 
 private:
     std::string id_;

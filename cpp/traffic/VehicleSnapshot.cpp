@@ -1,10 +1,16 @@
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <unordered_map>
 
 namespace sbsim::traffic {
+
+std::uint64_t VehicleSnapshot::nextGeneration() {
+    static std::atomic<std::uint64_t> next{1};
+    return next.fetch_add(1, std::memory_order_relaxed);
+}
 
 std::optional<VehicleSnapshot::Index> VehicleSnapshot::indexOf(std::string_view id) const {
     const auto it = std::lower_bound(ids_.begin(), ids_.end(), id,
@@ -27,6 +33,7 @@ void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time
     time_ = time;
     ids_.clear();
     strings_.clear();
+    generation_ = nextGeneration();
     road_.clear();
     lane_.clear();
     type_.clear();

@@ -44,6 +44,16 @@ public:
     /// changes one vehicle, is not reported).
     const std::string& typeId(Index i) const { return strings_[type_[i]]; }
 
+    /// The interned index of roadId(i) / laneId(i) / typeId(i): equal keys, equal strings. Lets a
+    /// condition on strings decide once per distinct string instead of once per vehicle.
+    std::int32_t roadKey(Index i) const { return road_[i]; }
+    std::int32_t laneKey(Index i) const { return lane_[i]; }
+    std::int32_t typeKey(Index i) const { return type_[i]; }
+    /// The interned strings by key. Filled step after step the table only grows, so a key keeps
+    /// its string for as long as internGeneration() stays the same (assign() starts a new one).
+    const std::vector<std::string>& interned() const { return strings_; }
+    std::uint64_t internGeneration() const { return generation_; }
+
     /// One vehicle's values, for building a snapshot by hand (tests, tools); SUMO runs fill it directly.
     struct Vehicle {
         std::string id;
@@ -63,6 +73,9 @@ private:
     Eigen::VectorXd speed_, angle_, acceleration_, length_, width_, maxSpeed_;
     std::vector<std::int32_t> road_, lane_, type_;  // indices into strings_
     std::vector<std::string> strings_;              // interned road, lane and type ids
+    std::uint64_t generation_ = nextGeneration();   // unique per string table, process-wide
+
+    static std::uint64_t nextGeneration();
 };
 
 }  // namespace sbsim::traffic

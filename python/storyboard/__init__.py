@@ -8,7 +8,6 @@ Inside a story run by ``sbsim --story``, ``import storyboard`` gives Artery's st
 
 from __future__ import annotations
 
-from functools import reduce
 from typing import Any
 
 __version__ = "0.1.0"
@@ -34,19 +33,19 @@ def _require_sbsim(name: str) -> None:
 
 
 def all_of(*conditions: Any) -> Any:
-    """``AndCondition`` over any number of conditions, evaluated left to right, lazily."""
+    """``AllCondition`` over any number of conditions, evaluated left to right, lazily."""
     _require_sbsim("all_of")
     if not conditions:
         raise ValueError("all_of needs at least one condition")
-    return reduce(_sbsim.AndCondition, conditions)
+    return _sbsim.AllCondition(*conditions)
 
 
 def any_of(*conditions: Any) -> Any:
-    """``OrCondition`` over any number of conditions, evaluated left to right, lazily."""
+    """``AnyCondition`` over any number of conditions, evaluated left to right, lazily."""
     _require_sbsim("any_of")
     if not conditions:
         raise ValueError("any_of needs at least one condition")
-    return reduce(_sbsim.OrCondition, conditions)
+    return _sbsim.AnyCondition(*conditions)
 
 
 def seconds(x: float) -> Any:

@@ -37,6 +37,8 @@ class RandomNumberGenerator:
     def index(self) -> int: ...
     def uniform(self, a: float = 0.0, b: float = 1.0) -> float: ...
 
+RNG = RandomNumberGenerator
+
 class Vehicle:
     """One vehicle of the current step's snapshot; reading it after that step raises ValueError."""
 
@@ -129,11 +131,53 @@ class SpeedDifferenceConditionSlower(Condition):
 class TtcCondition(Condition):
     def __init__(self, ttc: float, distance: float = 100.0) -> None: ...
 
+class DistanceCondition(Condition):
+    def __init__(self, target: Point | str, distance: float) -> None: ...
+
+class StandstillCondition(Condition):
+    def __init__(self, seconds: Seconds) -> None: ...
+
+class AccelerationConditionGreater(Condition):
+    def __init__(self, a: float) -> None: ...
+
+class AccelerationConditionLess(Condition):
+    def __init__(self, a: float) -> None: ...
+
+class RoadCondition(Condition):
+    def __init__(self, ids: str | Iterable[str]) -> None: ...
+
+class LaneCondition(Condition):
+    def __init__(self, ids: str | Iterable[str]) -> None: ...
+
+class TypeCondition(Condition):
+    def __init__(self, pattern: str) -> None: ...
+
+class HeadwayCondition(Condition):
+    def __init__(self, seconds: float) -> None: ...
+
+class CollisionCondition(Condition):
+    def __init__(self) -> None: ...
+
 class AndCondition(Condition):
     def __init__(self, a: Condition, b: Condition) -> None: ...
 
 class OrCondition(Condition):
     def __init__(self, a: Condition, b: Condition) -> None: ...
+
+class NotCondition(Condition):
+    def __init__(self, condition: Condition) -> None: ...
+
+class AllCondition(Condition):
+    def __init__(self, *conditions: Condition) -> None: ...
+
+class AnyCondition(Condition):
+    def __init__(self, *conditions: Condition) -> None: ...
+
+class HoldCondition(Condition):
+    def __init__(self, condition: Condition, seconds: Seconds) -> None: ...
+
+class RisingCondition(Condition):
+    def __init__(self, condition: Condition) -> None: ...
 
 class LimitCondition(Condition):
     def __init__(self, n: int) -> None: ...
@@ -161,8 +205,22 @@ class EmergencyStopEffect(Effect):
 
 class SignalEffect(Effect):
     cause: str
-    def __init__(self, cause: str) -> None: ...
+    on_exit: str | None
+    def __init__(self, cause: str, on_exit: str | None = None) -> None: ...
 
+class SpeedFactorEffect(Effect):
+    factor: float
+    def __init__(self, factor: float) -> None: ...
+
+class TypeEffect(Effect):
+    type_id: str
+    def __init__(self, type_id: str) -> None: ...
+
+class ColorEffect(Effect):
+    color: tuple[int, int, int, int]
+    def __init__(self, color: tuple[int, int, int] | tuple[int, int, int, int]) -> None: ...
+
+EffectFactory = Effect
 SpeedEffectFactory = SpeedEffect
 StopEffectFactory = StopEffect
 SignalEffectFactory = SignalEffect
@@ -170,8 +228,13 @@ SignalEffectFactory = SignalEffect
 class Story:
     name: str
     activations: int
+    max_activations: int | None
     def __init__(
-        self, condition: Condition, effects: Iterable[Effect] | None = None, name: str | None = None
+        self,
+        condition: Condition,
+        effects: Iterable[Effect] | None = None,
+        name: str | None = None,
+        max_activations: int | None = None,
     ) -> None: ...
 
 class Parameters:

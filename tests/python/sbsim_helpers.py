@@ -68,6 +68,8 @@ class FcdTrace:
     pos: dict[str, dict[float, tuple[float, float]]] = field(default_factory=lambda: defaultdict(dict))
     #: SUMO lane id (``<edge>_<index>``) per vehicle and sbsim time.
     lane: dict[str, dict[float, str]] = field(default_factory=lambda: defaultdict(dict))
+    #: SUMO vehicle type id per vehicle and sbsim time.
+    type: dict[str, dict[float, str]] = field(default_factory=lambda: defaultdict(dict))
 
     def speeds(self, vehicle: str, t0: float = float("-inf"), t1: float = float("inf")) -> dict[float, float]:
         """Speeds of ``vehicle`` at sbsim times in [t0, t1] (only where it was running)."""
@@ -87,6 +89,8 @@ def read_fcd(path: Path, step: float = 1.0) -> FcdTrace:
             trace.pos[vid][t] = (float(v.attrib["x"]), float(v.attrib["y"]))
             if "lane" in v.attrib:
                 trace.lane[vid][t] = v.attrib["lane"]
+            if "type" in v.attrib:
+                trace.type[vid][t] = v.attrib["type"]
     return trace
 
 

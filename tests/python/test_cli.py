@@ -64,6 +64,7 @@ OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--story": (None, None),
     "--end": (None, None),
     "--seed": (None, None),
+    "--warmup": (None, "0"),
     "--sumo-option": (None, None),
     "--services": (None, None),
     "--plugin": (None, None),

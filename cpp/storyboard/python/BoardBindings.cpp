@@ -91,7 +91,8 @@ void bindBoard(py::module_& m) {
         });
 
     py::class_<Story, py::smart_holder>(m, "Story")
-        .def(py::init([](ConditionPtr condition, const py::object& effects, std::optional<std::string> name) {
+        .def(py::init([](ConditionPtr condition, const py::object& effects, std::optional<std::string> name,
+                         const py::object& maxActivations) {
                  if (!condition) throw py::type_error("Story needs a condition, got None");
                  std::vector<EffectPtr> list;
                  if (!effects.is_none()) {
@@ -103,9 +104,21 @@ void bindBoard(py::module_& m) {
                          list.push_back(e.cast<EffectPtr>());
                      }
                  }
-                 return std::make_shared<Story>(std::move(condition), std::move(list), std::move(name));
+                 std::optional<std::uint64_t> limit;
+                 if (!maxActivations.is_none()) {
+                     if (!py::isinstance<py::int_>(maxActivations) || py::isinstance<py::bool_>(maxActivations)) {
+                         throw py::type_error("Story max_activations must be a whole number, got " +
+                                              py::repr(maxActivations).cast<std::string>());
+                     }
+                     const long long n = maxActivations.cast<long long>();
+                     if (n < 1) throw py::value_error("Story max_activations must be >= 1, got " + std::to_string(n));
+                     limit = static_cast<std::uint64_t>(n);
+                 }
+                 return std::make_shared<Story>(std::move(condition), std::move(list), std::move(name), limit);
              }),
-             py::arg("condition"), py::arg("effects") = py::none(), py::arg("name") = py::none())
+             py::arg("condition"), py::arg("effects") = py::none(), py::arg("name") = py::none(),
+             py::arg("max_activations") = py::none())
+        .def_property_readonly("max_activations", &Story::maxActivations)
         .def_property_readonly("name", &Story::name)
         .def_property_readonly("activations", &Story::activations);
 
@@ -133,8 +146,8 @@ void bindBoard(py::module_& m) {
                 return lookup(h.board().simulation().parameters(), name, fallback);
             },
             py::arg("name"), py::arg("default") = py::none())
-        .def("getWarmupEndTime", [](const BoardHandle&) { return SimTime::zero(); })
-        .def_property_readonly("warmup_end_time", [](const BoardHandle&) { return SimTime::zero(); })
+        .def("getWarmupEndTime", [](const BoardHandle& h) { return h.board().warmupEndTime(); })
+        .def_property_readonly("warmup_end_time", [](const BoardHandle& h) { return h.board().warmupEndTime(); })
         .def("convertTraciPosition", convert, py::arg("x"), py::arg("y"))
         .def("convert_traci_position", convert, py::arg("x"), py::arg("y"))
         .def_property_readonly("stories", [](const BoardHandle& h) { return h.board().stories(); });

@@ -4,17 +4,30 @@
 
 #include <limits>
 
+#include "sbsim/storyboard/conditions/AccelerationCondition.h"
+#include "sbsim/storyboard/conditions/AllCondition.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
+#include "sbsim/storyboard/conditions/AnyCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/CollisionCondition.h"
 #include "sbsim/storyboard/conditions/DeferringCondition.h"
+#include "sbsim/storyboard/conditions/DistanceCondition.h"
+#include "sbsim/storyboard/conditions/HeadwayCondition.h"
+#include "sbsim/storyboard/conditions/HoldCondition.h"
+#include "sbsim/storyboard/conditions/LaneCondition.h"
 #include "sbsim/storyboard/conditions/LikelihoodCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
+#include "sbsim/storyboard/conditions/NotCondition.h"
 #include "sbsim/storyboard/conditions/OrCondition.h"
 #include "sbsim/storyboard/conditions/PolygonCondition.h"
+#include "sbsim/storyboard/conditions/RisingCondition.h"
+#include "sbsim/storyboard/conditions/RoadCondition.h"
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 #include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
+#include "sbsim/storyboard/conditions/StandstillCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
+#include "sbsim/storyboard/conditions/TypeCondition.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/PythonCondition.h"
 
@@ -32,6 +45,35 @@ void bindSpeedDifference(Class&& cls) {
                 return std::make_shared<Condition>(toNumber(delta, "delta"), optionalDistance(distance));
             }),
             py::arg("delta"), py::arg("distance") = py::none());
+}
+
+/// The operands of an n-ary condition: each a storyboard condition, at least one.
+std::vector<ConditionPtr> operands(const py::args& args, const char* what) {
+    if (args.empty()) throw py::type_error(std::string(what) + " needs at least one condition");
+    std::vector<ConditionPtr> list;
+    for (const py::handle a : args) {
+        if (!py::isinstance<Condition>(a)) {
+            throw py::type_error(std::string(what) + " operands must be storyboard conditions, got " +
+                                 py::repr(a).cast<std::string>());
+        }
+        list.push_back(a.cast<ConditionPtr>());
+    }
+    return list;
+}
+
+/// One id or an iterable of ids, each a string; `what` names them in the error.
+std::set<std::string> toStringSet(const py::handle& ids, const std::string& what) {
+    if (py::isinstance<py::str>(ids)) return {ids.cast<std::string>()};
+    if (!py::isinstance<py::iterable>(ids))
+        throw py::type_error(what + " must be a string or an iterable of strings, got " +
+                             py::repr(ids).cast<std::string>());
+    std::set<std::string> out;
+    for (const py::handle id : py::iter(ids)) {
+        if (!py::isinstance<py::str>(id))
+            throw py::type_error(what + " must be strings, got " + py::repr(id).cast<std::string>());
+        out.insert(id.cast<std::string>());
+    }
+    return out;
 }
 
 }  // namespace
@@ -83,10 +125,82 @@ void bindConditions(py::module_& m) {
                  return std::make_shared<TtcCondition>(t, d);
              }),
              py::arg("ttc"), py::arg("distance") = 100.0);
+    py::class_<DistanceCondition, Condition, py::smart_holder>(m, "DistanceCondition")
+        .def(py::init([](const py::object& target, const py::object& distance) {
+                 const double d = toNumber(distance, "DistanceCondition distance");
+                 if (d < 0) throw py::value_error("DistanceCondition distance must be >= 0 m");
+                 if (py::isinstance<py::str>(target)) {
+                     auto id = target.cast<std::string>();
+                     if (id.empty()) throw py::value_error("DistanceCondition target vehicle id is empty");
+                     return std::make_shared<DistanceCondition>(std::move(id), d);
+                 }
+                 if (!py::isinstance<Coord>(target) && !(py::isinstance<py::tuple>(target) && py::len(target) == 2)) {
+                     throw py::type_error(
+                         "DistanceCondition target must be a storyboard.Coord, an (x, y) tuple or a vehicle id, got " +
+                         py::repr(target).cast<std::string>());
+                 }
+                 return std::make_shared<DistanceCondition>(toSumoPoint(target), d);
+             }),
+             py::arg("target"), py::arg("distance"));
+    py::class_<StandstillCondition, Condition, py::smart_holder>(m, "StandstillCondition")
+        .def(py::init([](const py::object& seconds) {
+                 const SimTime duration = toSimTime(seconds, "StandstillCondition seconds");
+                 if (duration < SimTime::zero()) throw py::value_error("StandstillCondition needs seconds >= 0");
+                 return std::make_shared<StandstillCondition>(duration);
+             }),
+             py::arg("seconds"));
+    py::class_<AccelerationConditionGreater, Condition, py::smart_holder>(m, "AccelerationConditionGreater")
+        .def(py::init([](const py::object& a) {
+                 return std::make_shared<AccelerationConditionGreater>(toNumber(a, "acceleration"));
+             }),
+             py::arg("a"));
+    py::class_<AccelerationConditionLess, Condition, py::smart_holder>(m, "AccelerationConditionLess")
+        .def(py::init([](const py::object& a) {
+                 return std::make_shared<AccelerationConditionLess>(toNumber(a, "acceleration"));
+             }),
+             py::arg("a"));
+    py::class_<RoadCondition, Condition, py::smart_holder>(m, "RoadCondition")
+        .def(py::init([](const py::object& ids) {
+                 return std::make_shared<RoadCondition>(toStringSet(ids, "RoadCondition road ids"));
+             }),
+             py::arg("ids"));
+    py::class_<LaneCondition, Condition, py::smart_holder>(m, "LaneCondition")
+        .def(py::init([](const py::object& ids) {
+                 return std::make_shared<LaneCondition>(toStringSet(ids, "LaneCondition lane ids"));
+             }),
+             py::arg("ids"));
+    py::class_<TypeCondition, Condition, py::smart_holder>(m, "TypeCondition")
+        .def(py::init([](const std::string& pattern) { return std::make_shared<TypeCondition>(pattern); }),
+             py::arg("pattern"));
+    py::class_<HeadwayCondition, Condition, py::smart_holder>(m, "HeadwayCondition")
+        .def(py::init([](const py::object& seconds) {
+                 const double s = toNumber(seconds, "HeadwayCondition seconds");
+                 if (s <= 0) throw py::value_error("HeadwayCondition needs seconds > 0");
+                 return std::make_shared<HeadwayCondition>(s);
+             }),
+             py::arg("seconds"));
+    py::class_<CollisionCondition, Condition, py::smart_holder>(m, "CollisionCondition").def(py::init<>());
     py::class_<AndCondition, Condition, py::smart_holder>(m, "AndCondition")
         .def(py::init<ConditionPtr, ConditionPtr>(), py::arg("a"), py::arg("b"));
     py::class_<OrCondition, Condition, py::smart_holder>(m, "OrCondition")
         .def(py::init<ConditionPtr, ConditionPtr>(), py::arg("a"), py::arg("b"));
+    py::class_<NotCondition, Condition, py::smart_holder>(m, "NotCondition")
+        .def(py::init<ConditionPtr>(), py::arg("condition"));
+    py::class_<AllCondition, Condition, py::smart_holder>(m, "AllCondition").def(py::init([](const py::args& args) {
+        return std::make_shared<AllCondition>(operands(args, "AllCondition"));
+    }));
+    py::class_<AnyCondition, Condition, py::smart_holder>(m, "AnyCondition").def(py::init([](const py::args& args) {
+        return std::make_shared<AnyCondition>(operands(args, "AnyCondition"));
+    }));
+    py::class_<HoldCondition, Condition, py::smart_holder>(m, "HoldCondition")
+        .def(py::init([](ConditionPtr condition, const py::object& seconds) {
+                 const SimTime duration = toSimTime(seconds, "HoldCondition seconds");
+                 if (duration < SimTime::zero()) throw py::value_error("HoldCondition needs seconds >= 0");
+                 return std::make_shared<HoldCondition>(std::move(condition), duration);
+             }),
+             py::arg("condition"), py::arg("seconds"));
+    py::class_<RisingCondition, Condition, py::smart_holder>(m, "RisingCondition")
+        .def(py::init<ConditionPtr>(), py::arg("condition"));
     py::class_<LimitCondition, Condition, py::smart_holder>(m, "LimitCondition")
         .def(py::init([](const py::object& n) {
                  if (!py::isinstance<py::int_>(n) || py::isinstance<py::bool_>(n)) {

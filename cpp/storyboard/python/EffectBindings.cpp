@@ -2,16 +2,43 @@
 
 #include <pybind11/stl.h>
 
+#include "sbsim/storyboard/effects/ColorEffect.h"
 #include "sbsim/storyboard/effects/EmergencyStopEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
+#include "sbsim/storyboard/effects/SpeedFactorEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
+#include "sbsim/storyboard/effects/TypeEffect.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/PythonEffect.h"
 
 namespace py = pybind11;
 
 namespace sbsim::storyboard {
+
+namespace {
+
+/// (r, g, b) or (r, g, b, a), each a whole number 0..255.
+traffic::Color toColor(const py::handle& value) {
+    const auto fail = [&] {
+        return py::type_error("ColorEffect needs (r, g, b) or (r, g, b, a) with whole numbers 0..255, got " +
+                              py::repr(value).cast<std::string>());
+    };
+    if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value)) throw fail();
+    const auto seq = py::reinterpret_borrow<py::sequence>(value);
+    if (seq.size() != 3 && seq.size() != 4) throw fail();
+    std::uint8_t parts[4] = {0, 0, 0, 255};
+    for (std::size_t k = 0; k < seq.size(); ++k) {
+        const py::handle p = seq[k];
+        if (!py::isinstance<py::int_>(p) || py::isinstance<py::bool_>(p)) throw fail();
+        const long long v = p.cast<long long>();
+        if (v < 0 || v > 255) throw py::value_error("ColorEffect components must be 0..255, got " + std::to_string(v));
+        parts[k] = static_cast<std::uint8_t>(v);
+    }
+    return {parts[0], parts[1], parts[2], parts[3]};
+}
+
+}  // namespace
 
 void bindEffects(py::module_& m) {
     py::class_<Effect, PythonEffect, py::smart_holder>(m, "Effect").def(py::init<>()).doc() =
@@ -26,9 +53,33 @@ void bindEffects(py::module_& m) {
     py::class_<StopEffect, Effect, py::smart_holder>(m, "StopEffect").def(py::init<>());
     py::class_<EmergencyStopEffect, Effect, py::smart_holder>(m, "EmergencyStopEffect").def(py::init<>());
     py::class_<SignalEffect, Effect, py::smart_holder>(m, "SignalEffect")
-        .def(py::init<std::string>(), py::arg("cause"))
-        .def_property_readonly("cause", &SignalEffect::cause);
-    // Artery's older factory names.
+        .def(py::init<std::string, std::optional<std::string>>(), py::arg("cause"), py::arg("on_exit") = py::none())
+        .def_property_readonly("cause", &SignalEffect::cause)
+        .def_property_readonly("on_exit", &SignalEffect::onExit);
+    py::class_<SpeedFactorEffect, Effect, py::smart_holder>(m, "SpeedFactorEffect")
+        .def(py::init([](const py::object& factor) {
+                 const double f = toNumber(factor, "SpeedFactorEffect factor");
+                 if (f <= 0) throw py::value_error("SpeedFactorEffect needs a factor > 0");
+                 return std::make_shared<SpeedFactorEffect>(f);
+             }),
+             py::arg("factor"))
+        .def_property_readonly("factor", &SpeedFactorEffect::factor);
+    py::class_<TypeEffect, Effect, py::smart_holder>(m, "TypeEffect")
+        .def(py::init([](const std::string& typeId) {
+                 if (typeId.empty()) throw py::value_error("TypeEffect needs a vehicle type id");
+                 return std::make_shared<TypeEffect>(typeId);
+             }),
+             py::arg("type_id"))
+        .def_property_readonly("type_id", &TypeEffect::typeId);
+    py::class_<ColorEffect, Effect, py::smart_holder>(m, "ColorEffect")
+        .def(py::init([](const py::object& color) { return std::make_shared<ColorEffect>(toColor(color)); }),
+             py::arg("color"))
+        .def_property_readonly("color", [](const ColorEffect& e) {
+            const traffic::Color& c = e.color();
+            return py::make_tuple(c.r, c.g, c.b, c.a);
+        });
+    // Artery's names: its effects derive from EffectFactory; and its older factory names.
+    m.attr("EffectFactory") = m.attr("Effect");
     m.attr("SpeedEffectFactory") = m.attr("SpeedEffect");
     m.attr("StopEffectFactory") = m.attr("StopEffect");
     m.attr("SignalEffectFactory") = m.attr("SignalEffect");

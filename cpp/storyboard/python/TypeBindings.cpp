@@ -48,6 +48,7 @@ void bindTypes(py::module_& m) {
         .def(
             "uniform", [](kernel::RandomStream& r, double a, double b) { return r.uniform(a, b); }, py::arg("a") = 0.0,
             py::arg("b") = 1.0);
+    m.attr("RNG") = m.attr("RandomNumberGenerator");  // Artery's name for the generator type
 }
 
 }  // namespace sbsim::storyboard

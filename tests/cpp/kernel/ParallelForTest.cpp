@@ -115,7 +115,8 @@ TEST(ParallelFor, WorkersTakeChunksWhileTheCallerIsBusy) {
             while (!workerRan && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
         },
         1);
-    EXPECT_TRUE(callerWaited);
+    // The worker may well take all chunks before the caller reaches one (callerWaited then stays
+    // false): either way a worker ran, and a caller that did wait was released by it.
     EXPECT_TRUE(workerRan);
 }
 

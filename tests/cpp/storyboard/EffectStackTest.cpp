@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,25 @@ constexpr double kOwnMaxSpeed = 33.0;
 constexpr int kOwnSpeedMode = 31;
 constexpr double kSpeed = 12.0;
 constexpr double kEmergencyDecel = 9.0;
+constexpr double kOwnSpeedFactor = 1.1;
+const std::string kOwnType = "car";
+constexpr traffic::Color kOwnColor{1, 2, 3, 255};
+
+/// Each type's own max speed: a new type brings its own, as in SUMO.
+double typeMaxSpeed(const std::string& type) {
+    static const std::map<std::string, double> table{{"car", kOwnMaxSpeed}, {"truck", 25.0}, {"bus", 20.0}};
+    return table.at(type);
+}
+
+/// Each type's speed factor distribution (mean, deviation): SUMO maps a vehicle's factor from the
+/// old type's onto the new type's when the type changes.
+double mapSpeedFactor(double factor, const std::string& from, const std::string& to) {
+    static const std::map<std::string, std::pair<double, double>> table{
+        {"car", {1.0, 0.1}}, {"truck", {0.9, 0.05}}, {"bus", {0.8, 0.2}}};
+    const auto [oldMu, oldDev] = table.at(from.substr(0, from.find('@')));  // "<type>@<id>": SUMO's copy
+    const auto [newMu, newDev] = table.at(to);
+    return newMu + (factor - oldMu) / oldDev * newDev;
+}
 
 /// A vehicle that behaves like SUMO's for the commands the stack sends, and counts them.
 class ModelVehicle : public traffic::VehicleController {
@@ -49,7 +69,27 @@ public:
         speedMode_ = mode;
         ++commands;
     }
+    std::string typeId() const override { return type_; }
+    double speedFactor() const override { return speedFactor_; }
+    traffic::Color color() const override { return color_; }
+    void setSpeedFactor(double factor) override {
+        speedFactor_ = factor;
+        ++commands;
+    }
+    void setType(const std::string& type) override {
+        speedFactor_ = mapSpeedFactor(speedFactor_, type_, type);
+        type_ = type;
+        maxSpeed_ = typeMaxSpeed(type);  // a per-vehicle max speed is lost with the old type
+        ++commands;
+    }
+    void setColor(const traffic::Color& color) override {
+        color_ = color;
+        ++commands;
+    }
 
+    double speedFactor_ = kOwnSpeedFactor;
+    std::string type_ = kOwnType;
+    traffic::Color color_ = kOwnColor;
     double maxSpeed_ = kOwnMaxSpeed;
     int speedMode_ = kOwnSpeedMode;
     std::optional<double> held_;
@@ -59,8 +99,10 @@ public:
 };
 
 struct Spec {
-    enum Kind { Cap, Stop, EmergencyStop } kind;
-    double cap = 0;
+    enum Kind { Cap, Stop, EmergencyStop, Factor, Type, Paint } kind;
+    double cap = 0;  // also the factor, and the red of a Paint
+    std::string type = {};
+    traffic::Color color() const { return {static_cast<std::uint8_t>(cap), 0, 0, 255}; }
     std::string label() const {
         switch (kind) {
             case Cap:
@@ -69,6 +111,12 @@ struct Spec {
                 return "stop";
             case EmergencyStop:
                 return "estop";
+            case Factor:
+                return "factor" + std::to_string(cap);
+            case Type:
+                return "type:" + type;
+            case Paint:
+                return "paint" + std::to_string(static_cast<int>(cap));
         }
         return "?";
     }
@@ -85,26 +133,65 @@ void push(EffectStack& stack, const Spec& s, EffectStack::Token token) {
         case Spec::EmergencyStop:
             stack.pushHold(token, EffectStack::Hold::EmergencyStop);
             break;
+        case Spec::Factor:
+            stack.pushSpeedFactor(token, s.cap);
+            break;
+        case Spec::Type:
+            stack.pushType(token, s.type);
+            break;
+        case Spec::Paint:
+            stack.pushColor(token, s.color());
+            break;
     }
 }
 
-/// The model: the latest cap and the latest hold of the active effects (activation order) rule.
-std::pair<std::optional<double>, std::optional<Spec::Kind>> effective(const std::vector<Spec>& active) {
+/// The effective value of each domain.
+struct Effective {
     std::optional<double> cap;
     std::optional<Spec::Kind> hold;
+    std::optional<double> factor;
+    std::optional<std::string> type;
+    std::optional<double> paint;
+    bool operator==(const Effective&) const = default;
+};
+
+/// The model: in each domain the latest of the active effects (activation order) rules.
+Effective effective(const std::vector<Spec>& active) {
+    Effective e;
     for (const Spec& s : active) {
-        if (s.kind == Spec::Cap)
-            cap = s.cap;
-        else
-            hold = s.kind;
+        switch (s.kind) {
+            case Spec::Cap:
+                e.cap = s.cap;
+                break;
+            case Spec::Stop:
+            case Spec::EmergencyStop:
+                e.hold = s.kind;
+                break;
+            case Spec::Factor:
+                e.factor = s.cap;
+                break;
+            case Spec::Type:
+                e.type = s.type;
+                break;
+            case Spec::Paint:
+                e.paint = s.cap;
+                break;
+        }
     }
-    return {cap, hold};
+    return e;
 }
 
 /// What the vehicle must look like with `active` (activation order) in force.
 void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const std::string& context) {
-    const auto [cap, hold] = effective(active);
-    EXPECT_DOUBLE_EQ(v.maxSpeed_, cap.value_or(kOwnMaxSpeed)) << context;
+    const Effective e = effective(active);
+    const auto& cap = e.cap;
+    const auto& hold = e.hold;
+    const std::string type = e.type.value_or(kOwnType);
+    EXPECT_EQ(v.type_, type) << context;
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, cap.value_or(typeMaxSpeed(type))) << context;
+    EXPECT_NEAR(v.speedFactor_, e.factor.value_or(mapSpeedFactor(kOwnSpeedFactor, kOwnType, type)), 1e-12) << context;
+    const traffic::Color paint = e.paint ? Spec{Spec::Paint, *e.paint, {}}.color() : kOwnColor;
+    EXPECT_EQ(v.color_, paint) << context;
     if (!hold) {
         EXPECT_FALSE(v.held_.has_value()) << context << ": vehicle still held";
         EXPECT_FALSE(v.slowingTo_.has_value()) << context << ": vehicle still braking";
@@ -145,8 +232,9 @@ void runAllOrders(const std::vector<Spec>& specs) {
                 active.push_back(i);
                 context += " " + specs[i].label();
                 expectState(vehicle, activeSpecs(), context);
-                if (effective(activeSpecs()) == before)
+                if (effective(activeSpecs()) == before) {
                     EXPECT_EQ(vehicle.commands, commandsBefore) << context << ": needless command";
+                }
             }
             context += " | remove";
             for (const std::size_t i : removal) {
@@ -156,8 +244,9 @@ void runAllOrders(const std::vector<Spec>& specs) {
                 active.erase(std::find(active.begin(), active.end(), i));
                 context += " " + specs[i].label();
                 expectState(vehicle, activeSpecs(), context);
-                if (effective(activeSpecs()) == before)
+                if (effective(activeSpecs()) == before) {
                     EXPECT_EQ(vehicle.commands, commandsBefore) << context << ": needless command";
+                }
             }
             EXPECT_TRUE(stack.empty());
             ++cases;
@@ -182,6 +271,41 @@ TEST(EffectStack, CapsStopAndEmergencyStopInEveryOrder) {
 
 TEST(EffectStack, ThreeCapsAndAStopInEveryOrder) {
     runAllOrders({{Spec::Cap, 5}, {Spec::Cap, 15}, {Spec::Cap, 25}, {Spec::Stop}});
+}
+
+TEST(EffectStack, ThreeSpeedFactorsInEveryOrder) {
+    runAllOrders({{Spec::Factor, 0.5}, {Spec::Factor, 0.8}, {Spec::Factor, 0.5}});
+}
+
+TEST(EffectStack, ThreeTypesInEveryOrder) {
+    runAllOrders({{Spec::Type, 0, "truck"}, {Spec::Type, 0, "bus"}, {Spec::Type, 0, "truck"}});
+}
+
+TEST(EffectStack, ThreeColoursInEveryOrder) {
+    runAllOrders({{Spec::Paint, 200}, {Spec::Paint, 100}, {Spec::Paint, 50}});
+}
+
+TEST(EffectStack, TypesUnderACapKeepTheCapInEveryOrder) {
+    // A type brings its own max speed: a cap must survive type changes, and when the cap ends
+    // the max speed of the type then in force comes back.
+    runAllOrders({{Spec::Cap, 10}, {Spec::Type, 0, "truck"}, {Spec::Type, 0, "bus"}});
+}
+
+TEST(EffectStack, TypesUnderASpeedFactorKeepItInEveryOrder) {
+    runAllOrders({{Spec::Factor, 0.5}, {Spec::Type, 0, "truck"}, {Spec::Type, 0, "bus"}});
+}
+
+TEST(EffectStack, FactorTypeColourCapAndStopInEveryOrder) {
+    runAllOrders({{Spec::Factor, 0.7}, {Spec::Type, 0, "bus"}, {Spec::Paint, 9}, {Spec::Cap, 12}, {Spec::Stop}});
+}
+
+TEST(EffectStack, TheTypeComingBackIsTheOneSumosPrivateCopyWasMadeOf) {
+    ModelVehicle v;
+    v.type_ = "car@model";  // what SUMO reports after setMaxSpeed made the vehicle its own type
+    EffectStack stack(v);
+    stack.pushType(1, "truck");
+    stack.remove(1);
+    EXPECT_EQ(v.type_, "car");
 }
 
 TEST(EffectStack, OneStopEndingNeverReleasesAVehicleAnotherStopHolds) {

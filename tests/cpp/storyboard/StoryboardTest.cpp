@@ -20,6 +20,7 @@
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
+#include "sbsim/storyboard/conditions/RisingCondition.h"
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
@@ -230,6 +231,47 @@ TEST_F(StoryboardTest, AStoryRegisteredBetweenPassesJoinsTheNextOne) {
                            R"({"t":2,"type":"activate","story":"slow","vehicle":"b"})",
                            R"({"t":3,"type":"deactivate","story":"fast","vehicle":"a","reason":"condition"})",
                            R"({"t":3,"type":"activate","story":"slow","vehicle":"a"})",
+                       }));
+}
+
+TEST_F(StoryboardTest, ARisingStoryIsActiveForExactlyOneStep) {
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<RisingCondition>(std::make_shared<SpeedConditionGreater>(5.0)),
+                                std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "rise"));
+    step(1, {car("a", 1)});
+    step(2, {car("a", 10)});
+    EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 3.0);
+    step(3, {car("a", 10)});
+    EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 50.0);
+    step(4, {car("a", 10)});
+    step(5, {car("a", 1)});
+    step(6, {car("a", 10)});
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t":2,"type":"activate","story":"rise","vehicle":"a"})",
+                           R"({"t":3,"type":"deactivate","story":"rise","vehicle":"a","reason":"condition"})",
+                           R"({"t":6,"type":"activate","story":"rise","vehicle":"a"})",
+                       }));
+}
+
+TEST_F(StoryboardTest, MaxActivationsLimitsEachVehicleUntilItLeaves) {
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0),
+                                                std::vector<EffectPtr>{std::make_shared<SpeedEffect>(3.0)}, "twice",
+                                                2));
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{}, "unlimited"));
+    // a flips fast/slow every step; b is fast throughout.
+    for (int t = 1; t <= 8; ++t) step(t, {car("a", t % 2 == 1 ? 10 : 1), car("b", 10)});
+    EXPECT_EQ(board.stories()[0]->activations(), 3u) << "a twice, b once";
+    EXPECT_EQ(board.stories()[1]->activations(), 5u) << "a at t = 1, 3, 5, 7; b once";
+    EXPECT_FALSE(board.isActive("a", *board.stories()[0]));
+    EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 50.0) << "the last activation ended and was not renewed";
+    lines();
+    // A vehicle that left and comes back under the same id starts afresh.
+    step(9, {car("b", 10)}, {"a"});
+    step(10, {car("a", 10), car("b", 10)});
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t":10,"type":"activate","story":"twice","vehicle":"a"})",
+                           R"({"t":10,"type":"activate","story":"unlimited","vehicle":"a"})",
                        }));
 }
 

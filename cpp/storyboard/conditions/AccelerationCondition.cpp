@@ -1,0 +1,22 @@
+#include "sbsim/storyboard/conditions/AccelerationCondition.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sbsim::storyboard {
+
+namespace {
+double checkedThreshold(double a, const char* what) {
+    if (std::isnan(a)) throw std::invalid_argument(std::string(what) + ": acceleration must not be NaN");
+    return a;
+}
+}  // namespace
+
+AccelerationConditionGreater::AccelerationConditionGreater(double threshold)
+    : threshold_(checkedThreshold(threshold, "AccelerationConditionGreater")) {}
+
+AccelerationConditionLess::AccelerationConditionLess(double threshold)
+    : threshold_(checkedThreshold(threshold, "AccelerationConditionLess")) {}
+
+}  // namespace sbsim::storyboard

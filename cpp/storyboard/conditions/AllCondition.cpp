@@ -1,0 +1,26 @@
+#include "sbsim/storyboard/conditions/AllCondition.h"
+
+#include <stdexcept>
+
+namespace sbsim::storyboard {
+
+AllCondition::AllCondition(std::vector<ConditionPtr> operands) : operands_(std::move(operands)) {
+    if (operands_.empty()) throw std::invalid_argument("AllCondition needs at least one condition");
+    for (const ConditionPtr& c : operands_) {
+        if (!c) throw std::invalid_argument("AllCondition: operand is null");
+        pure_ = pure_ && c->pure();
+    }
+}
+
+ConditionResult AllCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
+    ConditionResult result = operands_.front()->test(ctx, ego);
+    for (std::size_t k = 1; k < operands_.size() && result.isTrue(); ++k)
+        result = ConditionResult::conjunction(result, operands_[k]->test(ctx, ego));
+    return result;
+}
+
+void AllCondition::forEachChild(const std::function<void(Condition&)>& visit) {
+    for (const ConditionPtr& c : operands_) visit(*c);
+}
+
+}  // namespace sbsim::storyboard
