@@ -43,6 +43,10 @@ CLI::Validator seconds(bool allowZero) {
                                [](double s) { return std::isfinite(s) && s >= 1e-3 && s <= kMaxSeconds; });
 }
 
+CLI::Validator share() {
+    return numberWhere<double>("a share between 0 and 1", [](double x) { return x >= 0 && x <= 1; });
+}
+
 CLI::Validator metres(bool allowZero) {
     if (allowZero) return numberWhere<double>("metres >= 0", [](double m) { return std::isfinite(m) && m >= 0; });
     return numberWhere<double>("metres > 0", [](double m) { return std::isfinite(m) && m > 0; });
@@ -130,6 +134,17 @@ void CommandLine::declareOptions(CLI::App& app) {
                    "to 0 at the range, at most --v2x-range (default: no packet errors)")
         ->type_name("METRES")
         ->check(metres(true));
+    app.add_option("--penetration", penetration,
+                   "share of vehicles with V2X equipment, drawn per vehicle id from\n"
+                   "the seed (the same vehicles in every run with that seed); the\n"
+                   "others get only services with <equipped match=\"inverse\"|\"any\"/>")
+        ->type_name("SHARE")
+        ->check(share())
+        ->capture_default_str();
+    app.add_flag("--storyboard-equipped-only", storyboardEquippedOnly,
+                 "stories see only equipped vehicles, as egos and as others\n"
+                 "(as in Artery, where only vehicles with a middleware take part)");
+    for (const auto& [name, option] : optionParameters()) optionsByParameter_[name] = app.get_option(option);
 
     app.option_defaults()->group("Run and output");
     app.add_option("--events", events, "write storyboard events as JSON Lines")->type_name("FILE.jsonl");
@@ -158,9 +173,41 @@ void CommandLine::complete(std::vector<std::string> sumoArgs) {
         sumocfg = *file;
     }
     sumoOptions.insert(sumoOptions.end(), sumoArgs.begin(), sumoArgs.end());
+    applyOptionParameters();
     if (v2xFadeStart && *v2xFadeStart > v2xRange) {
         throw UsageError(fmt::format("--v2x-fade-start: the fade start ({:g} m) must not exceed --v2x-range ({:g} m)",
                                      *v2xFadeStart, v2xRange));
+    }
+}
+
+const std::map<std::string, std::string, std::less<>>& CommandLine::optionParameters() {
+    static const std::map<std::string, std::string, std::less<>> names{
+        {"middleware_interval", "--middleware-interval"},
+        {"penetration", "--penetration"},
+        {"v2x_fade_start", "--v2x-fade-start"},
+        {"v2x_latency", "--v2x-latency"},
+        {"v2x_range", "--v2x-range"},
+    };
+    return names;
+}
+
+void CommandLine::applyOptionParameters() {
+    for (const std::string& assignment : params) {
+        const auto eq = assignment.find('=');
+        const std::string name = assignment.substr(0, eq);
+        const auto it = optionsByParameter_.find(name);
+        if (it == optionsByParameter_.end()) continue;
+        CLI::Option& option = *it->second;
+        if (option.count() > 0) {
+            throw UsageError(fmt::format("--param {}: {} is given as an option too", assignment, option.get_name()));
+        }
+        // The option's own conversion and checks, as if it had been given.
+        option.add_result(assignment.substr(eq + 1));
+        try {
+            option.run_callback();
+        } catch (const CLI::ParseError& e) {
+            throw UsageError(fmt::format("--param {}: {}", assignment, e.what()));
+        }
     }
 }
 

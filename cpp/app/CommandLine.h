@@ -2,13 +2,15 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace CLI {
 class App;
-}
+class Option;
+}  // namespace CLI
 
 namespace sbsim::app {
 
@@ -33,6 +35,8 @@ struct CommandLine {
     double v2xRange = 500;                          ///< m
     double v2xLatency = 0.001;                      ///< s
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors
+    double penetration = 1.0;                       ///< share of vehicles with V2X equipment
+    bool storyboardEquippedOnly = false;            ///< stories see only equipped vehicles
     bool quiet = false;
     unsigned threads = 0;     ///< threads reading the per-step snapshot; 0 = all cores
     bool noSnapshot = false;  ///< step SUMO only (a benchmark baseline)
@@ -43,6 +47,15 @@ struct CommandLine {
     /// After parsing: appends `sumoArgs` (the words after `--`) to the SUMO words, taking SUMO's
     /// `-c FILE` from them as the sumocfg, and checks what single options cannot. Throws UsageError.
     void complete(std::vector<std::string> sumoArgs);
+
+    /// Study parameters that set an option of the same name (`--param v2x_range=300` is
+    /// `--v2x-range 300`), so that a study can sweep them: name -> option.
+    static const std::map<std::string, std::string, std::less<>>& optionParameters();
+
+private:
+    void applyOptionParameters();
+
+    std::map<std::string, CLI::Option*, std::less<>> optionsByParameter_;
 };
 
 }  // namespace sbsim::app

@@ -30,6 +30,7 @@
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 #include "sbsim/storyboard/python/StoryScript.h"
+#include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::app {
@@ -112,6 +113,9 @@ int runSimulation(const CommandLine& cl) {
             throw UsageError(fmt::format("--param: {}", e.what()));
         }
     }
+    // The parameters that set options (CommandLine::complete applied them) count as read.
+    for (const auto& [name, option] : CommandLine::optionParameters()) (void)sim.parameters().get(name);
+    const traffic::Penetration penetration(cl.penetration, sim.seed());
     auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
     try {
         sumo.load();
@@ -132,6 +136,7 @@ int runSimulation(const CommandLine& cl) {
         board = &sim.emplaceModule<storyboard::Storyboard>(log ? &*log : nullptr);
         board->attach(sumo);
         board->setWarmupEndTime(kernel::SimTime::fromSeconds(cl.warmup));
+        if (cl.storyboardEquippedOnly) board->seeEquippedOnly(penetration);
         script = std::make_unique<storyboard::StoryScript>(*python, *story, *board,
                                                            storyboard::CanvasFrame(sumo.netBoundary()));
         std::size_t created = 0;
@@ -154,6 +159,7 @@ int runSimulation(const CommandLine& cl) {
             return serviceManager->middlewareOf(id);
         });
         serviceManager->setMedium(*medium);
+        serviceManager->setPenetration(penetration);
         serviceManager->attach(sumo);
     }
 

@@ -82,6 +82,11 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         }
     }
     out["stories"] = std::move(stories);
+    ordered_json signals = ordered_json::object();
+    if (f.board != nullptr) {
+        for (const auto& [cause, count] : f.board->signalsByCause()) signals[cause] = count;
+    }
+    out["signals"] = std::move(signals);
     ordered_json messages = ordered_json::object();
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();

@@ -79,9 +79,10 @@ void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, const k
 void ServiceManager::depart(const std::string& id) {
     const auto index = snapshot_.indexOf(id);
     const std::string type = index ? snapshot_.typeId(*index) : std::string();
+    const bool equipped = penetration_.equipped(id);
     std::vector<const ServiceSpec*> selected;
     for (const ServiceSpec& spec : config_.services()) {
-        if (spec.matches(id, type)) selected.push_back(&spec);
+        if (spec.admits(equipped) && spec.matches(id, type)) selected.push_back(&spec);
     }
     if (selected.empty()) return;
     auto& middleware = simulation().emplaceModule<Middleware>(*this, id);

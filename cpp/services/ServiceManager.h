@@ -12,6 +12,7 @@
 #include "sbsim/services/Medium.h"
 #include "sbsim/services/Middleware.h"
 #include "sbsim/services/ServicesConfig.h"
+#include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::services {
@@ -29,6 +30,9 @@ public:
     /// Listen to vehicles departing and arriving (a SumoBridge).
     void attach(kernel::Module& sumo);
     void setMedium(Medium& medium) { medium_ = &medium; }
+    /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
+    /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
+    void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
 
     kernel::SimTime interval() const { return interval_; }
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
@@ -50,6 +54,7 @@ private:
     kernel::SimTime interval_;
     const traffic::VehicleSnapshot& snapshot_;
     Medium* medium_ = nullptr;
+    traffic::Penetration penetration_;
     std::unordered_map<std::string, Middleware*> middlewares_;
     std::vector<Middleware*> departureOrder_;
     kernel::Message triggerTimer_{"service trigger"};

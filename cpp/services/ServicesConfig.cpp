@@ -213,6 +213,23 @@ ServiceFilter parseFilter(const XMLElement& element, const std::string& source) 
     return filter;
 }
 
+ServiceSpec::Equipment parseEquipment(const XMLElement& element, const std::string& source) {
+    auto equipment = ServiceSpec::Equipment::Equipped;
+    for (const auto& [key, value] : attributesOf(element)) {
+        if (key != "match") fail(source, element.GetLineNum(), "unexpected attribute '" + key + "' on <equipped>");
+        if (value == "inverse") {
+            equipment = ServiceSpec::Equipment::Unequipped;
+        } else if (value == "any") {
+            equipment = ServiceSpec::Equipment::Any;
+        } else {
+            fail(source, element.GetLineNum(),
+                 "unknown match '" + value + "' in <equipped> filter (expected 'inverse' or 'any')");
+        }
+    }
+    rejectText(element, source);
+    return equipment;
+}
+
 void parseFilters(const XMLElement& element, const std::string& source, ServiceSpec& spec) {
     for (const auto& [key, value] : attributesOf(element)) {
         if (key != "operator") fail(source, element.GetLineNum(), "unexpected attribute '" + key + "' on <filters>");
@@ -229,11 +246,15 @@ void parseFilters(const XMLElement& element, const std::string& source, ServiceS
         const std::string_view name = child->Name();
         if (name == "name" || name == "type") {
             spec.filters.push_back(parseFilter(*child, source));
+        } else if (name == "equipped") {
+            spec.equipment = parseEquipment(*child, source);
         } else if (name == "penetration") {
             fail(source, child->GetLineNum(),
-                 "<penetration> filters are not supported (they need a random draw per vehicle)");
+                 "Artery's <penetration> filter is not supported: run sbsim with --penetration (and <equipped> "
+                 "filters)");
         } else {
-            fail(source, child->GetLineNum(), "unknown filter " + tag(name) + " (expected <name> or <type>)");
+            fail(source, child->GetLineNum(),
+                 "unknown filter " + tag(name) + " (expected <name>, <type> or <equipped>)");
         }
     }
 }

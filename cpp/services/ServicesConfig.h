@@ -54,6 +54,14 @@ struct SBSIM_API ServiceSpec {
     std::map<std::string, std::string, std::less<>> parameters;
     std::vector<ServiceFilter> filters;
     Combine combine = Combine::Any;
+    /// Which vehicles by V2X equipment (--penetration): <equipped/> or no such element: the
+    /// equipped ones; <equipped match="inverse"/>: the others; <equipped match="any"/>: all.
+    /// It applies on top of the name and type filters, whatever their operator.
+    enum class Equipment { Equipped, Unequipped, Any };
+    Equipment equipment = Equipment::Equipped;
+    bool admits(bool equipped) const {
+        return equipment == Equipment::Any || (equipment == Equipment::Equipped) == equipped;
+    }
     std::string source;  ///< the file, for messages
     int line = 0;        ///< of the <service> start tag
 
@@ -79,6 +87,7 @@ private:
 ///         <filters operator="or">          <!-- optional; "or" (the default, as in Artery) or "and" -->
 ///           <name pattern="police\d+"/>    <!-- regex on the vehicle id -->
 ///           <type pattern="bus" match="inverse"/>  <!-- regex on the SUMO vehicle type -->
+///           <equipped match="any"/>        <!-- sbsim's: also on vehicles --penetration left out -->
 ///         </filters>
 ///       </service>
 ///     </services>

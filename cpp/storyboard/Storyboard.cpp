@@ -41,6 +41,7 @@ public:
         return others_;
     }
     void emitSignal(const std::string& cause, bool onExit) override {
+        ++board_.signalsByCause_[cause];
         if (board_.log_ != nullptr) board_.log_->signal(board_.now_, story_.name(), id_, cause, others(), onExit);
         if (!board_.hasListeners(signalEmitted)) return;  // nobody to tell: build nothing
         StoryboardSignal signal;
@@ -84,7 +85,18 @@ void Storyboard::receiveSignal(kernel::Module&, kernel::SignalId id, std::string
 void Storyboard::receiveSignal(kernel::Module&, kernel::SignalId id, const kernel::Object& value) {
     if (id != traffic::SumoBridge::stepSignal) return;
     const auto& snapshot = dynamic_cast<const traffic::VehicleSnapshot&>(value);
-    update(snapshot, std::move(leftSinceStep_));
+    if (!equippedOnly_) {
+        update(snapshot, std::move(leftSinceStep_));
+    } else {
+        // Unequipped vehicles are not there for the stories: never an ego, never a neighbour.
+        equippedScratch_.clear();
+        for (traffic::VehicleSnapshot::Index i = 0; i < snapshot.size(); ++i) {
+            if (equippedOnly_->equipped(snapshot.ids()[i])) equippedScratch_.push_back(i);
+        }
+        equippedView_.assignSubset(snapshot, equippedScratch_);
+        std::erase_if(leftSinceStep_, [&](const std::string& id) { return !equippedOnly_->equipped(id); });
+        update(equippedView_, std::move(leftSinceStep_));
+    }
     leftSinceStep_.clear();
 }
 

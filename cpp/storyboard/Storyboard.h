@@ -17,6 +17,7 @@
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/TrafficQueries.h"
 #include "sbsim/traffic/VehicleController.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
@@ -52,6 +53,9 @@ public:
 
     /// Artery's warm-up period, as scripts ask for it (getWarmupEndTime); it changes nothing else.
     void setWarmupEndTime(kernel::SimTime t) { warmupEnd_ = t; }
+    /// Stories see only the vehicles `penetration` equips, as egos and as others
+    /// (--storyboard-equipped-only); by default they see every vehicle.
+    void seeEquippedOnly(const traffic::Penetration& penetration) { equippedOnly_ = penetration; }
     kernel::SimTime warmupEndTime() const { return warmupEnd_; }
 
     void registerStory(StoryPtr story);
@@ -65,6 +69,8 @@ public:
     bool isActive(const std::string& vehicle, const Story& story) const;
     /// Wall-clock seconds spent in update() (a profiling figure for the summary).
     double updateSeconds() const { return updateSeconds_; }
+    /// How many signals SignalEffects emitted, by cause (the summary's figures).
+    const std::map<std::string, std::uint64_t, std::less<>>& signalsByCause() const { return signalsByCause_; }
 
 private:
     struct AppliedEffect {
@@ -123,7 +129,11 @@ private:
     ControllerFactory makeController_;
     std::unique_ptr<traffic::TrafficQueries> queries_;
     double updateSeconds_ = 0;
+    std::map<std::string, std::uint64_t, std::less<>> signalsByCause_;
     kernel::SimTime warmupEnd_;
+    std::optional<traffic::Penetration> equippedOnly_;
+    traffic::VehicleSnapshot equippedView_;  // the equipped vehicles of the step, with equippedOnly_
+    std::vector<traffic::VehicleSnapshot::Index> equippedScratch_;
 };
 
 }  // namespace sbsim::storyboard

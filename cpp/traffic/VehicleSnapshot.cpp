@@ -67,4 +67,38 @@ void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time
     }
 }
 
+void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vector<Index>& keep) {
+    if (&from == this) throw std::invalid_argument("assignSubset: a snapshot cannot be a subset of itself");
+    const auto n = static_cast<Eigen::Index>(keep.size());
+    time_ = from.time_;
+    // The source's table only grows within a generation: copy it only when it changed.
+    if (generation_ != from.generation_ || strings_.size() != from.strings_.size()) {
+        strings_ = from.strings_;
+        generation_ = from.generation_;
+    }
+    ids_.resize(keep.size());
+    road_.resize(keep.size());
+    lane_.resize(keep.size());
+    type_.resize(keep.size());
+    position_.resize(2, n);
+    for (Eigen::VectorXd* column : {&speed_, &angle_, &acceleration_, &length_, &width_, &maxSpeed_}) column->resize(n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const Index i = keep[static_cast<std::size_t>(k)];
+        if (i < 0 || i >= from.size() || (k > 0 && i <= keep[static_cast<std::size_t>(k - 1)])) {
+            throw std::invalid_argument("assignSubset: indices must be ascending and within the snapshot");
+        }
+        ids_[k] = from.ids_[i];
+        road_[k] = from.road_[i];
+        lane_[k] = from.lane_[i];
+        type_[k] = from.type_[i];
+        position_.col(k) = from.position_.col(i);
+        speed_[k] = from.speed_[i];
+        angle_[k] = from.angle_[i];
+        acceleration_[k] = from.acceleration_[i];
+        length_[k] = from.length_[i];
+        width_[k] = from.width_[i];
+        maxSpeed_[k] = from.maxSpeed_[i];
+    }
+}
+
 }  // namespace sbsim::traffic

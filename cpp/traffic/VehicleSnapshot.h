@@ -63,6 +63,9 @@ public:
     };
     /// Replaces the content with `vehicles` (any order; stored in ascending id order) at `time`.
     void assign(std::vector<Vehicle> vehicles, kernel::SimTime time);
+    /// Replaces the content with the vehicles of `from` at the ascending indices `keep`, with the
+    /// same interned keys (a view of some vehicles, e.g. the equipped ones). `from` must not be this.
+    void assignSubset(const VehicleSnapshot& from, const std::vector<Index>& keep);
 
 private:
     friend class SnapshotBuilder;

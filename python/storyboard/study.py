@@ -154,12 +154,14 @@ class StudySpec:
 
 def summary_columns(summary: dict[str, Any]) -> dict[str, Any]:
     """A run's --summary JSON as table columns: counts, per-story activations and active
-    vehicle-seconds, messages per type, the time in SUMO and in the storyboard."""
+    vehicle-seconds, signals per cause, messages per type, the time in SUMO and in the storyboard."""
     row: dict[str, Any] = {k: summary[k] for k in ("steps", "vehicles_seen", "peak_running") if k in summary}
     row["end_reason"] = summary.get("end", {}).get("reason")
     for story in summary.get("stories", []):
         row[f"activations:{story['name']}"] = story["activations"]
         row[f"active_vehicle_s:{story['name']}"] = story["active_vehicle_seconds"]
+    for cause, count in summary.get("signals", {}).items():
+        row[f"signals:{cause}"] = count
     for kind, counts in summary.get("messages", {}).items():
         row[f"sent:{kind}"] = counts["sent"]
         row[f"delivered:{kind}"] = counts["delivered"]

@@ -74,6 +74,8 @@ OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--v2x-range": (None, "500"),
     "--v2x-latency": (None, "0.001"),
     "--v2x-fade-start": (None, None),
+    "--penetration": (None, "1"),
+    "--storyboard-equipped-only": (None, None),
     "--events": (None, None),
     "--threads": (None, "0"),
     "--no-snapshot": (None, None),

@@ -359,12 +359,13 @@ TEST(ServicesConfigErrors, MissingOrEmptyType) {
 
 TEST(ServicesConfigErrors, UnknownFilter) {
     EXPECT_EQ(errorOf(oneService("<filters>\n  <name pattern='a'/>\n  <speed max='3'/>\n</filters>\n")),
-              "s.xml:5: unknown filter <speed> (expected <name> or <type>)");
+              "s.xml:5: unknown filter <speed> (expected <name>, <type> or <equipped>)");
 }
 
 TEST(ServicesConfigErrors, ArteryRandomFiltersAreRejected) {
     EXPECT_EQ(errorOf(oneService("<filters>\n<penetration rate='0.1'/>\n</filters>\n")),
-              "s.xml:4: <penetration> filters are not supported (they need a random draw per vehicle)");
+              "s.xml:4: Artery's <penetration> filter is not supported: run sbsim with --penetration (and <equipped> "
+              "filters)");
     EXPECT_EQ(errorOf(oneService("<filters>\n<type pattern='car' rate='0.5'/>\n</filters>\n")),
               "s.xml:4: the 'rate' attribute of <type> filters is not supported");
 }
@@ -556,6 +557,34 @@ TEST(ServicesConfigErrors, OverlongPatternIsRefused) {
               "s.xml:4: the pattern of <name> filter is 1001 characters long (at most 1000)");
     const std::string nested = std::string(450, '(') + "a" + std::string(450, ')');
     EXPECT_NO_THROW(parse(oneService("<filters><name pattern='" + nested + "'/></filters>")));
+}
+
+TEST(ServicesConfigEquipment, EquippedVehiclesOnlyUnlessAsked) {
+    using Equipment = ServiceSpec::Equipment;
+    const ServiceSpec plain = onlyService(parse(oneService("")));
+    EXPECT_EQ(plain.equipment, Equipment::Equipped);
+    EXPECT_TRUE(plain.admits(true));
+    EXPECT_FALSE(plain.admits(false));
+    EXPECT_EQ(onlyService(parse(oneService("<filters><equipped/></filters>"))).equipment, Equipment::Equipped);
+    const ServiceSpec others = onlyService(parse(oneService("<filters><equipped match='inverse'/></filters>")));
+    EXPECT_FALSE(others.admits(true));
+    EXPECT_TRUE(others.admits(false));
+    const ServiceSpec all = onlyService(parse(oneService("<filters><equipped match='any'/></filters>")));
+    EXPECT_TRUE(all.admits(true));
+    EXPECT_TRUE(all.admits(false));
+    // It applies on top of the name filters, whatever their operator.
+    const ServiceSpec named =
+        onlyService(parse(oneService("<filters operator='or'><name pattern='p.*'/><equipped match='any'/></filters>")));
+    EXPECT_EQ(named.filters.size(), 1U);
+    EXPECT_TRUE(named.matches("p1", "car"));
+    EXPECT_FALSE(named.matches("q1", "car"));
+}
+
+TEST(ServicesConfigErrors, BadEquippedFilter) {
+    EXPECT_EQ(errorOf(oneService("<filters>\n<equipped match='some'/>\n</filters>\n")),
+              "s.xml:4: unknown match 'some' in <equipped> filter (expected 'inverse' or 'any')");
+    EXPECT_EQ(errorOf(oneService("<filters>\n<equipped rate='1'/>\n</filters>\n")),
+              "s.xml:4: unexpected attribute 'rate' on <equipped>");
 }
 
 }  // namespace
