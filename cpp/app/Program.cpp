@@ -10,6 +10,7 @@
 #include "sbsim/app/CommandLine.h"
 #include "sbsim/app/HelpFormatter.h"
 #include "sbsim/app/Interruption.h"
+#include "sbsim/app/ProjData.h"
 #include "sbsim/app/SimulationRun.h"
 #include "sbsim/app/Subcommands.h"
 #include "sbsim/storyboard/StoryError.h"
@@ -88,6 +89,7 @@ int parseAndRun(const std::vector<std::string>& args) {
 
 int runProgram(const std::vector<std::string>& args) {
     Interruption::install();
+    pointProjAtSumoData();  // before SUMO is loaded: PROJ reads the variables once
     // Once interrupted, a failure other than bad input is the interruption's doing (a story's
     // KeyboardInterrupt, SUMO closed midway): exit code 130, not the failure's.
     const auto interrupted = [] {
