@@ -158,7 +158,13 @@ void CommandLine::declareOptions(CLI::App& app) {
                  "benchmarks; not with --story or --services: they read them)")
         ->excludes(storyOption)
         ->excludes(servicesOption);
-    app.add_flag("-q,--quiet", quiet, "no progress, no summary, no SUMO warnings");
+    app.add_option(
+           "--sumo-log", sumoLog,
+           "write every SUMO warning to this file (stderr shows the\nfirst 3 of each kind; the summary counts them)")
+        ->type_name("FILE");
+    auto* verboseFlag =
+        app.add_flag("-v,--verbose", verbose, "show every SUMO warning on stderr, not the first 3 of a kind");
+    app.add_flag("-q,--quiet", quiet, "no progress, no summary, no SUMO warnings")->excludes(verboseFlag);
 
     // Options declared later (a subcommand's) start from CLI11's defaults again.
     app.option_defaults()->group("Options")->multi_option_policy(CLI::MultiOptionPolicy::Throw);

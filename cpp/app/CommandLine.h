@@ -37,6 +37,8 @@ struct CommandLine {
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors
     double penetration = 1.0;                       ///< share of vehicles with V2X equipment
     bool storyboardEquippedOnly = false;            ///< stories see only equipped vehicles
+    std::optional<std::filesystem::path> sumoLog;   ///< every SUMO warning, as SUMO printed it
+    bool verbose = false;                           ///< every SUMO warning on stderr, not the first few of a kind
     bool quiet = false;
     unsigned threads = 0;     ///< threads reading the per-step snapshot; 0 = all cores
     bool noSnapshot = false;  ///< step SUMO only (a benchmark baseline)

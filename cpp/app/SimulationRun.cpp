@@ -65,6 +65,9 @@ void checkSumoInputs(const fs::path& sumocfg, const std::vector<std::string>& wo
 
 }  // namespace
 
+/// SUMO warnings of one kind shown on stderr before they are only counted (--verbose: all).
+constexpr std::size_t kWarningsShown = 3;
+
 int runSimulation(const CommandLine& cl) {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
@@ -91,6 +94,8 @@ int runSimulation(const CommandLine& cl) {
     if (cl.events) events.emplace("--events", *cl.events, files);
     std::optional<OutputFile> summary;
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
+    std::optional<OutputFile> sumoLog;
+    if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
     Interruption::checkpoint("before SUMO loaded");
 
     traffic::SumoSettings settings;
@@ -99,6 +104,7 @@ int runSimulation(const CommandLine& cl) {
     settings.seed = cl.seed;
     if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
     settings.quiet = cl.quiet;
+    settings.warningsShown = cl.verbose ? SIZE_MAX : kWarningsShown;
     settings.readVehicles = !cl.noSnapshot;
 
     // Declared before the simulation so it outlives the stories' Python objects.
@@ -117,6 +123,7 @@ int runSimulation(const CommandLine& cl) {
     for (const auto& [name, option] : CommandLine::optionParameters()) (void)sim.parameters().get(name);
     const traffic::Penetration penetration(cl.penetration, sim.seed());
     auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
+    if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
     try {
         sumo.load();
     } catch (const traffic::SumoLoadError& e) {
@@ -188,6 +195,7 @@ int runSimulation(const CommandLine& cl) {
     if (progress) progress->clear();
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
+    if (sumoLog && !Interruption::requested()) sumoLog->commit();
 
     const RunFigures figures{sumocfg,
                              sim,

@@ -47,6 +47,11 @@ void printSummary(const RunFigures& f) {
             fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
         }
     }
+    if (const std::size_t warnings = f.sumo.warnings().total(); warnings > 0) {
+        const auto kinds = f.sumo.warnings().kinds();
+        fmt::print("sumo warnings: {} of {} kind{}, most: {} × {}\n", warnings, kinds.size(),
+                   kinds.size() == 1 ? "" : "s", kinds.front().count, kinds.front().pattern);
+    }
     const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
     fmt::print("wall time: {:.3f} s\n", f.wall);
     fmt::print("time in sumo: {:.3f} s\n", f.sumo.sumoSeconds());
@@ -95,6 +100,11 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         }
     }
     out["messages"] = std::move(messages);
+    ordered_json warningKinds = ordered_json::array();
+    for (const auto& kind : f.sumo.warnings().kinds()) {
+        warningKinds.push_back({{"kind", kind.pattern}, {"count", kind.count}});
+    }
+    out["sumo_warnings"] = {{"total", f.sumo.warnings().total()}, {"kinds", std::move(warningKinds)}};
     const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
     out["timing"] = {{"wall_s", f.wall},
                      {"sumo_s", f.sumo.sumoSeconds()},

@@ -42,11 +42,11 @@ std::string sumoErrorLine(const std::string& printed, const std::string& fallbac
     return kernel::oneLine(line.empty() ? fallback : line);
 }
 
-/// Runs `call` with stderr captured. Returns nothing if it succeeded (having passed SUMO's
-/// warnings on to stderr, as SUMO printed them), else SUMO's error as one line. Every exception
+/// Runs `call` with stderr captured. Returns nothing if it succeeded (having handed what SUMO
+/// printed to `warnings`), else SUMO's error as one line. Every exception
 /// counts: libsumo's, and SUMO's own ProcessErrors, which are plain std::runtime_errors.
 template <typename F>
-std::optional<std::string> capturingErrors(StderrCapture& capture, F call) {
+std::optional<std::string> capturingErrors(StderrCapture& capture, SumoWarnings& warnings, F call) {
     std::optional<std::string> failure;
     capture.start();
     try {
@@ -58,7 +58,7 @@ std::optional<std::string> capturingErrors(StderrCapture& capture, F call) {
     }
     const std::string printed = capture.stop();
     if (failure) return sumoErrorLine(printed, failure->empty() ? "unknown error" : *failure);
-    if (!printed.empty()) std::fputs(printed.c_str(), stderr);
+    if (!printed.empty()) warnings.take(printed);
     return std::nullopt;
 }
 }  // namespace
@@ -67,7 +67,8 @@ const kernel::SignalId SumoBridge::departedSignal = kernel::registerSignal("vehi
 const kernel::SignalId SumoBridge::arrivedSignal = kernel::registerSignal("vehicleArrived");
 const kernel::SignalId SumoBridge::stepSignal = kernel::registerSignal("sumoStep");
 
-SumoBridge::SumoBridge(SumoSettings settings) : kernel::Module("sumo"), settings_(std::move(settings)) {
+SumoBridge::SumoBridge(SumoSettings settings)
+    : kernel::Module("sumo"), settings_(std::move(settings)), warnings_(settings_.warningsShown) {
     stepMessage_.setPriority(kStepPriority);
     endMessage_.setPriority(std::numeric_limits<int>::max());
 }
@@ -87,7 +88,7 @@ void SumoBridge::load() {
     if (settings_.quiet) defaultOption(args, "--no-warnings", "true");
     args.insert(args.end(), extra.begin(), extra.end());
 
-    if (const auto failure = capturingErrors(capture_, [&] { libsumo::Simulation::load(args); })) {
+    if (const auto failure = capturingErrors(capture_, warnings_, [&] { libsumo::Simulation::load(args); })) {
         throw SumoLoadError(*failure);
     }
     loaded_ = true;
@@ -181,7 +182,7 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
 std::string SumoBridge::sumoVersion() const { return libsumo::Simulation::getVersion().second; }
 
 void SumoBridge::step() {
-    if (const auto failure = capturingErrors(capture_, [] { libsumo::Simulation::step(); })) {
+    if (const auto failure = capturingErrors(capture_, warnings_, [] { libsumo::Simulation::step(); })) {
         throw SumoError(*failure);
     }
 }

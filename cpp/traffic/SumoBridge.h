@@ -11,6 +11,7 @@
 #include "sbsim/kernel/Module.h"
 #include "sbsim/traffic/SnapshotBuilder.h"
 #include "sbsim/traffic/StderrCapture.h"
+#include "sbsim/traffic/SumoWarnings.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
@@ -22,6 +23,7 @@ struct SBSIM_API SumoSettings {
     std::optional<std::int64_t> seed;       ///< SUMO's --seed
     std::optional<kernel::SimTime> end;     ///< default: the configuration's end, else until no vehicle is left
     bool quiet = false;                     ///< also silences SUMO's warnings
+    std::size_t warningsShown = 3;          ///< SUMO warnings of one kind shown on stderr (SIZE_MAX: all)
     /// False: step SUMO without reading vehicle states (the snapshot keeps only ids) — a
     /// baseline that shows libsumo's own cost against the sumo binary.
     bool readVehicles = true;
@@ -90,6 +92,9 @@ public:
     /// SUMO's version string, e.g. "SUMO v1_28_0" (asked of libsumo; SUMO must be loaded).
     std::string sumoVersion() const;
     double snapshotSeconds() const { return snapshotSeconds_; }
+    /// SUMO's warnings so far, by kind (set a log on it before load() to keep them all).
+    SumoWarnings& warnings() { return warnings_; }
+    const SumoWarnings& warnings() const { return warnings_; }
 
 private:
     void close();
@@ -110,6 +115,7 @@ private:
     SnapshotBuilder builder_;
     VehicleSnapshot snapshot_;
     StderrCapture capture_;
+    SumoWarnings warnings_;
     EndReason endReason_ = EndReason::Running;
     std::uint64_t steps_ = 0;
     std::uint64_t vehiclesSeen_ = 0;

@@ -79,6 +79,8 @@ OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--events": (None, None),
     "--threads": (None, "0"),
     "--no-snapshot": (None, None),
+    "--sumo-log": (None, None),
+    "--verbose": ("-v", None),
     "--quiet": ("-q", None),
     "--version": (None, None),
     "--help": ("-h", None),
