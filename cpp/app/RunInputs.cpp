@@ -7,7 +7,10 @@
 #include <optional>
 
 #include "sbsim/app/BadInput.h"
+#include "sbsim/app/BundledScenario.h"
 #include "sbsim/app/ElfFile.h"
+#include "sbsim/app/SumoOptions.h"
+#include "sbsim/app/SumoStateFile.h"
 #include "sbsim/services/ServiceRegistry.h"
 
 namespace sbsim::app {
@@ -63,6 +66,27 @@ services::ServicesConfig loadServicesConfig(const fs::path& path, RunFiles& file
                                      spec.line, spec.type, fmt::join(registry.names(), ", ")));
     }
     return std::move(*config);
+}
+
+void checkSumoInputs(const std::filesystem::path& sumocfg, const std::vector<std::string>& words, RunFiles& files) {
+    files.requireInput("--sumocfg", sumocfg);
+    const SumoOptions options(sumocfg, words);
+    options.rejectUnrunnable();
+    options.addInputs(files);
+    for (const std::filesystem::path& state : options.files("load-state")) {
+        checkSumoState(fmt::format("--load-state in {}", options.sourceOf("load-state")), state,
+                       options.files("net-file"));
+    }
+}
+
+ScenarioFiles scenarioFiles(const CommandLine& options, bool withBundledStory) {
+    ScenarioFiles files{options.sumocfg.value_or(std::filesystem::path()), options.story};
+    if (!options.sumocfg) {
+        const BundledScenario bundled = BundledScenario::locate();
+        files.sumocfg = bundled.sumocfg;
+        if (!files.story && withBundledStory) files.story = bundled.story;
+    }
+    return files;
 }
 
 }  // namespace sbsim::app

@@ -2,9 +2,11 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "sbsim/app/CommandLine.h"
 #include "sbsim/app/PluginLibrary.h"
 #include "sbsim/app/RunFiles.h"
 #include "sbsim/services/ServicesConfig.h"
@@ -13,6 +15,18 @@ namespace sbsim::app {
 
 // A run's service inputs, checked before anything runs: a problem is an InputError (one line, exit 2)
 // naming the option and the file. Each file is recorded in `files` as an input.
+
+/// The run's SUMO configuration and story: --sumocfg and --story, or the bundled scenario and (when
+/// `withBundledStory` and no --story was given) its story.
+struct ScenarioFiles {
+    std::filesystem::path sumocfg;
+    std::optional<std::filesystem::path> story;
+};
+ScenarioFiles scenarioFiles(const CommandLine& options, bool withBundledStory);
+
+/// Checks what SUMO will read before it reads it: regular files, no option that keeps SUMO from
+/// running, a state it can load.
+void checkSumoInputs(const std::filesystem::path& sumocfg, const std::vector<std::string>& words, RunFiles& files);
 
 /// Loads the --plugin libraries in order. Each must be a loadable ELF shared library, given once,
 /// and must register at least one service type, none registered before.

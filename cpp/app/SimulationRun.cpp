@@ -50,19 +50,6 @@ void untilInterrupted(F phase) {
     }
 }
 
-/// Checks what SUMO will read before it reads it: regular files, no option that keeps SUMO from
-/// running, a state it can load.
-void checkSumoInputs(const fs::path& sumocfg, const std::vector<std::string>& words, RunFiles& files) {
-    files.requireInput("--sumocfg", sumocfg);
-    const SumoOptions options(sumocfg, words);
-    options.rejectUnrunnable();
-    options.addInputs(files);
-    for (const fs::path& state : options.files("load-state")) {
-        checkSumoState(fmt::format("--load-state in {}", options.sourceOf("load-state")), state,
-                       options.files("net-file"));
-    }
-}
-
 }  // namespace
 
 /// SUMO warnings of one kind shown on stderr before they are only counted (--verbose: all).
@@ -72,15 +59,7 @@ int runSimulation(const CommandLine& cl) {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
 
-    fs::path sumocfg;
-    std::optional<fs::path> story = cl.story;
-    if (cl.sumocfg) {
-        sumocfg = *cl.sumocfg;
-    } else {
-        const BundledScenario bundled = BundledScenario::locate();
-        sumocfg = bundled.sumocfg;
-        if (!story && !cl.noSnapshot) story = bundled.story;
-    }
+    const auto [sumocfg, story] = scenarioFiles(cl, !cl.noSnapshot);
     RunFiles files;
     checkSumoInputs(sumocfg, cl.sumoOptions, files);
     if (story) files.requireInput("--story", *story);

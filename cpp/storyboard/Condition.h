@@ -3,11 +3,13 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/storyboard/ConditionResult.h"
 #include "sbsim/storyboard/EvaluationContext.h"
+#include "sbsim/storyboard/TypeName.h"
 
 namespace sbsim::storyboard {
 
@@ -33,6 +35,8 @@ public:
     virtual bool pure() const { return false; }
     /// Calls `visit` on each direct child (And/Or), so the board can reach every node of a tree.
     virtual void forEachChild(const std::function<void(Condition&)>& /*visit*/) {}
+    /// The class name messages show (a Python condition: its Python class's).
+    virtual std::string typeName() const { return typeNameOf(typeid(*this)); }
 };
 
 using ConditionPtr = std::shared_ptr<Condition>;

@@ -7,6 +7,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/storyboard/ConditionResult.h"
 #include "sbsim/storyboard/EffectStack.h"
+#include "sbsim/storyboard/TypeName.h"
 #include "sbsim/storyboard/VehicleHandle.h"
 #include "sbsim/traffic/VehicleController.h"
 
@@ -41,6 +42,8 @@ public:
     virtual ~Effect() = default;
     virtual void apply(EffectScope& scope) = 0;
     virtual void remove(EffectScope& scope) = 0;
+    /// The class name messages show (a Python effect: its Python class's).
+    virtual std::string typeName() const { return typeNameOf(typeid(*this)); }
 };
 
 using EffectPtr = std::shared_ptr<Effect>;

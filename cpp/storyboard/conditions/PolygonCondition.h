@@ -19,8 +19,15 @@ public:
 
     bool pure() const override { return true; }
 
+    /// The frame the script wrote the points in (they are stored in SUMO's), so that `sbsim check`
+    /// can say which frame would have fitted a polygon that misses the network.
+    enum class GivenFrame { Sumo, Canvas };
+    GivenFrame givenFrame() const { return givenFrame_; }
+    void setGivenFrame(GivenFrame frame) { givenFrame_ = frame; }
+
 private:
     geometry::Polygon polygon_;
+    GivenFrame givenFrame_ = GivenFrame::Sumo;
 };
 
 }  // namespace sbsim::storyboard

@@ -104,12 +104,18 @@ void bindConditions(py::module_& m) {
     py::class_<PolygonCondition, Condition, py::smart_holder>(m, "PolygonCondition")
         .def(py::init([](const py::iterable& points) {
                  std::vector<Eigen::Vector2d> vertices;
-                 for (const py::handle p : points) vertices.push_back(toSumoPoint(p));
+                 bool canvas = false;
+                 for (const py::handle p : points) {
+                     canvas = canvas || py::isinstance<Coord>(p);
+                     vertices.push_back(toSumoPoint(p));
+                 }
                  if (vertices.size() < 3) {
                      throw py::value_error("PolygonCondition needs 3 or more points, got " +
                                            std::to_string(vertices.size()));
                  }
-                 return std::make_shared<PolygonCondition>(std::move(vertices));
+                 auto polygon = std::make_shared<PolygonCondition>(std::move(vertices));
+                 if (canvas) polygon->setGivenFrame(PolygonCondition::GivenFrame::Canvas);
+                 return polygon;
              }),
              py::arg("points"));
     bindSpeedDifference<SpeedDifferenceConditionFaster>(

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sbsim/storyboard/Condition.h"
@@ -19,6 +20,13 @@ public:
     void prepare(const EvaluationContext& ctx) override;
     void forget(std::string_view vehicleId) override;
     ~PythonCondition() override;
+    /// The script's class name (the Python object this trampoline belongs to).
+    std::string typeName() const override {
+        const pybind11::gil_scoped_acquire gil;
+        const pybind11::object self =
+            pybind11::cast(static_cast<const Condition*>(this), pybind11::return_value_policy::reference);
+        return pybind11::str(self.get_type().attr("__name__"));
+    }
 
 private:
     std::vector<std::uint8_t> mask_;
