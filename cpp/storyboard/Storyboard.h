@@ -65,6 +65,10 @@ public:
     bool isActive(const std::string& vehicle, const Story& story) const;
     /// Wall-clock seconds spent in update() (a profiling figure for the summary).
     double updateSeconds() const { return updateSeconds_; }
+    /// Vehicles the board keeps state for (effect stacks, activations): never more than are running.
+    std::size_t vehicleStates() const { return vehicles_.size(); }
+    /// The most vehicles any one condition keeps state for (Hold, Likelihood, Limit, ...).
+    std::size_t maxConditionStates() const;
 
 private:
     struct AppliedEffect {
