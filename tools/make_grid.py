@@ -215,6 +215,19 @@ PRESETS: dict[str, GridConfig] = {
     "bench5k": _bench(5_000, 13),
     "bench10k": _bench(10_000, 18),
     "bench20k": _bench(20_000, 25),
+    # bench/soak.py: 80 minutes of random trips; with the soak stories slowing them, about 2,200
+    # running once the first 20 minutes have filled the grid, ~4 arrivals and departures a second.
+    "soak": GridConfig(
+        name="soak",
+        grid=12,
+        spacing=200.0,
+        lanes=2,
+        end=4800.0,
+        traffic="trips",
+        period=0.25,
+        min_distance=1200.0,
+        seed=7,
+    ),
 }
 
 

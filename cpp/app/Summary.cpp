@@ -105,6 +105,11 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         warningKinds.push_back({{"kind", kind.pattern}, {"count", kind.count}});
     }
     out["sumo_warnings"] = {{"total", f.sumo.warnings().total()}, {"kinds", std::move(warningKinds)}};
+    // Per-vehicle state still held when the run ended: a leak shows as more than are running.
+    out["held_at_end"] = {{"running", f.sumo.snapshot().size()},
+                          {"storyboard_vehicles", f.board != nullptr ? f.board->vehicleStates() : 0},
+                          {"condition_vehicles_max", f.board != nullptr ? f.board->maxConditionStates() : 0},
+                          {"middlewares", f.services != nullptr ? f.services->middlewares() : 0}};
     const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
     out["timing"] = {{"wall_s", f.wall},
                      {"sumo_s", f.sumo.sumoSeconds()},

@@ -40,6 +40,8 @@ public:
     Middleware* middlewareOf(const std::string& vehicleId) const;
     void listenToAllSignals(Service& service);
     std::size_t servicesCreated() const { return servicesCreated_; }
+    /// Vehicles with a middleware now (each running vehicle its filters selected).
+    std::size_t middlewares() const { return middlewares_.size(); }
 
     void initialize() override;
     void handleMessage(kernel::Message& msg) override;

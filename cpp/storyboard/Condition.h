@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -27,6 +28,8 @@ public:
     virtual void prepare(const EvaluationContext& /*ctx*/) {}
     /// The vehicle left the simulation: drop whatever is kept for it.
     virtual void forget(std::string_view /*vehicleId*/) {}
+    /// How many vehicles this node keeps state for (a leak check: never more than are running).
+    virtual std::size_t heldVehicles() const { return 0; }
     /// The radius (m) this condition searches neighbours in, if it uses the neighbour grid.
     virtual std::optional<double> neighbourRadius() const { return std::nullopt; }
     /// True if test() keeps no state and has no side effects, so it may run for any vehicle, in

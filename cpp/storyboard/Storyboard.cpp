@@ -123,6 +123,12 @@ void Storyboard::registerStory(StoryPtr story) {
     }
 }
 
+std::size_t Storyboard::maxConditionStates() const {
+    std::size_t most = 0;
+    for (const Condition* c : conditions_) most = std::max(most, c->heldVehicles());
+    return most;
+}
+
 bool Storyboard::isActive(const std::string& vehicle, const Story& story) const {
     const auto it = vehicles_.find(vehicle);
     if (it == vehicles_.end()) return false;

@@ -71,6 +71,10 @@ public:
     double updateSeconds() const { return updateSeconds_; }
     /// How many signals SignalEffects emitted, by cause (the summary's figures).
     const std::map<std::string, std::uint64_t, std::less<>>& signalsByCause() const { return signalsByCause_; }
+    /// Vehicles the board keeps state for (effect stacks, activations): never more than are running.
+    std::size_t vehicleStates() const { return vehicles_.size(); }
+    /// The most vehicles any one condition keeps state for (Hold, Likelihood, Limit, ...).
+    std::size_t maxConditionStates() const;
 
 private:
     struct AppliedEffect {

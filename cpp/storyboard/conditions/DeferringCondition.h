@@ -21,6 +21,7 @@ public:
 
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
+    std::size_t heldVehicles() const override { return due_.size(); }
 
     kernel::SimTime minDeferral() const { return min_; }
     kernel::SimTime maxDeferral() const { return max_; }

@@ -19,6 +19,7 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override { runs_.step(ctx.now()); }
     void forget(std::string_view vehicleId) override { runs_.forget(vehicleId); }
+    std::size_t heldVehicles() const override { return runs_.size(); }
     void forEachChild(const std::function<void(Condition&)>& visit) override { visit(*operand_); }
 
     const ConditionPtr& operand() const { return operand_; }

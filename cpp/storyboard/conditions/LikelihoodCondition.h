@@ -18,6 +18,7 @@ public:
 
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
+    std::size_t heldVehicles() const override { return decisions_.size(); }
 
     double probability() const { return p_; }
 

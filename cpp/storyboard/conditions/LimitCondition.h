@@ -17,6 +17,7 @@ public:
 
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
+    std::size_t heldVehicles() const override { return admitted_.size(); }
 
     std::uint64_t limit() const { return limit_; }
     /// How many vehicles were ever admitted (never decreases).

@@ -23,6 +23,7 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }
+    std::size_t heldVehicles() const override { return ids_.size(); }
 
     kernel::SimTime duration() const { return duration_; }
 
