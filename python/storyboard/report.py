@@ -161,6 +161,9 @@ class Scenario:
 def read_sumocfg(path: str | os.PathLike[str]) -> Scenario:
     """The sumocfg's ``net-file`` (relative to the sumocfg) and ``step-length`` (None if not set)."""
     path = Path(path)
+    # sax would take a missing path for a URL and fail with a confusing message.
+    if not path.is_file():
+        raise ReportError(f"{path}: No such file" if not path.exists() else f"{path}: not a file")
     try:
         options = {o.name: o.value for o in sumolib.options.readOptions(os.fspath(path))}
     except OSError as e:
@@ -182,7 +185,7 @@ def read_sumocfg(path: str | os.PathLike[str]) -> Scenario:
 def read_net(path: str | os.PathLike[str]) -> sumolib.net.Net:
     """The SUMO network (sumolib), with errors as :class:`ReportError` naming the file."""
     if not Path(path).is_file():
-        raise ReportError(f"{path}: no such net file")
+        raise ReportError(f"{path}: no such net file" if not Path(path).exists() else f"{path}: not a file")
     try:
         return sumolib.net.readNet(os.fspath(path))
     except OSError as e:
