@@ -76,10 +76,16 @@ def events_frame(events: Events) -> pd.DataFrame:
 def stories(events: Events, summary: dict[str, Any] | None = None) -> list[str]:
     """Story names in the order they first appear in the log, then those only the summary lists."""
     names = list(dict.fromkeys(events_frame(events)["story"]))
-    for entry in (summary or {}).get("stories", []) if isinstance((summary or {}).get("stories"), list) else []:
-        if isinstance(entry, dict) and isinstance(entry.get("name"), str) and entry["name"] not in names:
-            names.append(entry["name"])
+    names += [name for name in summary_stories(summary) if name not in names]
     return names
+
+
+def summary_stories(summary: dict[str, Any] | None) -> dict[str, dict[str, Any]]:
+    """The summary's per-story entries by name (none if there is no summary or it has no usable list)."""
+    entries = (summary or {}).get("stories")
+    if not isinstance(entries, list):
+        return {}
+    return {e["name"]: e for e in entries if isinstance(e, dict) and isinstance(e.get("name"), str)}
 
 
 def stays(events: Events) -> pd.DataFrame:
@@ -402,9 +408,8 @@ def story_table(
     out = pd.DataFrame(
         rows, columns=["story", "activations", "vehicles", "completed stays", "mean duration [s]", "active at the end"]
     ).set_index("story")
-    entries = (summary or {}).get("stories")
-    if isinstance(entries, list):
-        by_name = {e["name"]: e for e in entries if isinstance(e, dict) and isinstance(e.get("name"), str)}
+    if summary is not None:
+        by_name = summary_stories(summary)
         out["activations (summary)"] = [by_name.get(n, {}).get("activations") for n in out.index]
         out["active vehicle-seconds (summary)"] = [by_name.get(n, {}).get("active_vehicle_seconds") for n in out.index]
     return out
