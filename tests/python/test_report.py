@@ -107,6 +107,21 @@ def test_duration_histograms_hold_every_completed_stay(rain: RainRun) -> None:
         assert mine["duration"].sum() == pytest.approx(entry["active_vehicle_seconds"])
 
 
+def test_stays_still_open_when_the_log_ends_are_counted_apart(rain: RainRun) -> None:
+    # The log cut at 300 s, in the middle of the rain: as if the run had ended there.
+    events = [e for e in rain.events if e["t"] <= 300]
+    opened = Counter(e["story"] for e in events if e["type"] == "activate")
+    closed = Counter(e["story"] for e in events if e["type"] == "deactivate")
+    assert opened["rain"] > closed["rain"] > 0
+    figure = report.plot_durations(events)
+    table = report.story_table(events)
+    for story in ("rain", "rain-warning"):
+        assert sum(p.get_height() for p in story_axes(figure, story).patches) == closed[story]
+        assert table.loc[story, "active at the end"] == opened[story] - closed[story]
+        assert table.loc[story, "completed stays"] == closed[story]
+    assert "still active at the end" in story_axes(figure, "rain").get_title()
+
+
 def test_map_shows_the_rain_district(rain: RainRun) -> None:
     net = report.read_net(report.read_sumocfg(SUMOCFG).net_file)
     figure = report.plot_map(net, rain.events, rain.fcd)
