@@ -1,0 +1,312 @@
+"""storyboard.report: figures and page drawn from a real grid-rain run, checked against its event log."""
+
+from __future__ import annotations
+
+import base64
+import json
+import os
+import re
+import subprocess
+import sys
+from collections import Counter
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from matplotlib.axes import Axes
+from matplotlib.collections import PathCollection
+from matplotlib.patches import StepPatch
+from sbsim_helpers import REPO, STORIES, FcdTrace, active_timeline, assert_no_crash, read_fcd
+from storyboard import report
+from storyboard.runner import read_events, read_summary, run
+
+SCENARIO = STORIES / "grid-rain"
+SUMOCFG = SCENARIO / "grid-rain.sumocfg"
+END = 500.0
+#: stories/grid-rain/story.py's DISTRICT: a square from 390 to 810 m on both axes.
+DISTRICT = (390.0, 810.0)
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+@dataclass
+class RainRun:
+    events_path: Path
+    fcd_path: Path
+    summary_path: Path
+    events: list[dict[str, Any]]
+    summary: dict[str, Any]
+    trace: FcdTrace
+    fcd: Any  # report.read_fcd's DataFrame
+
+
+@pytest.fixture(scope="module")
+def rain(tmp_path_factory: pytest.TempPathFactory) -> RainRun:
+    out = tmp_path_factory.mktemp("report")
+    events, fcd, summary = out / "events.jsonl", out / "fcd.xml", out / "summary.json"
+    result = run(
+        SUMOCFG,
+        story=SCENARIO / "story.py",
+        events=events,
+        end=END,
+        sumo_options=[f"--fcd-output {fcd}"],
+        extra=["--summary", str(summary)],
+        quiet=True,
+        timeout=120,
+    )
+    assert_no_crash(result)
+    assert result.returncode == 0, result.stderr
+    log = read_events(events)
+    assert {e["story"] for e in log if e["type"] == "activate"} == {"rain", "rain-warning"}
+    return RainRun(events, fcd, summary, log, read_summary(summary), read_fcd(fcd), report.read_fcd(fcd))
+
+
+def story_axes(figure: Any, story: str) -> Axes:
+    [ax] = [ax for ax in figure.axes if ax.get_label() == story]
+    return ax
+
+
+def test_activity_counts_are_the_vehicles_active_per_the_log(rain: RainRun) -> None:
+    figure = report.plot_activity(rain.events, end=END)
+    patches = {p.get_label(): p for p in figure.axes[0].patches if isinstance(p, StepPatch)}
+    assert list(patches) == ["rain", "rain-warning"]
+    below = None
+    for story, patch in patches.items():
+        values, edges, baseline = patch.get_data()
+        # Stacked: each story starts where the one before ends.
+        np.testing.assert_array_equal(baseline, 0 if below is None else below)
+        below = values
+        assert edges[-1] == END
+        # The count drawn at every step of the run is the number of vehicles the log has active then.
+        times = [t for t in rain.trace.times if edges[0] <= t < END]
+        expected = active_timeline(rain.events, story, times)
+        drawn = (values - baseline)[np.searchsorted(edges, times, side="right") - 1]
+        assert drawn.tolist() == [len(expected[t]) for t in times], story
+        assert drawn.max() > 0
+    # Nothing is drawn before the rain starts (120 s), and the rain story peaks well above the warnings.
+    rain_values, rain_edges, _ = patches["rain"].get_data()
+    assert rain_edges[0] == 120.0
+    assert rain_values.max() > 20
+
+
+def test_duration_histograms_hold_every_completed_stay(rain: RainRun) -> None:
+    figure = report.plot_durations(rain.events)
+    for story in ("rain", "rain-warning"):
+        ax = story_axes(figure, story)
+        completed = sum(1 for e in rain.events if e["type"] == "deactivate" and e["story"] == story)
+        assert completed > 0
+        assert sum(p.get_height() for p in ax.patches) == completed, story
+    # The stays' lengths add up to sbsim's own count of active vehicle-seconds (the rain ends at 420 s,
+    # before the run, so every stay is complete).
+    stays = report.stays(rain.events)
+    assert stays["end"].notna().all()
+    for entry in rain.summary["stories"]:
+        mine = stays[stays["story"] == entry["name"]]
+        assert len(mine) == entry["activations"]
+        assert mine["duration"].sum() == pytest.approx(entry["active_vehicle_seconds"])
+
+
+def test_stays_still_open_when_the_log_ends_are_counted_apart(rain: RainRun) -> None:
+    # The log cut at 300 s, in the middle of the rain: as if the run had ended there.
+    events = [e for e in rain.events if e["t"] <= 300]
+    opened = Counter(e["story"] for e in events if e["type"] == "activate")
+    closed = Counter(e["story"] for e in events if e["type"] == "deactivate")
+    assert opened["rain"] > closed["rain"] > 0
+    figure = report.plot_durations(events)
+    table = report.story_table(events)
+    for story in ("rain", "rain-warning"):
+        assert sum(p.get_height() for p in story_axes(figure, story).patches) == closed[story]
+        assert table.loc[story, "active at the end"] == opened[story] - closed[story]
+        assert table.loc[story, "completed stays"] == closed[story]
+    assert "still active at the end" in story_axes(figure, "rain").get_title()
+
+
+def test_map_shows_the_rain_district(rain: RainRun) -> None:
+    net = report.read_net(report.read_sumocfg(SUMOCFG).net_file)
+    figure = report.plot_map(net, rain.events, rain.fcd)
+    ax = figure.axes[0]
+    # The whole 1 km grid is drawn.
+    [lanes] = [c for c in ax.collections if c.get_label() == "lanes"]
+    assert len(lanes.get_segments()) > 100
+    assert ax.get_xlim()[0] < 0 < 1000 < ax.get_xlim()[1]
+    scatters = {c.get_label().split(" (")[0]: c for c in ax.collections if isinstance(c, PathCollection)}
+    assert list(scatters) == ["rain", "rain-warning"]
+    for story, points in scatters.items():
+        activations = [e for e in rain.events if e["type"] == "activate" and e["story"] == story]
+        offsets = points.get_offsets()
+        assert len(offsets) == len(activations) > 0
+        low, high = DISTRICT
+        assert ((offsets >= low) & (offsets <= high)).all(), f"{story} activated outside the district"
+        # Each point is where the FCD has its vehicle at the activation (read independently here).
+        expected = sorted(rain.trace.pos[e["vehicle"]][float(e["t"])] for e in activations)
+        assert sorted(map(tuple, offsets.tolist())) == expected
+
+
+def test_speeds_under_a_story_against_the_rest(rain: RainRun) -> None:
+    figure = report.plot_speeds(rain.events, rain.fcd)
+    ax = story_axes(figure, "rain")
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    assert set(lines) == {"under rain", "others"}
+    timeline = active_timeline(rain.events, "rain", rain.trace.times)
+    for t in (150.0, 300.0, 400.0):
+        under = timeline[t] & rain.trace.running[t]
+        others = rain.trace.running[t] - timeline[t]
+        assert under and others
+        for label, group in (("under rain", under), ("others", others)):
+            x, y = lines[label].get_data()
+            [i] = np.flatnonzero(np.asarray(x) == t)
+            assert y[i] == pytest.approx(np.mean([rain.trace.speed[v][t] for v in group]), abs=0.01), (label, t)
+    # Outside the rain nobody is under it; during the rain its vehicles are the slow ones.
+    x, y = (np.asarray(a, dtype=float) for a in lines["under rain"].get_data())
+    assert np.isnan(y[(x < 120) | (x > 421)]).all()
+    _, others = (np.asarray(a, dtype=float) for a in lines["others"].get_data())
+    during = (x > 130) & (x <= 420)
+    assert np.nanmean(y[during]) < np.nanmean(others[during])
+
+
+def test_story_table_counts(rain: RainRun) -> None:
+    table = report.story_table(rain.events, rain.summary)
+    activations = Counter(e["story"] for e in rain.events if e["type"] == "activate")
+    for story in ("rain", "rain-warning"):
+        row = table.loc[story]
+        assert row["activations"] == activations[story] == row["activations (summary)"]
+        assert row["vehicles"] == len({e["vehicle"] for e in rain.events if e["story"] == story})
+        assert row["active at the end"] == 0
+
+
+def test_without_fcd_the_map_is_the_network_alone(rain: RainRun) -> None:
+    built = report.build(rain.events_path, SUMOCFG)
+    assert list(built.figures) == ["activity", "durations", "map"]
+    assert not [c for c in built.figures["map"].axes[0].collections if isinstance(c, PathCollection)]
+    assert built.run is None
+
+
+def cli(*args: str | os.PathLike[str]) -> subprocess.CompletedProcess[str]:
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "python"), os.environ.get("PYTHONPATH", "")])}
+    return subprocess.run(
+        [sys.executable, "-m", "storyboard.report", *map(str, args)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=120,
+        check=False,
+    )
+
+
+def test_command_writes_a_self_contained_page_and_pngs(rain: RainRun, tmp_path: Path) -> None:
+    page, pngs = tmp_path / "report.html", tmp_path / "png"
+    done = cli(rain.events_path, "--sumocfg", SUMOCFG, "--fcd", rain.fcd_path, "--summary", rain.summary_path)
+    assert done.returncode == 2 and "-o" in done.stderr  # the output is required
+    done = cli(
+        rain.events_path,
+        "--sumocfg",
+        SUMOCFG,
+        "--fcd",
+        rain.fcd_path,
+        "--summary",
+        rain.summary_path,
+        "-o",
+        page,
+        "--png",
+        pngs,
+    )
+    assert done.returncode == 0, done.stderr
+    assert done.stderr == ""
+    text = page.read_text(encoding="utf-8")
+    images = re.findall(r'src="data:image/png;base64,([A-Za-z0-9+/=]+)"', text)
+    assert len(images) == 4
+    assert all(base64.b64decode(image).startswith(PNG_MAGIC) for image in images)
+    assert "<table" in text and "mean duration [s]" in text and "rain-warning" in text
+    assert "end time reached" in text  # the summary's run figures
+    assert not re.search(r'(src|href)="(?!data:)', text), "the page must not refer to other files"
+    written = sorted(p.name for p in pngs.iterdir())
+    assert written == ["activity.png", "durations.png", "map.png", "speeds.png"]
+    assert all((pngs / name).read_bytes().startswith(PNG_MAGIC) for name in written)
+
+
+def bad_case(tmp: Path, rain: RainRun, case: str) -> tuple[list[str | os.PathLike[str]], str]:
+    """Arguments for one bad input and a regular expression its error line must match."""
+    events: str | os.PathLike[str] = rain.events_path
+    sumocfg: str | os.PathLike[str] = SUMOCFG
+    extra: list[str | os.PathLike[str]] = []
+    if case == "missing events":
+        events, pattern = tmp / "nope.jsonl", r"nope\.jsonl: No such file"
+    elif case == "bad JSON":
+        events = tmp / "bad.jsonl"
+        lines = rain.events_path.read_text(encoding="utf-8").splitlines()[:2]
+        events.write_text("\n".join([*lines, '{"t": 3, "type":', *lines]) + "\n", encoding="utf-8")
+        pattern = r"bad\.jsonl:3: bad JSON"
+    elif case == "not an event":
+        events = tmp / "odd.jsonl"
+        events.write_text(json.dumps({"t": 1, "type": "activate", "story": "rain"}) + "\n", encoding="utf-8")
+        pattern = r"odd\.jsonl:1: 'vehicle' missing"
+    elif case == "events not UTF-8":
+        events = tmp / "latin.jsonl"
+        events.write_bytes(b'{"t": 1, "type": "activate", "story": "r\xe9gen", "vehicle": "v"}\n')
+        pattern = r"latin\.jsonl: not UTF-8"
+    elif case == "events a folder":
+        events, pattern = tmp, re.escape(str(tmp)) + ": Is a directory"
+    elif case == "missing sumocfg":
+        sumocfg, pattern = tmp / "no.sumocfg", r"no\.sumocfg: No such file"
+    elif case == "broken sumocfg":
+        sumocfg = tmp / "broken.sumocfg"
+        sumocfg.write_text("<configuration>\n<input>\n", encoding="utf-8")
+        pattern = r"broken\.sumocfg:\d+: bad XML"
+    elif case == "sumocfg without net":
+        sumocfg = tmp / "nonet.sumocfg"
+        sumocfg.write_text('<configuration><time><end value="9"/></time></configuration>\n', encoding="utf-8")
+        pattern = r"nonet\.sumocfg: names no net-file"
+    elif case == "missing net":
+        sumocfg = tmp / "gone.sumocfg"
+        sumocfg.write_text('<configuration><input><net-file value="gone.net.xml"/></input></configuration>\n')
+        pattern = r"gone\.net\.xml: no such net file"
+    elif case == "bad summary":
+        summary = tmp / "summary.json"
+        summary.write_text('{\n"steps": 3,\n}\n', encoding="utf-8")
+        extra, pattern = ["--summary", summary], r"summary\.json:3: bad JSON"
+    elif case == "missing FCD":
+        extra, pattern = ["--fcd", tmp / "none.xml"], r"none\.xml: No such file"
+    elif case == "not FCD":
+        extra, pattern = ["--fcd", rain.summary_path], r"summary\.json: not SUMO FCD output"
+    else:
+        raise AssertionError(case)
+    return [events, "--sumocfg", sumocfg, *extra, "-o", tmp / "out.html"], pattern
+
+
+BAD_CASES = [
+    "missing events",
+    "bad JSON",
+    "not an event",
+    "events not UTF-8",
+    "events a folder",
+    "missing sumocfg",
+    "broken sumocfg",
+    "sumocfg without net",
+    "missing net",
+    "bad summary",
+    "missing FCD",
+    "not FCD",
+]
+
+
+@pytest.mark.parametrize("case", BAD_CASES)
+def test_bad_input_is_one_line_and_exit_2(
+    rain: RainRun, tmp_path: Path, case: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    args, pattern = bad_case(tmp_path, rain, case)
+    assert report.main([str(a) for a in args]) == 2
+    captured = capsys.readouterr()
+    lines = captured.err.splitlines()
+    assert len(lines) == 1, captured.err
+    assert lines[0].startswith("report: ") and re.search(pattern, lines[0]), lines[0]
+    assert captured.out == ""
+    assert not (tmp_path / "out.html").exists()
+
+
+def test_bad_input_from_the_command_line_has_no_traceback(rain: RainRun, tmp_path: Path) -> None:
+    args, pattern = bad_case(tmp_path, rain, "bad JSON")
+    done = cli(*args)
+    assert done.returncode == 2
+    assert re.fullmatch(rf"report: .*{pattern}.*\n", done.stderr), done.stderr
+    assert done.stdout == ""
