@@ -13,6 +13,7 @@
 #include "sbsim/app/ProjData.h"
 #include "sbsim/app/SimulationRun.h"
 #include "sbsim/app/Subcommands.h"
+#include "sbsim/kernel/OneLine.h"
 #include "sbsim/storyboard/StoryError.h"
 
 namespace sbsim::app {
@@ -99,18 +100,18 @@ int runProgram(const std::vector<std::string>& args) {
     try {
         return parseAndRun(args);
     } catch (const Interrupted& e) {
-        fmt::print(stderr, "sbsim: interrupted {}\n", e.what());
+        fmt::print(stderr, "sbsim: interrupted {}\n", kernel::escapeControls(e.what()));
         return 130;
     } catch (const BadInput& e) {
-        fmt::print(stderr, "sbsim: {}\n", e.what());
+        fmt::print(stderr, "sbsim: {}\n", kernel::escapeControls(e.what()));
         return 2;
     } catch (const storyboard::StoryError& e) {
         if (Interruption::requested()) return interrupted();
-        fmt::print(stderr, "{}sbsim: {}\n", e.details(), e.what());
+        fmt::print(stderr, "{}sbsim: {}\n", e.details(), kernel::escapeControls(e.what()));
         return 2;
     } catch (const std::exception& e) {
         if (Interruption::requested()) return interrupted();
-        fmt::print(stderr, "sbsim: error: {}\n", e.what());
+        fmt::print(stderr, "sbsim: error: {}\n", kernel::escapeControls(e.what()));
         return 1;
     }
 }
