@@ -43,6 +43,9 @@ void ServiceManager::listenToAllSignals(Service& service) {
 void ServiceManager::attach(kernel::Module& sumo) {
     sumo.subscribe(traffic::SumoBridge::departedSignal, *this);
     sumo.subscribe(traffic::SumoBridge::arrivedSignal, *this);
+    // A service module may read any snapshot value (and the medium reads positions): all of them.
+    if (auto* bridge = dynamic_cast<traffic::SumoBridge*>(&sumo))
+        bridge->demandColumns(traffic::SnapshotColumns::all());
 }
 
 Medium& ServiceManager::medium() const {

@@ -36,6 +36,10 @@ public:
     /// any order, on any thread (after prepare()). The board evaluates stories whose whole tree
     /// is pure for all vehicles in parallel; the others in Artery's order, one vehicle at a time.
     virtual bool pure() const { return false; }
+    /// The snapshot values test() and prepare() read of any vehicle (children declare their own).
+    /// The snapshot reads only what some node declared; a condition that cannot know (a Python
+    /// one) reads everything, hence the default.
+    virtual traffic::SnapshotColumns columns() const { return traffic::SnapshotColumns::all(); }
     /// Calls `visit` on each direct child (And/Or), so the board can reach every node of a tree.
     virtual void forEachChild(const std::function<void(Condition&)>& /*visit*/) {}
     /// The class name messages show (a Python condition: its Python class's).

@@ -76,6 +76,16 @@ Storyboard::~Storyboard() = default;
 void Storyboard::attach(kernel::Module& sumo) {
     sumo.subscribe(traffic::SumoBridge::arrivedSignal, *this);
     sumo.subscribe(traffic::SumoBridge::stepSignal, *this);
+    bridge_ = dynamic_cast<traffic::SumoBridge*>(&sumo);
+    if (bridge_) bridge_->demandColumns(columns());
+}
+
+traffic::SnapshotColumns Storyboard::columns() const {
+    if (stories_.empty()) return {};
+    // Speed for the stacks that hold a vehicle's speed (settle()), whatever the conditions read.
+    traffic::SnapshotColumns columns = traffic::SnapshotColumns::Speed;
+    for (const Condition* c : conditions_) columns |= c->columns();
+    return columns;
 }
 
 void Storyboard::receiveSignal(kernel::Module&, kernel::SignalId id, std::string_view value) {
@@ -115,6 +125,7 @@ void Storyboard::registerStory(StoryPtr story) {
     maxActivations_.push_back(story->maxActivations().value_or(std::numeric_limits<std::uint64_t>::max()));
     if (pure_.back()) pureStories_.push_back(stories_.size());
     stories_.push_back(std::move(story));
+    if (bridge_) bridge_->demandColumns(columns());
     precomputed_.resize(stories_.size());
     for (auto& [id, state] : vehicles_) {
         state.applied.resize(stories_.size());

@@ -22,6 +22,10 @@
 #include "sbsim/traffic/VehicleController.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
+namespace sbsim::traffic {
+class SumoBridge;
+}
+
 namespace sbsim::storyboard {
 
 /// Evaluates the registered stories after every SUMO step, in Artery's order: vehicles in
@@ -45,7 +49,10 @@ public:
     ~Storyboard() override;
 
     /// Listen to `sumo`'s arrivals and steps (a SumoBridge); without this call, drive update() by hand.
+    /// A SumoBridge is also told which snapshot values the stories read, now and as stories come.
     void attach(kernel::Module& sumo);
+    /// The snapshot values the registered stories read (none without stories).
+    traffic::SnapshotColumns columns() const;
     /// Replaces how vehicles are commanded (default: libsumo through traffic::VehicleController).
     void setControllerFactory(ControllerFactory factory) { makeController_ = std::move(factory); }
     /// Replaces what conditions ask of the traffic beyond the snapshot (default: libsumo).
@@ -109,6 +116,7 @@ private:
     void collectConditions(Condition& root);
 
     EventLog* log_;
+    traffic::SumoBridge* bridge_ = nullptr;  // the attached SUMO, told what the stories read
     kernel::SimTime now_;
     bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;

@@ -42,13 +42,31 @@ std::int32_t SnapshotBuilder::roadOfLane(std::int32_t lane) {
     return laneRoad_[lane];
 }
 
+void SnapshotBuilder::readConstants(const std::string& id, Record& r, SnapshotColumns columns) {
+    if (columns.contains(SnapshotColumns::Size)) {
+        r.length = libsumo::Vehicle::getLength(id);
+        r.width = libsumo::Vehicle::getWidth(id);
+    }
+    if (columns.contains(SnapshotColumns::Type)) r.type = intern(libsumo::Vehicle::getTypeID(id));
+    if (columns.contains(SnapshotColumns::MaxSpeed)) r.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
+}
+
+void SnapshotBuilder::setColumns(SnapshotColumns columns) {
+    // Constant values a new reader wants are read now for the vehicles already running.
+    SnapshotColumns added;
+    for (const auto c : {SnapshotColumns::Size, SnapshotColumns::Type, SnapshotColumns::MaxSpeed}) {
+        if (columns.contains(c) && !columns_.contains(c)) added |= c;
+    }
+    if (!added.empty()) {
+        for (auto& [id, record] : running_) readConstants(id, record, added);
+    }
+    columns_ = columns;
+}
+
 void SnapshotBuilder::addVehicles(const std::vector<std::string>& ids) {
     for (const std::string& id : ids) {
         Record r;
-        r.length = libsumo::Vehicle::getLength(id);
-        r.width = libsumo::Vehicle::getWidth(id);
-        r.type = intern(libsumo::Vehicle::getTypeID(id));
-        r.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
+        readConstants(id, r, columns_);
         running_.insert_or_assign(id, std::move(r));
     }
     orderStale_ = orderStale_ || !ids.empty();
@@ -82,47 +100,66 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
         orderStale_ = false;
     }
     out.time_ = time;
+    out.columns_ = columns_;
     resize(out, order_.size());
     {
         MaxSpeedChanges& changes = maxSpeedChanges();
         const std::lock_guard lock(changes.mutex);
-        for (const std::string& id : changes.ids) {
-            if (const auto it = running_.find(id); it != running_.end())
-                it->second.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
+        if (columns_.contains(SnapshotColumns::MaxSpeed)) {
+            for (const std::string& id : changes.ids) {
+                if (const auto it = running_.find(id); it != running_.end())
+                    it->second.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
+            }
         }
         changes.ids.clear();
     }
 
-    // Independent per vehicle: each index is written by exactly one thread.
-    parallel.run(order_.size(), [&](std::size_t begin, std::size_t end) {
+    const bool position = columns_.contains(SnapshotColumns::Position);
+    const bool speed = columns_.contains(SnapshotColumns::Speed) || columns_.contains(SnapshotColumns::Acceleration);
+    const bool angle = columns_.contains(SnapshotColumns::Angle);
+    const bool lane = columns_.contains(SnapshotColumns::Lane);
+    // Independent per vehicle: each index is written by exactly one thread. Without per-step
+    // columns there is nothing to ask SUMO, so no thread is woken.
+    const auto read = [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
             const std::string& id = *order_[k].first;
             Record& r = *order_[k].second;
             const auto i = static_cast<Eigen::Index>(k);
             if (out.ids_[k] != id) out.ids_[k] = id;  // most ids keep their slot: no reallocation
-            const libsumo::TraCIPosition p = libsumo::Vehicle::getPosition(id);
-            out.position_(0, i) = p.x;
-            out.position_(1, i) = p.y;
-            out.speed_[i] = libsumo::Vehicle::getSpeed(id);
-            out.angle_[i] = libsumo::Vehicle::getAngle(id);
-            const double speed = out.speed_[i];
-            out.acceleration_[i] =
-                r.hasSpeed ? (speed - r.speed) / stepSeconds_ : libsumo::Vehicle::getAcceleration(id);
-            r.speed = speed;
-            r.hasSpeed = true;
+            if (position) {
+                const libsumo::TraCIPosition p = libsumo::Vehicle::getPosition(id);
+                out.position_(0, i) = p.x;
+                out.position_(1, i) = p.y;
+            }
+            if (speed) {
+                const double v = libsumo::Vehicle::getSpeed(id);
+                out.speed_[i] = v;
+                out.acceleration_[i] =
+                    r.hasSpeed ? (v - r.speed) / stepSeconds_ : libsumo::Vehicle::getAcceleration(id);
+                r.speed = v;
+                r.hasSpeed = true;
+            }
+            if (angle) out.angle_[i] = libsumo::Vehicle::getAngle(id);
             out.maxSpeed_[i] = r.maxSpeed;
             out.length_[i] = r.length;
             out.width_[i] = r.width;
             out.type_[k] = r.type;
-            std::string lane = libsumo::Vehicle::getLaneID(id);
-            if (lane != r.lane || r.laneIndex < 0) {
-                r.lane = std::move(lane);
-                r.laneIndex = -1;
+            if (lane) {
+                std::string laneId = libsumo::Vehicle::getLaneID(id);
+                if (laneId != r.lane || r.laneIndex < 0) {
+                    r.lane = std::move(laneId);
+                    r.laneIndex = -1;
+                }
             }
         }
-    });
+    };
+    if (columns_.perStep().empty()) {
+        read(0, order_.size());
+    } else {
+        parallel.run(order_.size(), read);
+    }
     // Interning touches shared tables: only for the few vehicles that changed lane, on one thread.
-    for (std::size_t k = 0; k < order_.size(); ++k) {
+    for (std::size_t k = 0; lane && k < order_.size(); ++k) {
         Record& r = *order_[k].second;
         if (r.laneIndex < 0) {
             r.laneIndex = intern(r.lane);

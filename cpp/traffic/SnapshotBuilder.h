@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sbsim/kernel/ParallelFor.h"
+#include "sbsim/traffic/SnapshotColumns.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
@@ -24,6 +25,10 @@ namespace sbsim::traffic {
 /// only when it changes.
 class SnapshotBuilder {
 public:
+    /// The values to read from now on (default: all). Constant values it adds are read at once for
+    /// the vehicles already running.
+    void setColumns(SnapshotColumns columns);
+    SnapshotColumns columns() const { return columns_; }
     /// Vehicles that entered the network; reads their constant values.
     void addVehicles(const std::vector<std::string>& ids);
     /// Vehicles that left the network.
@@ -51,9 +56,11 @@ private:
         double maxSpeed = 0;
     };
     std::int32_t intern(const std::string& s);
+    void readConstants(const std::string& id, Record& r, SnapshotColumns columns);
     std::int32_t roadOfLane(std::int32_t lane);
     void resize(VehicleSnapshot& out, std::size_t n) const;
 
+    SnapshotColumns columns_ = SnapshotColumns::all();
     double stepSeconds_ = 1;
     std::map<std::string, Record> running_;                      // ascending byte order
     std::vector<std::pair<const std::string*, Record*>> order_;  // running_ as an indexable list

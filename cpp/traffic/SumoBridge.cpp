@@ -71,6 +71,7 @@ SumoBridge::SumoBridge(SumoSettings settings)
     : kernel::Module("sumo"), settings_(std::move(settings)), warnings_(settings_.warningsShown) {
     stepMessage_.setPriority(kStepPriority);
     endMessage_.setPriority(std::numeric_limits<int>::max());
+    builder_.setColumns(demanded_);  // nothing until a reader asks
 }
 
 SumoBridge::~SumoBridge() { close(); }
@@ -177,6 +178,11 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
 
     if (libsumo::Simulation::getMinExpectedNumber() <= 0) return endRun(EndReason::NoMoreVehicles);
     scheduleNextStep();
+}
+
+void SumoBridge::demandColumns(SnapshotColumns columns) {
+    demanded_ |= columns;
+    builder_.setColumns(demanded_);
 }
 
 std::string SumoBridge::sumoVersion() const { return libsumo::Simulation::getVersion().second; }

@@ -76,6 +76,10 @@ public:
     void finish() override;
 
     const VehicleSnapshot& snapshot() const { return snapshot_; }
+    /// Adds `columns` to what the snapshot reads from the next step on. Each reader declares what it
+    /// reads (the storyboard its conditions', the services manager its services'); nothing is read
+    /// per vehicle unless someone asked for it.
+    void demandColumns(SnapshotColumns columns);
     kernel::SimTime stepLength() const { return stepLength_; }
     kernel::SimTime beginTime() const { return begin_; }
     /// The time the run stops at, if any (from --end or the configuration).
@@ -113,6 +117,7 @@ private:
     kernel::Message stepMessage_{"sumo step"};
     kernel::Message endMessage_{"end of run"};
     SnapshotBuilder builder_;
+    SnapshotColumns demanded_;
     VehicleSnapshot snapshot_;
     StderrCapture capture_;
     SumoWarnings warnings_;

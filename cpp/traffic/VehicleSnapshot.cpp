@@ -31,6 +31,7 @@ void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time
     }
     const auto n = static_cast<Eigen::Index>(vehicles.size());
     time_ = time;
+    columns_ = SnapshotColumns::all();
     ids_.clear();
     strings_.clear();
     generation_ = nextGeneration();
@@ -71,6 +72,7 @@ void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vecto
     if (&from == this) throw std::invalid_argument("assignSubset: a snapshot cannot be a subset of itself");
     const auto n = static_cast<Eigen::Index>(keep.size());
     time_ = from.time_;
+    columns_ = from.columns_;
     // The source's table only grows within a generation: copy it only when it changed.
     if (generation_ != from.generation_ || strings_.size() != from.strings_.size()) {
         strings_ = from.strings_;

@@ -10,6 +10,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Object.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/traffic/SnapshotColumns.h"
 
 namespace sbsim::traffic {
 
@@ -22,6 +23,9 @@ public:
     using Index = std::int32_t;
 
     kernel::SimTime time() const { return time_; }
+    /// The values this snapshot holds; the others are not read (their arrays hold stale values).
+    /// A reader declares what it reads (Condition::columns(), SumoBridge::demandColumns).
+    SnapshotColumns columns() const { return columns_; }
     Index size() const { return static_cast<Index>(ids_.size()); }
     bool empty() const { return ids_.empty(); }
 
@@ -71,6 +75,7 @@ private:
     friend class SnapshotBuilder;
 
     kernel::SimTime time_;
+    SnapshotColumns columns_ = SnapshotColumns::all();
     std::vector<std::string> ids_;
     Eigen::Matrix2Xd position_;
     Eigen::VectorXd speed_, angle_, acceleration_, length_, width_, maxSpeed_;

@@ -9,6 +9,7 @@ class AccelerationConditionGreater : public Condition {
 public:
     /// Throws std::invalid_argument for a NaN threshold.
     explicit AccelerationConditionGreater(double threshold);
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Acceleration}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override {
         return ctx.snapshot().accelerations()[ego] > threshold_;
     }
@@ -24,6 +25,7 @@ class AccelerationConditionLess : public Condition {
 public:
     /// Throws std::invalid_argument for a NaN threshold.
     explicit AccelerationConditionLess(double threshold);
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Acceleration}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override {
         return ctx.snapshot().accelerations()[ego] < threshold_;
     }

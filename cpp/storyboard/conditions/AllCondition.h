@@ -14,6 +14,7 @@ public:
     /// Throws std::invalid_argument for no operands or a null one.
     explicit AllCondition(std::vector<ConditionPtr> operands);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forEachChild(const std::function<void(Condition&)>& visit) override;
     bool pure() const override { return pure_; }

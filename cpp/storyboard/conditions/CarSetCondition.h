@@ -12,6 +12,7 @@ namespace sbsim::storyboard {
 class CarSetCondition : public Condition {
 public:
     explicit CarSetCondition(std::set<std::string> ids);
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     const std::set<std::string>& ids() const { return ids_; }
 

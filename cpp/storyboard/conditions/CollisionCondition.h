@@ -13,6 +13,7 @@ namespace sbsim::storyboard {
 /// only when a story uses this condition; test() only reads, so the condition is pure.
 class CollisionCondition : public Condition {
 public:
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }

@@ -19,6 +19,7 @@ public:
     /// Throws std::invalid_argument for a null stream, a negative min or max < min.
     DeferringCondition(std::shared_ptr<kernel::RandomStream> rng, kernel::SimTime min, kernel::SimTime max);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
     std::size_t heldVehicles() const override { return due_.size(); }

@@ -20,6 +20,7 @@ public:
     /// Throws std::invalid_argument for a negative or non-finite distance or an empty id.
     DistanceCondition(std::string vehicle, double distance);
 
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Position}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     /// Finds the target vehicle once per step.
     void prepare(const EvaluationContext& ctx) override;

@@ -16,6 +16,7 @@ public:
 
     /// Throws std::invalid_argument for seconds <= 0 or not finite.
     explicit HeadwayCondition(double seconds);
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Speed}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     double seconds() const { return seconds_; }
 

@@ -12,6 +12,7 @@ namespace sbsim::storyboard {
 class LaneCondition : public Condition {
 public:
     explicit LaneCondition(std::set<std::string> ids) : ids_(std::move(ids)) {}
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Lane}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }

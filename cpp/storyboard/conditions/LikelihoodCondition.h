@@ -16,6 +16,7 @@ public:
     /// p is clamped to [0, 1]; throws std::invalid_argument for a null stream or a NaN p.
     LikelihoodCondition(std::shared_ptr<kernel::RandomStream> rng, double p);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
     std::size_t heldVehicles() const override { return decisions_.size(); }

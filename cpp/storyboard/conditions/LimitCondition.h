@@ -15,6 +15,7 @@ public:
     /// Throws std::invalid_argument for a negative limit.
     explicit LimitCondition(std::int64_t limit);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forget(std::string_view vehicleId) override;
     std::size_t heldVehicles() const override { return admitted_.size(); }

@@ -11,6 +11,7 @@ public:
     /// Throws std::invalid_argument for a null operand.
     explicit NotCondition(ConditionPtr operand);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forEachChild(const std::function<void(Condition&)>& visit) override { visit(*operand_); }
     bool pure() const override { return operand_->pure(); }

@@ -11,6 +11,7 @@ public:
     /// Throws std::invalid_argument for a null operand.
     OrCondition(ConditionPtr a, ConditionPtr b);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void forEachChild(const std::function<void(Condition&)>& visit) override;
 

@@ -14,6 +14,7 @@ class PolygonCondition : public Condition {
 public:
     /// Throws std::invalid_argument for fewer than 3 vertices.
     explicit PolygonCondition(std::vector<Eigen::Vector2d> vertices);
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Position}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     const geometry::Polygon& polygon() const { return polygon_; }
 

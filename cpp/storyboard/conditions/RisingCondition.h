@@ -16,6 +16,7 @@ public:
     /// Throws std::invalid_argument for a null operand.
     explicit RisingCondition(ConditionPtr operand);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override { runs_.step(ctx.now()); }
     void forget(std::string_view vehicleId) override { runs_.forget(vehicleId); }

@@ -8,6 +8,7 @@ namespace sbsim::storyboard {
 class SpeedConditionGreater : public Condition {
 public:
     explicit SpeedConditionGreater(double mps);
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Speed}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     double threshold() const { return threshold_; }
 
@@ -21,6 +22,7 @@ private:
 class SpeedConditionLess : public Condition {
 public:
     explicit SpeedConditionLess(double mps);
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Speed}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     double threshold() const { return threshold_; }
 

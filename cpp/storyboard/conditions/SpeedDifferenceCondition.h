@@ -13,6 +13,9 @@ namespace sbsim::storyboard {
 /// those within `distance` m (inclusive, through the neighbour grid).
 class SpeedDifferenceCondition : public Condition {
 public:
+    traffic::SnapshotColumns columns() const override {
+        return {traffic::SnapshotColumns::Position, traffic::SnapshotColumns::Speed};
+    }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     std::optional<double> neighbourRadius() const override { return distance_; }

@@ -20,6 +20,7 @@ public:
     /// Throws std::invalid_argument for a negative duration.
     explicit StandstillCondition(kernel::SimTime duration);
 
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Speed}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }

@@ -13,6 +13,7 @@ public:
     /// Throws std::invalid_argument if end < begin.
     TimeCondition(kernel::SimTime begin, std::optional<kernel::SimTime> end = std::nullopt);
 
+    traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
 
     kernel::SimTime begin() const { return begin_; }

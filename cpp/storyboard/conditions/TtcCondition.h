@@ -20,6 +20,10 @@ public:
     /// Throws std::invalid_argument unless ttc > 0 and distance >= 0, both finite.
     explicit TtcCondition(double ttc, double distance = 100);
 
+    traffic::SnapshotColumns columns() const override {
+        return {traffic::SnapshotColumns::Position, traffic::SnapshotColumns::Speed, traffic::SnapshotColumns::Angle,
+                traffic::SnapshotColumns::Size};
+    }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     std::optional<double> neighbourRadius() const override { return distance_; }

@@ -20,6 +20,7 @@ public:
     explicit TypeCondition(const std::string& pattern);
     ~TypeCondition() override;
 
+    traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Type}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }

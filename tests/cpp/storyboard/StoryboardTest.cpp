@@ -20,9 +20,11 @@
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
+#include "sbsim/storyboard/conditions/PolygonCondition.h"
 #include "sbsim/storyboard/conditions/RisingCondition.h"
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
@@ -385,6 +387,23 @@ TEST_F(StoryboardTest, ActiveVehicleSecondsSumTheTimeVehiclesSpendUnderAStory) {
     step(9, {car("a", 1)});
     EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 3.5);
     EXPECT_EQ(fast.activations(), 2u);
+}
+
+// What the snapshot must read is what the trees' nodes declare (plus speed for the stacks that
+// hold a vehicle): a board with a time window and an area needs positions, not lanes or angles.
+TEST_F(StoryboardTest, ColumnsAreTheUnionOfWhatTheNodesRead) {
+    using Col = traffic::SnapshotColumns;
+    EXPECT_TRUE(board.columns().empty()) << "no story: nothing to read";
+    const auto area =
+        std::make_shared<PolygonCondition>(std::vector<Eigen::Vector2d>{{0, 0}, {10, 0}, {10, 10}, {0, 10}});
+    board.registerStory(std::make_shared<Story>(
+        std::make_shared<AndCondition>(
+            area, std::make_shared<TimeCondition>(SimTime::fromSeconds(1), SimTime::fromSeconds(2))),
+        std::vector<EffectPtr>{}, "rain"));
+    EXPECT_EQ(board.columns(), (Col{Col::Position, Col::Speed})) << board.columns().str();
+    board.registerStory(std::make_shared<Story>(std::make_shared<TtcCondition>(2.0, 50.0), std::vector<EffectPtr>{}));
+    EXPECT_EQ(board.columns(), (Col{Col::Position, Col::Speed, Col::Angle, Col::Size})) << board.columns().str();
+    EXPECT_FALSE(board.columns().contains(Col::Lane));
 }
 
 }  // namespace

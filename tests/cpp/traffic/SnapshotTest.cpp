@@ -30,8 +30,12 @@ using traffic::VehicleSnapshot;
 /// that moment still holds the state of the step just made.
 class SnapshotChecker : public kernel::Listener {
 public:
-    /// Listens to the bridge's departures, arrivals and steps from now on.
-    SnapshotChecker(kernel::Simulation& sim, SumoBridge& bridge) : sim_(sim), bridge_(bridge) {
+    /// Listens to the bridge's departures, arrivals and steps from now on, asking for `columns`
+    /// (it checks the values a snapshot says it holds).
+    SnapshotChecker(kernel::Simulation& sim, SumoBridge& bridge,
+                    traffic::SnapshotColumns columns = traffic::SnapshotColumns::all())
+        : sim_(sim), bridge_(bridge) {
+        bridge.demandColumns(columns);
         sim.subscribe(SumoBridge::departedSignal, *this);
         sim.subscribe(SumoBridge::arrivedSignal, *this);
         sim.subscribe(SumoBridge::stepSignal, *this);
@@ -109,21 +113,33 @@ private:
             const auto same = [&](const char* what, const auto& mine, const auto& sumo) {
                 if (mine != sumo) diff << " " << what << ": " << mine << " != " << sumo << ";";
             };
-            same("x", s.positions()(0, i), p.x);
-            same("y", s.positions()(1, i), p.y);
-            same("speed", s.speeds()[i], libsumo::Vehicle::getSpeed(id));
-            same("angle", s.angles()[i], libsumo::Vehicle::getAngle(id));
-            same("acceleration", s.accelerations()[i], libsumo::Vehicle::getAcceleration(id));
-            same("length", s.lengths()[i], libsumo::Vehicle::getLength(id));
-            same("width", s.widths()[i], libsumo::Vehicle::getWidth(id));
-            same("maxSpeed", s.maxSpeeds()[i], libsumo::Vehicle::getMaxSpeed(id));
-            same("road", s.roadId(i), libsumo::Vehicle::getRoadID(id));
-            same("lane", s.laneId(i), libsumo::Vehicle::getLaneID(id));
-            // A command on one vehicle makes SUMO copy its type as "<type>@<id>"; the snapshot keeps
-            // the type the vehicle departed with.
-            std::string type = libsumo::Vehicle::getTypeID(id);
-            if (const std::string copy = "@" + id; type.ends_with(copy)) type.resize(type.size() - copy.size());
-            same("type", s.typeId(i), type);
+            using Col = traffic::SnapshotColumns;
+            const Col has = s.columns();
+            if (has.contains(Col::Position)) {
+                same("x", s.positions()(0, i), p.x);
+                same("y", s.positions()(1, i), p.y);
+            }
+            if (has.contains(Col::Speed)) same("speed", s.speeds()[i], libsumo::Vehicle::getSpeed(id));
+            if (has.contains(Col::Angle)) same("angle", s.angles()[i], libsumo::Vehicle::getAngle(id));
+            if (has.contains(Col::Acceleration)) {
+                same("acceleration", s.accelerations()[i], libsumo::Vehicle::getAcceleration(id));
+            }
+            if (has.contains(Col::Size)) {
+                same("length", s.lengths()[i], libsumo::Vehicle::getLength(id));
+                same("width", s.widths()[i], libsumo::Vehicle::getWidth(id));
+            }
+            if (has.contains(Col::MaxSpeed)) same("maxSpeed", s.maxSpeeds()[i], libsumo::Vehicle::getMaxSpeed(id));
+            if (has.contains(Col::Lane)) {
+                same("road", s.roadId(i), libsumo::Vehicle::getRoadID(id));
+                same("lane", s.laneId(i), libsumo::Vehicle::getLaneID(id));
+            }
+            if (has.contains(Col::Type)) {
+                // A command on one vehicle makes SUMO copy its type as "<type>@<id>"; the snapshot
+                // keeps the type the vehicle departed with.
+                std::string type = libsumo::Vehicle::getTypeID(id);
+                if (const std::string copy = "@" + id; type.ends_with(copy)) type.resize(type.size() - copy.size());
+                same("type", s.typeId(i), type);
+            }
             // One message per vehicle and step, not one per field: a systematic error stays readable.
             EXPECT_TRUE(diff.str().empty()) << id << " at " << sim_.now().str() << " s:" << diff.str();
         }
@@ -193,6 +209,29 @@ TEST(SnapshotDense, ParallelReadsMatchLibsumo) {
     sim.run();
     EXPECT_EQ(checker.steps, 110);
     EXPECT_GE(checker.peak, 3u * 512u);
+    sim.finish();
+}
+
+// The snapshot reads only the values someone asked for; a reader that comes later gets the
+// constant values (type, size, max speed) of the vehicles already running at once.
+TEST(SnapshotColumns, OnlyWhatWasAskedForIsReadAndLateReadersGetEverything) {
+    using Col = traffic::SnapshotColumns;
+    traffic::SumoSettings settings = scenarioSettings();
+    settings.end = sec(40);
+    kernel::Simulation sim(0, 2);
+    auto& bridge = sim.emplaceModule<SumoBridge>(settings);
+    SnapshotChecker checker(sim, bridge, Col::none());
+    sim.run(sec(10));
+    EXPECT_TRUE(bridge.snapshot().columns().empty()) << bridge.snapshot().columns().str();
+    EXPECT_GT(bridge.snapshot().size(), 0) << "ids are always there";
+    bridge.demandColumns(Col::Speed);
+    sim.run(sec(20));
+    EXPECT_EQ(bridge.snapshot().columns(), Col::Speed);
+    bridge.demandColumns({Col::Type, Col::Size, Col::Lane});
+    sim.run();
+    EXPECT_EQ(bridge.snapshot().columns(), (Col{Col::Speed, Col::Type, Col::Size, Col::Lane}));
+    EXPECT_EQ(bridge.snapshot().columns().str(), "speed|lane|size|type");
+    EXPECT_EQ(checker.steps, 40);
     sim.finish();
 }
 
@@ -271,7 +310,7 @@ std::vector<std::string> recordRun(std::int64_t seed, unsigned threads) {
     settings.seed = seed;
     settings.end = sec(40);
     kernel::Simulation sim(0, threads);
-    sim.emplaceModule<SumoBridge>(settings);
+    sim.emplaceModule<SumoBridge>(settings).demandColumns(traffic::SnapshotColumns::all());
     sim.subscribe(SumoBridge::stepSignal, recorder);
     sim.run();
     sim.finish();

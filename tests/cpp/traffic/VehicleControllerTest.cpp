@@ -26,6 +26,7 @@ class VehicleControllerTest : public testing::Test {
 protected:
     void SetUp() override {
         bridge_ = &sim_.emplaceModule<SumoBridge>(scenarioSettings());
+        bridge_->demandColumns(traffic::SnapshotColumns::all());
         bridge_->load();
         sim_.initialize();
     }
