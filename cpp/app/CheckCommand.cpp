@@ -17,6 +17,7 @@
 #include "sbsim/app/SumoOptions.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/CanvasFrame.h"
+#include "sbsim/storyboard/StoryAreas.h"
 #include "sbsim/storyboard/StoryCheck.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
@@ -109,7 +110,16 @@ int CheckCommand::run(const CommandLine& cl) {
             nlohmann::ordered_json nodes = nlohmann::ordered_json::array();
             for (const auto& node : storyboard::describeStory(*s))
                 nodes.push_back({{"depth", node.depth}, {"text", node.text}});
-            out["stories"].push_back({{"name", s->name()}, {"tree", std::move(nodes)}});
+            // Areas in SUMO's frame, whatever frame the script wrote them in: what the report's map draws.
+            nlohmann::ordered_json areas = nlohmann::ordered_json::array();
+            for (const auto& area : storyboard::storyAreas(*s)) {
+                nlohmann::ordered_json points = nlohmann::ordered_json::array();
+                for (const auto& p : area.points) points.push_back({p.x(), p.y()});
+                nlohmann::ordered_json entry{{"condition", area.condition->typeName()}, {"points", std::move(points)}};
+                if (area.radius) entry["radius"] = *area.radius;
+                areas.push_back(std::move(entry));
+            }
+            out["stories"].push_back({{"name", s->name()}, {"tree", std::move(nodes)}, {"areas", std::move(areas)}});
         }
         out["warnings"] = nlohmann::ordered_json::array();
         for (const auto& w : warnings) out["warnings"].push_back({{"story", w.story}, {"message", w.message}});

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "sbsim/storyboard/StoryAreas.h"
 #include "sbsim/storyboard/conditions/AccelerationCondition.h"
 #include "sbsim/storyboard/conditions/AllCondition.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
@@ -203,19 +204,21 @@ std::vector<CheckWarning> checkStories(const std::vector<StoryPtr>& stories, con
     const SimTime runEnd = scenario.end.value_or(SimTime::max());
     for (const StoryPtr& story : stories) {
         const auto warn = [&](std::string message) { out.push_back({story->name(), std::move(message)}); };
+        // The story's areas as the GUI and the report draw them (each shared polygon once).
+        for (const StoryArea& area : storyAreas(*story)) {
+            const auto* p = dynamic_cast<const PolygonCondition*>(area.condition);
+            if (p == nullptr || area.points.empty() || overlapsBoundary(area.points, b)) continue;
+            const bool canvas = p->givenFrame() == PolygonCondition::GivenFrame::Canvas;
+            std::string hint = "; read in the other frame it misses the network too";
+            if (overlapsBoundary(otherFrame(area.points, b, canvas), b)) {
+                hint = canvas ? "; it fits in the SUMO frame: give its points as (x, y) tuples, not Coord"
+                              : "; it fits in Artery's canvas frame: give its points as Coord(x, y), not tuples";
+            }
+            warn(fmt::format("{} lies outside the network boundary ({:g}, {:g})-({:g}, {:g}){}", describe(*p), b(0, 0),
+                             b(1, 0), b(0, 1), b(1, 1), hint));
+        }
         forEachNode(story->condition(), [&](const Condition& c) {
-            if (const auto* p = dynamic_cast<const PolygonCondition*>(&c)) {
-                const auto& points = p->polygon().vertices();
-                if (points.empty() || overlapsBoundary(points, b)) return;
-                const bool canvas = p->givenFrame() == PolygonCondition::GivenFrame::Canvas;
-                std::string hint = "; read in the other frame it misses the network too";
-                if (overlapsBoundary(otherFrame(points, b, canvas), b)) {
-                    hint = canvas ? "; it fits in the SUMO frame: give its points as (x, y) tuples, not Coord"
-                                  : "; it fits in Artery's canvas frame: give its points as Coord(x, y), not tuples";
-                }
-                warn(fmt::format("{} lies outside the network boundary ({:g}, {:g})-({:g}, {:g}){}", describe(c),
-                                 b(0, 0), b(1, 0), b(0, 1), b(1, 1), hint));
-            } else if (const auto* t = dynamic_cast<const TimeCondition*>(&c)) {
+            if (const auto* t = dynamic_cast<const TimeCondition*>(&c)) {
                 if (t->begin() >= runEnd || t->end() <= scenario.begin) {
                     warn(fmt::format("{} lies outside the run ({} to {})", describe(c), seconds(scenario.begin),
                                      seconds(runEnd)));

@@ -1,6 +1,7 @@
 """Watching a story: what one run's stories did, as figures and a table in one HTML file.
 
-    python -m storyboard.report events.jsonl --sumocfg C [--fcd f.xml] [--summary s.json] -o report.html [--png DIR]
+    python -m storyboard.report events.jsonl --sumocfg C [--story S [--param N=V]] [--fcd f.xml] [--summary s.json]
+        -o report.html [--png DIR]
 
 Figures (also as functions returning :class:`matplotlib.figure.Figure`):
 
@@ -8,21 +9,27 @@ Figures (also as functions returning :class:`matplotlib.figure.Figure`):
    activate / deactivate events;
 2. :func:`plot_durations`: how long each stay under a story lasted (one histogram per story; stays
    still open when the log ends have no length and are only counted in the title);
-3. :func:`plot_map`: the network's lanes (the sumocfg's ``net-file``, read with sumolib) and where
-   vehicles were when each story activated for them;
+3. :func:`plot_map`: the network's lanes (the sumocfg's ``net-file``, read with sumolib), with
+   ``--story`` each story's areas, and where vehicles were when each story activated for them;
 4. :func:`plot_speeds` (needs ``--fcd``): mean speed per time step of the vehicles under each story
    against the other running vehicles.
 
 Where stories act: the event log and the summary carry neither the stories' areas nor positions
-(an event is ``t``, ``type``, ``story``, ``vehicle``), and the areas live only in the story script,
-which needs sbsim's compiled module to load. So the map shows what the run itself recorded: the
-activation positions, read from SUMO's FCD output (``--sumo-option "--fcd-output f.xml"``) at the
-activation time. Without ``--fcd`` the map shows the network only. SUMO labels an FCD state with the
-time at the start of its step, sbsim the time after it, so FCD time ``T`` is sbsim time ``T + step``
-(the step is the FCD's own spacing, else the sumocfg's ``step-length``, else 1 s).
+(an event is ``t``, ``type``, ``story``, ``vehicle``). The areas live in the story script, which
+needs sbsim's compiled module to load, so with ``--story`` (and the run's ``--param`` values, if the
+script reads them) the report runs ``sbsim check --json`` (the executable
+:func:`storyboard.runner.executable` finds) and draws every ``PolygonCondition`` as a filled polygon
+and every ``DistanceCondition`` around a point as a circle, in the story's colour and in SUMO's
+frame whatever frame the script used (:func:`story_areas`). The activation positions are what the
+run itself recorded: read from SUMO's FCD output (``--sumo-option "--fcd-output f.xml"``) at the
+activation time. Without ``--story`` and ``--fcd`` the map shows the network only. SUMO labels an
+FCD state with the time at the start of its step, sbsim the time after it, so FCD time ``T`` is
+sbsim time ``T + step`` (the step is the FCD's own spacing, else the sumocfg's ``step-length``, else
+1 s).
 
 Bad input (a missing or unreadable file, a line of the log that is not an event, a broken sumocfg,
-net, FCD or summary) is one line on stderr naming the file, and exit code 2.
+net, FCD or summary, a story script ``sbsim check`` rejects) is one line on stderr naming the file,
+and exit code 2.
 """
 
 from __future__ import annotations
@@ -34,9 +41,10 @@ import io
 import json
 import math
 import os
+import subprocess
 import sys
 import xml.sax
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -44,8 +52,11 @@ from typing import Any
 import pandas as pd
 import sumolib
 from matplotlib.collections import LineCollection
+from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
+from matplotlib.patches import Circle, Polygon
 
+from storyboard import runner
 from storyboard.runner import EventLogError, read_events, read_summary
 
 #: Events as :func:`storyboard.runner.read_events` returns them, or the same as a DataFrame.
@@ -227,6 +238,64 @@ def load_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
         raise ReportError(f"{path}: not UTF-8 text") from e
 
 
+@dataclass(frozen=True)
+class Area:
+    """One area of a story, in SUMO's frame, as ``sbsim check --json`` reports it: a polygon's vertices
+    (not closed), or with ``radius`` a circle around ``points[0]``."""
+
+    story: str
+    condition: str
+    points: tuple[tuple[float, float], ...]
+    radius: float | None = None
+
+
+#: How long ``sbsim check`` may take (it loads SUMO's network and the script, and runs nothing).
+CHECK_TIMEOUT_S = 300.0
+
+
+def story_areas(
+    story: str | os.PathLike[str], sumocfg: str | os.PathLike[str], params: Sequence[str] = ()
+) -> dict[str, list[Area]]:
+    """Each story of the script (in registration order) with its areas, from ``sbsim check --json``.
+
+    ``params`` are ``NAME=VALUE`` strings passed as ``--param`` (a script may place its areas by
+    them). Raises :class:`ReportError` when sbsim is missing or rejects the script or scenario."""
+    extra = [arg for param in params for arg in ("--param", param)]
+    try:
+        done = runner.run(sumocfg, story=story, extra=[*extra, "check", "--json"], timeout=CHECK_TIMEOUT_S)
+    except OSError as e:  # no sbsim found (runner.executable), or one that does not start
+        raise ReportError(f"{e.filename or 'sbsim'}: {e.strerror or e}") from e
+    except subprocess.TimeoutExpired as e:
+        raise ReportError(f"{story}: sbsim check took more than {CHECK_TIMEOUT_S:g} s") from e
+    # 1 would be warnings under --strict, which is not asked for: anything but 0 is a failure.
+    if done.returncode != 0:
+        raise ReportError(f"{story}: sbsim check failed (exit {done.returncode}): {_check_error(done.stderr)}")
+    try:
+        document = json.loads(done.stdout)
+        return {
+            entry["name"]: [
+                Area(
+                    entry["name"],
+                    area["condition"],
+                    tuple((float(x), float(y)) for x, y in area["points"]),
+                    float(area["radius"]) if "radius" in area else None,
+                )
+                for area in entry["areas"]
+            ]
+            for entry in document["stories"]
+        }
+    except (json.JSONDecodeError, KeyError, TypeError, ValueError) as e:
+        raise ReportError(f"{story}: sbsim check --json printed no story areas ({e!r}); is sbsim older?") from e
+
+
+def _check_error(stderr: str) -> str:
+    """The line of sbsim's stderr that says what is wrong: its last own ``sbsim: ...`` line (a script's
+    error comes after Python's traceback), else the last line."""
+    lines = [line.strip() for line in stderr.splitlines() if line.strip()]
+    own = [line.removeprefix("sbsim: ") for line in lines if line.startswith("sbsim: ")]
+    return own[-1] if own else lines[-1] if lines else "no message"
+
+
 # ---------------------------------------------------------------------------------------------------------------------
 # Figures
 
@@ -311,12 +380,22 @@ def activation_positions(events: Events, fcd: pd.DataFrame) -> pd.DataFrame:
 
 
 def plot_map(
-    net: sumolib.net.Net, events: Events, fcd: pd.DataFrame | None = None, names: Sequence[str] | None = None
+    net: sumolib.net.Net,
+    events: Events,
+    fcd: pd.DataFrame | None = None,
+    names: Sequence[str] | None = None,
+    areas: Mapping[str, Sequence[Area]] | None = None,
 ) -> Figure:
-    """The network's lanes and, with the FCD, where each story activated: one scatter per story,
-    labelled with its name (``get_offsets()`` are the SUMO x, y of its activations)."""
+    """The network's lanes; each story's ``areas`` (:func:`story_areas`) as semi-transparent patches in
+    its colour (a :class:`~matplotlib.patches.Polygon`, ``get_xy()`` closed, or a
+    :class:`~matplotlib.patches.Circle`; the first of a story labelled with its name); and, with the
+    FCD, where each story activated: one scatter per story, labelled ``<name> (<count>)``
+    (``get_offsets()`` are the SUMO x, y of its activations)."""
     frame = events_frame(events)
     names = list(names) if names is not None else stories(frame)
+    areas = areas or {}
+    # Stories that never activated still have their areas drawn (and a colour of their own).
+    names += [name for name in areas if name not in names]
     fig = Figure(figsize=(8, 8), layout="constrained")
     ax = fig.add_subplot()
     shapes = [lane.getShape() for edge in net.getEdges() for lane in edge.getLanes()]
@@ -328,10 +407,18 @@ def plot_map(
     ax.set_aspect("equal")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
+    for i, name in enumerate(names):
+        for k, area in enumerate(areas.get(name, ())):
+            ax.add_patch(_area_patch(area, _color(i), label=name if k == 0 else "_nolegend_"))
+    drawn_areas = any(areas.values())
     if fcd is None:
-        ax.set_title("Network (pass --fcd to see where stories activated)")
+        ax.set_title(
+            f"Network{' and the stories’ areas' if drawn_areas else ''} (pass --fcd to see where stories activated)"
+        )
+        if drawn_areas:
+            ax.legend(loc="upper right")
         return fig
-    ax.set_title("Where vehicles were when each story activated")
+    ax.set_title(f"{'The stories’ areas and w' if drawn_areas else 'W'}here vehicles were when each story activated")
     points = activation_positions(frame, fcd)
     for i, name in enumerate(names):
         mine = points[points["story"] == name]
@@ -341,6 +428,14 @@ def plot_map(
     if names:
         ax.legend(loc="upper right")
     return fig
+
+
+def _area_patch(area: Area, color: str, label: str) -> Polygon | Circle:
+    # Filled lightly so lanes and activation points stay visible through it; the outline shows the edge.
+    style = {"facecolor": to_rgba(color, 0.25), "edgecolor": to_rgba(color, 0.9), "linewidth": 1.2, "label": label}
+    if area.radius is not None:
+        return Circle(area.points[0], area.radius, **style)
+    return Polygon(area.points, closed=True, **style)
 
 
 def speeds_by_story(events: Events, fcd: pd.DataFrame, story: str) -> pd.DataFrame:
@@ -465,15 +560,22 @@ def build(
     sumocfg: str | os.PathLike[str],
     fcd: str | os.PathLike[str] | None = None,
     summary: str | os.PathLike[str] | None = None,
+    story: str | os.PathLike[str] | None = None,
+    params: Sequence[str] = (),
 ) -> Report:
-    """Reads a run's files and draws its report; raises :class:`ReportError` for unusable input."""
+    """Reads a run's files and draws its report; raises :class:`ReportError` for unusable input.
+
+    With ``story`` (the run's script, and ``params`` its ``--param NAME=VALUE`` values) the map shows
+    the stories' areas (:func:`story_areas`)."""
     log = load_events(events)
     scenario = read_sumocfg(sumocfg)
     net = read_net(scenario.net_file)
     data = load_summary(summary) if summary is not None else None
     trace = read_fcd(fcd, fallback_step=scenario.step_length or 1.0) if fcd is not None else None
+    areas = story_areas(story, scenario.sumocfg, params) if story is not None else None
     frame = events_frame(log)
     names = stories(frame, data)
+    names += [name for name in areas or {} if name not in names]
     ends = [float(frame["t"].max())] if len(frame) else []
     if data is not None and isinstance(data.get("end"), dict) and isinstance(data["end"].get("time"), int | float):
         ends.append(float(data["end"]["time"]))
@@ -482,7 +584,7 @@ def build(
     report = Report(title=f"sbsim report: {Path(events).name}")
     report.figures["activity"] = plot_activity(frame, max(ends) if ends else None, names)
     report.figures["durations"] = plot_durations(frame, names)
-    report.figures["map"] = plot_map(net, frame, trace, names)
+    report.figures["map"] = plot_map(net, frame, trace, names, areas)
     if trace is not None:
         report.figures["speeds"] = plot_speeds(frame, trace, names)
     report.stories = story_table(frame, data, names)
@@ -511,7 +613,8 @@ def write_pngs(report: Report, directory: str | os.PathLike[str]) -> list[Path]:
 CAPTIONS = {
     "activity": "Vehicles under each story over time (stacked).",
     "durations": "How long vehicles stayed under each story (completed stays).",
-    "map": "The network and where vehicles were when each story activated (from the FCD output).",
+    "map": "The network, the stories' areas (with --story) and where vehicles were when each story activated "
+    "(from the FCD output).",
     "speeds": "Mean speed of the vehicles under each story against the other running vehicles.",
 }
 
@@ -549,13 +652,19 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     parser.add_argument("events", type=Path, help="the run's --events file (JSON Lines)")
     parser.add_argument("--sumocfg", type=Path, required=True, help="the run's SUMO configuration (for the net)")
+    parser.add_argument("--story", type=Path, help="the run's story script: the map shows its areas (sbsim check)")
+    parser.add_argument(
+        "--param", action="append", default=[], metavar="NAME=VALUE", help="the run's --param values, for --story"
+    )
     parser.add_argument("--fcd", type=Path, help="SUMO's FCD output of the run (positions and speeds)")
     parser.add_argument("--summary", type=Path, help="the run's --summary JSON")
     parser.add_argument("-o", "--output", type=Path, required=True, help="the HTML file to write")
     parser.add_argument("--png", type=Path, metavar="DIR", help="also write each figure as DIR/<name>.png")
     args = parser.parse_args(argv)
     try:
-        report = build(args.events, args.sumocfg, fcd=args.fcd, summary=args.summary)
+        report = build(
+            args.events, args.sumocfg, fcd=args.fcd, summary=args.summary, story=args.story, params=args.param
+        )
         page = to_html(report)
         try:
             args.output.write_text(page, encoding="utf-8")

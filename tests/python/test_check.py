@@ -109,6 +109,37 @@ def test_the_other_warnings_and_json(trips_cfg: Path, tmp_path: Path) -> None:
     assert "same domain (speed)" in warnings["fight"]
 
 
+def test_json_gives_each_story_its_areas_in_sumo_frame(offset_cfg: Path, tmp_path: Path) -> None:
+    story = write_story(
+        tmp_path,
+        """
+        from storyboard import (AndCondition, Coord, DistanceCondition, OrCondition, PolygonCondition, SpeedEffect,
+                                Story, TimeCondition)
+
+        def createStories(board):
+            canvas = PolygonCondition([Coord(0, 0), Coord(200, 0), Coord(200, 100)])
+            sumo = PolygonCondition([(10, 20), (30, 20), (30, 40)])
+            near = DistanceCondition(Coord(100, 150), 25)
+            shared = AndCondition(canvas, TimeCondition(10))
+            board.registerStory(Story(OrCondition(shared, AndCondition(sumo, shared)), [SpeedEffect(5)], name="a"))
+            board.registerStory(Story(AndCondition(near, DistanceCondition("veh0", 10)), [], name="b"))
+            board.registerStory(Story(TimeCondition(10), [], name="c"))
+        """,
+    )
+    result = check(offset_cfg, story, "--json")
+    assert result.returncode == 0, result.stderr
+    areas = {s["name"]: s["areas"] for s in json.loads(result.stdout)["stories"]}
+    # Coord(x, y) is SUMO (x - 100, 650 - y) here; the shared polygon once; a vehicle distance has no area.
+    assert areas == {
+        "a": [
+            {"condition": "PolygonCondition", "points": [[-100, 650], [100, 650], [100, 550]]},
+            {"condition": "PolygonCondition", "points": [[10, 20], [30, 20], [30, 40]]},
+        ],
+        "b": [{"condition": "DistanceCondition", "points": [[0, 500]], "radius": 25}],
+        "c": [],
+    }
+
+
 BROKEN = {
     "syntax": ("x = = 1", "x = = 1", "SyntaxError"),
     "name": ("    board.registerStory(Story(Nope(), []))", "Nope()", "NameError"),

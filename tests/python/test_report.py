@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import base64
+import io
 import json
 import os
 import re
@@ -17,16 +18,21 @@ import numpy as np
 import pytest
 from matplotlib.axes import Axes
 from matplotlib.collections import PathCollection
-from matplotlib.patches import StepPatch
+from matplotlib.colors import to_rgb
+from matplotlib.image import imread
+from matplotlib.patches import Polygon, StepPatch
 from sbsim_helpers import REPO, STORIES, FcdTrace, active_timeline, assert_no_crash, read_fcd
 from storyboard import report
 from storyboard.runner import read_events, read_summary, run
 
 SCENARIO = STORIES / "grid-rain"
 SUMOCFG = SCENARIO / "grid-rain.sumocfg"
+STORY = SCENARIO / "story.py"
 END = 500.0
 #: stories/grid-rain/story.py's DISTRICT: a square from 390 to 810 m on both axes.
 DISTRICT = (390.0, 810.0)
+#: Its corners in SUMO's frame, in the script's order.
+DISTRICT_CORNERS = [(390.0, 390.0), (810.0, 390.0), (810.0, 810.0), (390.0, 810.0)]
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
 
@@ -143,6 +149,78 @@ def test_map_shows_the_rain_district(rain: RainRun) -> None:
         assert sorted(map(tuple, offsets.tolist())) == expected
 
 
+def test_story_areas_are_what_sbsim_check_reports() -> None:
+    checked = run(SUMOCFG, story=STORY, extra=["check", "--json"], timeout=120)
+    assert checked.returncode == 0, checked.stderr
+    reported = {s["name"]: s["areas"] for s in json.loads(checked.stdout)["stories"]}
+    # Both stories share the one condition holding the district: each has it once.
+    assert reported == {
+        story: [{"condition": "PolygonCondition", "points": [list(p) for p in DISTRICT_CORNERS]}]
+        for story in ("rain", "rain-warning")
+    }
+    areas = report.story_areas(STORY, SUMOCFG)
+    assert list(areas) == ["rain", "rain-warning"]
+    for story, mine in areas.items():
+        assert mine == [report.Area(story, "PolygonCondition", tuple(DISTRICT_CORNERS))]
+
+
+def map_polygons(figure: Any) -> dict[str, Polygon]:
+    ax = figure.axes[0]
+    return {p.get_label(): p for p in ax.patches if isinstance(p, Polygon)}
+
+
+def test_map_shows_each_story_area_in_its_colour(rain: RainRun) -> None:
+    built = report.build(rain.events_path, SUMOCFG, fcd=rain.fcd_path, story=STORY)
+    ax = built.figures["map"].axes[0]
+    polygons = map_polygons(built.figures["map"])
+    assert list(polygons) == ["rain", "rain-warning"]
+    scatters = {c.get_label().split(" (")[0]: c for c in ax.collections if isinstance(c, PathCollection)}
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    for story, patch in polygons.items():
+        xy = patch.get_xy()
+        # The ring is closed: the first corner again at the end.
+        assert xy[:-1].tolist() == [list(p) for p in DISTRICT_CORNERS], story
+        assert xy[-1].tolist() == xy[0].tolist()
+        face, edge = patch.get_facecolor(), patch.get_edgecolor()
+        assert 0 < face[3] < 1 and patch.get_fill(), "a filled, semi-transparent area"
+        # The story's colour: the same as its activation points'.
+        np.testing.assert_allclose(face[:3], scatters[story].get_facecolor()[0][:3])
+        np.testing.assert_allclose(edge[:3], face[:3])
+        assert story in legend
+    # The activation points are still all there, on top of the areas.
+    activations = Counter(e["story"] for e in rain.events if e["type"] == "activate")
+    assert {s: len(c.get_offsets()) for s, c in scatters.items()} == activations
+    # Without the FCD the areas are drawn on the network alone.
+    alone = report.build(rain.events_path, SUMOCFG, story=STORY).figures["map"]
+    assert list(map_polygons(alone)) == ["rain", "rain-warning"]
+    assert "areas" in alone.axes[0].get_title()
+    # Without --story, no areas.
+    assert not map_polygons(report.build(rain.events_path, SUMOCFG).figures["map"])
+
+
+def test_a_story_that_never_activated_still_has_its_area_drawn(rain: RainRun, tmp_path: Path) -> None:
+    story = tmp_path / "story.py"
+    story.write_text(
+        "from storyboard import AndCondition, Coord, DistanceCondition, PolygonCondition, SpeedEffect, Story\n\n"
+        "def createStories(board):\n"
+        "    board.registerStory(Story(PolygonCondition([(390, 390), (810, 390), (810, 810)]), [], name='rain'))\n"
+        "    area = PolygonCondition([Coord(0, 0), Coord(100, 0), Coord(100, 100)])\n"
+        "    near = DistanceCondition((500, 500), 40)\n"
+        "    board.registerStory(Story(AndCondition(area, near), [SpeedEffect(1)], name='quiet'))\n",
+        encoding="utf-8",
+    )
+    figure = report.build(rain.events_path, SUMOCFG, story=story).figures["map"]
+    ax = figure.axes[0]
+    polygons = map_polygons(figure)
+    assert list(polygons) == ["rain", "quiet"]
+    # Coord is Artery's canvas frame (y down from the net's top, here y = 1000): drawn in SUMO's.
+    assert polygons["quiet"].get_xy()[:-1].tolist() == [[0, 1000], [100, 1000], [100, 900]]
+    [circle] = [p for p in ax.patches if not isinstance(p, Polygon)]
+    assert tuple(circle.get_center()) == (500, 500) and circle.get_radius() == 40
+    np.testing.assert_allclose(circle.get_facecolor(), polygons["quiet"].get_facecolor())
+    assert "rain-warning" not in polygons  # the log's story without a registered area has none
+
+
 def test_speeds_under_a_story_against_the_rest(rain: RainRun) -> None:
     figure = report.plot_speeds(rain.events, rain.fcd)
     ax = story_axes(figure, "rain")
@@ -225,6 +303,36 @@ def test_command_writes_a_self_contained_page_and_pngs(rain: RainRun, tmp_path: 
     assert all((pngs / name).read_bytes().startswith(PNG_MAGIC) for name in written)
 
 
+def pixel(image: np.ndarray, figure: Any, x: float, y: float) -> np.ndarray:
+    """The RGB of a PNG of ``figure`` (drawn at its own dpi) at the data point (x, y) of its first axes."""
+    figure.canvas.draw()  # the constrained layout places the axes when drawn
+    column, row = figure.axes[0].transData.transform((x, y))
+    return image[image.shape[0] - 1 - round(row), round(column), :3]
+
+
+def test_the_page_map_shows_the_rain_district(rain: RainRun, tmp_path: Path) -> None:
+    page, pngs = tmp_path / "report.html", tmp_path / "png"
+    done = cli(rain.events_path, "--sumocfg", SUMOCFG, "--story", STORY, "-o", page, "--png", pngs)
+    assert done.returncode == 0, done.stderr
+    text = page.read_text(encoding="utf-8")
+    [embedded] = re.findall(r'<figure id="map"><img src="data:image/png;base64,([A-Za-z0-9+/=]+)"', text)
+    assert (pngs / "map.png").read_bytes().startswith(PNG_MAGIC)
+    # The page's own map, as a reader sees it.
+    image = imread(io.BytesIO(base64.b64decode(embedded)), format="png")
+    figure = report.build(rain.events_path, SUMOCFG).figures["map"]  # the same axes, to place the points
+    assert image.shape[:2] == tuple(round(v) for v in figure.get_size_inches()[::-1] * 100)
+    # Mid-block (no lane) inside the district: white tinted by the two stories' fills, C0 then C1
+    # at 25 % each; outside it: white.
+    white = np.ones(3)
+    tinted = white
+    for color in ("C0", "C1"):
+        tinted = tinted * 0.75 + np.array(to_rgb(color)) * 0.25
+    for x, y in ((500, 500), (700, 500), (500, 700)):
+        np.testing.assert_allclose(pixel(image, figure, x, y), tinted, atol=0.02)
+    for x, y in ((100, 100), (900, 100), (100, 900)):
+        np.testing.assert_allclose(pixel(image, figure, x, y), white, atol=0.02)
+
+
 def bad_case(tmp: Path, rain: RainRun, case: str) -> tuple[list[str | os.PathLike[str]], str]:
     """Arguments for one bad input and a regular expression its error line must match."""
     events: str | os.PathLike[str] = rain.events_path
@@ -269,6 +377,12 @@ def bad_case(tmp: Path, rain: RainRun, case: str) -> tuple[list[str | os.PathLik
         extra, pattern = ["--fcd", tmp / "none.xml"], r"none\.xml: No such file"
     elif case == "not FCD":
         extra, pattern = ["--fcd", rain.summary_path], r"summary\.json: not SUMO FCD output"
+    elif case == "missing story":
+        extra, pattern = ["--story", tmp / "gone.py"], r"gone\.py: sbsim check failed \(exit 2\): .*gone\.py"
+    elif case == "broken story":
+        story = tmp / "broken.py"
+        story.write_text("from storyboard import Story\n\ndef createStories(board):\n    Story(Nope(), [])\n")
+        extra, pattern = ["--story", story], r"broken\.py: sbsim check failed \(exit 2\): .*broken\.py:4.*NameError"
     else:
         raise AssertionError(case)
     return [events, "--sumocfg", sumocfg, *extra, "-o", tmp / "out.html"], pattern
@@ -287,6 +401,8 @@ BAD_CASES = [
     "bad summary",
     "missing FCD",
     "not FCD",
+    "missing story",
+    "broken story",
 ]
 
 
@@ -310,3 +426,14 @@ def test_bad_input_from_the_command_line_has_no_traceback(rain: RainRun, tmp_pat
     assert done.returncode == 2
     assert re.fullmatch(rf"report: .*{pattern}.*\n", done.stderr), done.stderr
     assert done.stdout == ""
+
+
+def test_without_sbsim_the_story_areas_are_one_error_line(
+    rain: RainRun, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.setenv("SBSIM_EXECUTABLE", str(tmp_path / "no-sbsim"))
+    args = [rain.events_path, "--sumocfg", SUMOCFG, "--story", STORY, "-o", tmp_path / "out.html"]
+    assert report.main([str(a) for a in args]) == 2
+    [line] = capsys.readouterr().err.splitlines()
+    assert re.fullmatch(r"report: .*no-sbsim: No such file or directory", line), line
+    assert not (tmp_path / "out.html").exists()
