@@ -82,6 +82,27 @@ def median(values: Sequence[float]) -> float:
     return statistics.median(values)
 
 
+def paired_ratio(results: dict[str, list[Run]], name: str, base: str = "sumo") -> tuple[float, float, float]:
+    """Median, min and max over rounds of name's wall time / base's in the same round: interleaved
+    runs share the machine's drift, so a ratio per round is steadier than a ratio of medians."""
+    ratios = [a.wall / b.wall for a, b in zip(results[name], results[base], strict=True)]
+    return statistics.median(ratios), min(ratios), max(ratios)
+
+
+# Allocators a command can run with instead of glibc's (LD_PRELOAD: the same effect as linking
+# them, for every library of the process); Debian's libjemalloc2 and libmimalloc2.0.
+PRELOADS = {"jemalloc": "libjemalloc.so.2", "mimalloc": "libmimalloc.so.2"}
+
+
+def preloaded(allocator: str, cmd: Sequence[str]) -> list[str]:
+    """cmd run with `allocator` (a PRELOADS key) preloaded."""
+    for folder in (Path("/usr/lib/x86_64-linux-gnu"), Path("/usr/lib/aarch64-linux-gnu"), Path("/usr/lib")):
+        library = folder / PRELOADS[allocator]
+        if library.exists():
+            return ["env", f"LD_PRELOAD={library}", *cmd]
+    sys.exit(f"{PRELOADS[allocator]} not found (Debian: apt-get install lib{allocator}2*)")
+
+
 def summary_value(stdout: str, key: str) -> float:
     """A number from sbsim's summary line `key: <number> ...`."""
     for line in stdout.splitlines():

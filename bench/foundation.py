@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import argparse
 
-from benchlib import alternate, median, sbsim, scenario, summary_value, sumo
+from benchlib import PRELOADS, alternate, median, paired_ratio, preloaded, sbsim, scenario, summary_value, sumo
 
 
 def main() -> None:
@@ -17,6 +17,10 @@ def main() -> None:
     parser.add_argument("--preset", default="bench5k", help="make_grid preset (default bench5k)")
     parser.add_argument("--end", type=float, default=300.0, help="simulated seconds (default 300)")
     parser.add_argument("--runs", type=int, default=5, help="runs per command (default 5)")
+    parser.add_argument(
+        "--preload", nargs="*", default=[], choices=sorted(PRELOADS), help="also run sbsim with these allocators"
+    )
+    parser.add_argument("--compare", metavar="EXE", help="also run this other sbsim executable (e.g. an older build)")
     args = parser.parse_args()
 
     cfg = str(scenario(args.preset))
@@ -28,17 +32,28 @@ def main() -> None:
         # libsumo's own cost: stepping only, no vehicle read.
         "sbsim --no-snapshot": [sbsim(), "--sumocfg", cfg, "--end", end, "--no-snapshot"],
     }
+    for allocator in args.preload:
+        commands[f"sbsim + {allocator}"] = preloaded(allocator, commands["sbsim"])
+    if args.compare:
+        commands["sbsim (--compare)"] = [args.compare, "--sumocfg", cfg, "--end", end]
     print(f"{args.preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
     results = alternate(commands, args.runs)
 
     base_wall = median([r.wall for r in results["sumo"]])
     base_cpu = median([r.cpu for r in results["sumo"]])
-    print(f"\n{'command':<22} {'median wall':>12} {'ratio':>7} {'median cpu':>11} {'ratio':>7} {'peak RSS':>9}")
+    print(
+        f"\n{'command':<22} {'median wall':>12} {'ratio':>7} {'per round (min-max)':>22} "
+        f"{'median cpu':>11} {'ratio':>7} {'peak RSS':>9}"
+    )
     for name, runs in results.items():
         wall = median([r.wall for r in runs])
         cpu = median([r.cpu for r in runs])
         rss = max(r.rss_mb for r in runs)
-        print(f"{name:<22} {wall:10.2f} s {wall / base_wall:6.3f}x {cpu:9.2f} s {cpu / base_cpu:6.3f}x {rss:7.0f} MB")
+        paired, low, high = paired_ratio(results, name)
+        print(
+            f"{name:<22} {wall:10.2f} s {wall / base_wall:6.3f}x {paired:8.3f}x ({low:.3f}-{high:.3f}) "
+            f"{cpu:9.2f} s {cpu / base_cpu:6.3f}x {rss:7.0f} MB"
+        )
 
     single = results["sbsim --threads 1"]
     steps = summary_value(single[0].stdout, "steps")

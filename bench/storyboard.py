@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from benchlib import alternate, median, sbsim, scenario, summary_value, sumo
+from benchlib import PRELOADS, alternate, median, paired_ratio, preloaded, sbsim, scenario, summary_value, sumo
 
 STORY = Path(__file__).resolve().parent / "stories" / "six_stories.py"
 
@@ -22,20 +22,30 @@ def main() -> None:
     parser.add_argument("--presets", nargs="+", default=["bench1k", "bench5k", "bench20k"])
     parser.add_argument("--end", type=float, default=300.0, help="simulated seconds (default 300)")
     parser.add_argument("--runs", type=int, default=3, help="runs per command (default 3)")
+    parser.add_argument(
+        "--preload", nargs="*", default=[], choices=sorted(PRELOADS), help="also run sbsim with these allocators"
+    )
+    parser.add_argument("--compare", metavar="EXE", help="also run this other sbsim executable (e.g. an older build)")
     args = parser.parse_args()
 
     rows = []
+    extras: list[str] = []  # per command: ratio to sumo round by round, peak RSS
     for preset in args.presets:
         cfg = str(scenario(preset))
         end = repr(args.end)
         print(f"{preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
-        results = alternate(
-            {
-                "sumo": [sumo(), "-c", cfg, "--end", end],
-                "sbsim + six stories": [sbsim(), "--sumocfg", cfg, "--end", end, "--story", str(STORY)],
-            },
-            args.runs,
-        )
+        stories = [sbsim(), "--sumocfg", cfg, "--end", end, "--story", str(STORY)]
+        commands = {"sumo": [sumo(), "-c", cfg, "--end", end], "sbsim + six stories": stories}
+        for allocator in args.preload:
+            commands[f"six stories + {allocator}"] = preloaded(allocator, stories)
+        if args.compare:
+            commands["six stories (--compare)"] = [args.compare, *stories[1:]]
+        results = alternate(commands, args.runs)
+        for name in list(commands)[1:]:
+            paired, low, high = paired_ratio(results, name)
+            rss = max(r.rss_mb for r in results[name])
+            extras.append(f"{preset:<10} {name:<26} {paired:.3f}x ({low:.3f}-{high:.3f})  peak RSS {rss:.0f} MB")
+        extras.append(f"{preset:<10} {'sumo':<26} peak RSS {max(r.rss_mb for r in results['sumo']):.0f} MB")
         story_runs = results["sbsim + six stories"]
         steps = summary_value(story_runs[0].stdout, "steps")
         # Vehicle-steps: the grids hold their full count after the 100 s ramp, so use the peak.
@@ -63,6 +73,8 @@ def main() -> None:
             f"{preset:<10} {running:8.0f} {base:7.2f} s {wall:7.2f} s {wall / base:6.3f}x "
             f"{per_step:13.2f} ms {per_vehicle:14.3f} us {reading:10.2f} ms"
         )
+    print("\nratio to sumo per round, median (min-max), and peak RSS:")
+    print("\n".join(extras))
 
 
 if __name__ == "__main__":
