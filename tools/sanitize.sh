@@ -12,7 +12,7 @@ case "$scope" in all | corpus) ;; *) say "--sanitize takes all or corpus, not '$
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
 say "configuring build/asan (sanitizers: address, undefined, leak)"
 cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSBSIM_BUILD_TESTS=ON \
-  -DPython_EXECUTABLE="$VENV/bin/python" -DCMAKE_CXX_FLAGS="$flags" \
+  -DPython_EXECUTABLE="$VENV/bin/python" -DCMAKE_CXX_FLAGS="$flags" -DSBSIM_ALLOCATOR=system \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
   -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >build/asan-configure.log 2>&1 \
   || { tail -n 30 build/asan-configure.log >&2; exit 1; }

@@ -2,7 +2,9 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace sbsim::traffic {
 
@@ -51,8 +53,17 @@ public:
         }
         return out.empty() ? "none" : out;
     }
+    /// The column called `name` as str() writes it ("lane", "max_speed"), if there is one.
+    static std::optional<SnapshotColumns> named(std::string_view name) {
+        for (std::uint32_t k = 0; k < 8; ++k) {
+            if (name == kNames[k]) return SnapshotColumns(1u << k);
+        }
+        return std::nullopt;
+    }
 
 private:
+    static constexpr const char* kNames[] = {"position", "speed", "angle", "acceleration",
+                                             "lane",     "size",  "type",  "max_speed"};
     static constexpr std::uint32_t kAllBits = (1u << 8) - 1;
     static constexpr std::uint32_t kPerStepBits = (1u << 5) - 1;
     constexpr explicit SnapshotColumns(std::uint32_t bits) : bits_(bits) {}

@@ -1,5 +1,5 @@
 # Types of the story API that sbsim provides to story scripts (implemented in C++).
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from typing import Protocol
 
 import numpy as np
@@ -99,8 +99,11 @@ class VehicleController:
     def change_lane(self, lane_index: int, seconds: float) -> None: ...
 
 class Condition:
-    """Base of custom conditions: override test() or the vectorised test_all()."""
+    """Base of custom conditions: override test() or the vectorised test_all(). A subclass may
+    name the snapshot columns it reads (``columns = ("position", "speed")``; also "angle",
+    "acceleration", "lane", "size", "type", "max_speed"): the snapshot then reads no others for it."""
 
+    columns: Sequence[str]
     def __init__(self) -> None: ...
 
 class _CustomCondition(Protocol):

@@ -209,6 +209,36 @@ def test_pythonic_helpers_and_aliases(trips_cfg: Path, tmp_path: Path) -> None:
     assert set(run.activated("any")) == {"veh2", "veh3"}
 
 
+def test_a_condition_declaring_its_columns_reads_those_and_no_others(trips_cfg: Path, tmp_path: Path) -> None:
+    # The snapshot reads only what the conditions declared: a declared column is there, another
+    # one is a clear error (not a stale value), a wrong declaration is bad input.
+    story = """
+        import storyboard
+
+        class Slow(storyboard.Condition):
+            columns = ("speed",)
+            def test(self, vehicle):
+                return vehicle.time >= 10 and vehicle.speed < {limit} and {extra}
+
+        def createStories(board):
+            board.registerStory(storyboard.Story(Slow(), [storyboard.SignalEffect("slow")], "slow"))
+    """
+    run = run_story(trips_cfg, story.format(limit=100, extra="True"), tmp_path / "declared", end=20)
+    assert run.activated("slow"), "speed was declared: the condition sees it"
+
+    run = run_story(
+        trips_cfg, story.format(limit=100, extra="vehicle.lane != ''"), tmp_path / "undeclared", end=20, check=False
+    )
+    assert run.returncode == 2
+    assert "holds no 'lane' in this run" in run.result.stderr
+
+    wrong = story.replace('("speed",)', '("speed", "colour")').format(limit=1, extra="True")
+    run = run_story(trips_cfg, wrong, tmp_path / "wrong", end=20, check=False)
+    assert run.returncode == 2
+    assert "Slow.columns must be a sequence of column names" in run.result.stderr
+    assert "story.py:" in run.result.stderr
+
+
 ARTERY_DEMO = """\
 #!/usr/bin/env python
 

@@ -79,9 +79,28 @@ std::set<std::string> toStringSet(const py::handle& ids, const std::string& what
 }  // namespace
 
 void bindConditions(py::module_& m) {
-    py::class_<Condition, PythonCondition, py::smart_holder>(m, "Condition").def(py::init<>()).doc() =
+    py::class_<Condition, PythonCondition, py::smart_holder>(m, "Condition")
+        .def(py::init<>())
+        // A subclass's own `columns` (a class attribute) shadows this, and PythonCondition reads it.
+        .def_property_readonly(
+            "columns",
+            [](const Condition& c) {
+                const std::string names = c.columns().str();
+                std::vector<std::string> out;
+                if (!c.columns().empty()) {
+                    for (std::size_t at = 0; at <= names.size();) {
+                        const std::size_t bar = std::min(names.find('|', at), names.size());
+                        out.push_back(names.substr(at, bar - at));
+                        at = bar + 1;
+                    }
+                }
+                return py::tuple(py::cast(out));
+            },
+            "The snapshot columns this condition reads (its children declare their own).")
+        .doc() =
         "Base of custom conditions: override test(self, vehicle) -> bool | set[str], or the "
-        "vectorised test_all(self, snapshot) -> numpy bool array.";
+        "vectorised test_all(self, snapshot) -> numpy bool array; name the snapshot columns read "
+        "in a class attribute `columns` (default: all).";
 
     py::class_<TimeCondition, Condition, py::smart_holder>(m, "TimeCondition")
         .def(py::init([](const py::object& begin, const py::object& end) {

@@ -19,6 +19,35 @@ std::string className(const Condition* self) {
 }
 }  // namespace
 
+traffic::SnapshotColumns PythonCondition::columns() const {
+    const py::gil_scoped_acquire gil;
+    const py::object self = py::cast(static_cast<const Condition*>(this));
+    // Only a `columns` the script's classes define; the bound base's property would ask back here.
+    py::object declared;
+    for (const py::handle cls : py::type::of(self).attr("__mro__")) {
+        if (cls.attr("__module__").cast<std::string>() == "_sbsim") break;
+        if (const py::dict own = cls.attr("__dict__"); own.contains("columns")) {
+            declared = own["columns"];
+            break;
+        }
+    }
+    if (!declared) return traffic::SnapshotColumns::all();
+    const auto wrong = [&] {
+        throwContractError(self, className(this) + ".columns must be a sequence of column names (" +
+                                     traffic::SnapshotColumns::all().str() + "), got " +
+                                     py::repr(declared).cast<std::string>());
+    };
+    if (py::isinstance<py::str>(declared) || !py::hasattr(declared, "__iter__")) wrong();
+    traffic::SnapshotColumns columns;
+    for (const py::handle name : declared) {
+        if (!py::isinstance<py::str>(name)) wrong();
+        const auto column = traffic::SnapshotColumns::named(name.cast<std::string>());
+        if (!column) wrong();
+        columns |= *column;
+    }
+    return columns;
+}
+
 PythonCondition::~PythonCondition() {
     if (stepValid_) *stepValid_ = false;
 }

@@ -19,6 +19,9 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     void forget(std::string_view vehicleId) override;
+    /// The class attribute `columns` (names such as "position", "speed"), if the script set one;
+    /// otherwise every column, since a Python condition may read anything.
+    traffic::SnapshotColumns columns() const override;
     ~PythonCondition() override;
     /// The script's class name (the Python object this trampoline belongs to).
     std::string typeName() const override {
