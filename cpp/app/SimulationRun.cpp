@@ -12,6 +12,7 @@
 #include "sbsim/app/AfterEachStep.h"
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/BundledScenario.h"
+#include "sbsim/app/GuiWatch.h"
 #include "sbsim/app/Interruption.h"
 #include "sbsim/app/OutputFile.h"
 #include "sbsim/app/ProgressDisplay.h"
@@ -75,6 +76,11 @@ int runSimulation(const CommandLine& cl) {
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
     std::optional<OutputFile> sumoLog;
     if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
+    std::optional<GuiWatch> gui;
+    if (cl.gui) {
+        GuiWatch::requireDisplay();
+        gui.emplace(cl.guiScreenshots, files);
+    }
     Interruption::checkpoint("before SUMO loaded");
 
     traffic::SumoSettings settings;
@@ -85,6 +91,9 @@ int runSimulation(const CommandLine& cl) {
     settings.quiet = cl.quiet;
     settings.warningsShown = cl.verbose ? SIZE_MAX : kWarningsShown;
     settings.readVehicles = !cl.noSnapshot;
+    settings.gui = cl.gui;
+    if (cl.guiDelay)
+        settings.extraOptions.insert(settings.extraOptions.end(), {"--delay", fmt::format("{:g}", *cl.guiDelay)});
 
     // Declared before the simulation so it outlives the stories' Python objects.
     std::optional<storyboard::PythonRuntime> python;
@@ -131,6 +140,13 @@ int runSimulation(const CommandLine& cl) {
         Interruption::checkpoint("while the story was being created");
         if (created == 0) fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
     }
+    if (gui) {
+        if (board != nullptr) {
+            board->paintStories();
+            gui->drawAreas(board->stories());
+        }
+        sim.subscribe(traffic::SumoBridge::stepSignal, *gui);
+    }
 
     services::ServiceManager* serviceManager = nullptr;
     services::Medium* medium = nullptr;
@@ -172,6 +188,7 @@ int runSimulation(const CommandLine& cl) {
         throw InputError(fmt::format("--services: {}", e.what()));
     }
     if (progress) progress->clear();
+    if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();

@@ -27,6 +27,9 @@ struct SBSIM_API SumoSettings {
     /// False: step SUMO without reading vehicle states (the snapshot keeps only ids) — a
     /// baseline that shows libsumo's own cost against the sumo binary.
     bool readVehicles = true;
+    /// Start SUMO's GUI (sumo-gui inside this process, libsumo's GUI) instead of plain SUMO; an
+    /// X display must be reachable, or FOX ends the process.
+    bool gui = false;
 };
 
 /// An error SUMO reported, as one line: its exception's message, or the "Error:" lines it printed
