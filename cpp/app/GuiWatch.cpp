@@ -10,7 +10,11 @@
 #include <libsumo/TraCIDefs.h>
 
 #include <algorithm>
+#include <condition_variable>
+#include <cstdio>
 #include <cstdlib>
+#include <mutex>
+#include <thread>
 
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/RunFiles.h"
@@ -29,10 +33,11 @@ libsumo::TraCIColor traciColour(const traffic::Color& c, std::uint8_t alpha) { r
 
 /// Outline width in metres: visible at the zoom that shows a whole town.
 constexpr double kOutlineWidth = 3;
-/// SUMO's polygon layer of the first area, above the roads (fills are translucent). Each area
-/// gets two layers of its own, fill then outline: SUMO draws the layer as depth, so a second
-/// polygon on the same layer and place (two stories sharing an area) would not show.
-constexpr int kFirstLayer = 100;
+/// SUMO's polygon layers (drawn as depth): fills below the roads (layers < 0), so that roads and
+/// vehicles show through them, outlines above. Each area has layers of its own: a second polygon on
+/// the same layer and place (two stories sharing an area) would not show.
+constexpr int kFirstFillLayer = -1;
+constexpr int kFirstOutlineLayer = 100;
 
 }  // namespace
 
@@ -43,6 +48,11 @@ void GuiWatch::requireDisplay() {
         throw UsageError("--gui: no X display (DISPLAY is not set); run on a desktop, or under xvfb-run");
     }
     // libX11 is loaded already (libsumocpp.so needs it): ask it as FOX will, but without dying.
+    // sumo-gui's event loop runs on a thread of its own while libsumo's calls (a step, closing)
+    // come from this one: Xlib must be made thread-safe before its first use, or the connection
+    // breaks now and then ("X Fatal error.") and closing SUMO waits forever.
+    using InitThreads = int (*)();
+    if (const auto initThreads = reinterpret_cast<InitThreads>(dlsym(RTLD_DEFAULT, "XInitThreads"))) initThreads();
     using Open = void* (*)(const char*);
     using Close = int (*)(void*);
     const auto open = reinterpret_cast<Open>(dlsym(RTLD_DEFAULT, "XOpenDisplay"));
@@ -84,11 +94,12 @@ void GuiWatch::drawAreas(const std::vector<storyboard::StoryPtr>& stories) {
         }
         const traffic::Color colour = storyboard::storyColour(area.story);
         const std::string id = fmt::format("sbsim:{}:{}", area.name, k);
-        const int layer = kFirstLayer + 2 * static_cast<int>(k);
-        libsumo::Polygon::add(id + ":fill", shape, traciColour(colour, kFillAlpha), true, area.name, layer);
+        const int n = static_cast<int>(k);
+        libsumo::Polygon::add(id + ":fill", shape, traciColour(colour, kFillAlpha), true, area.name,
+                              kFirstFillLayer - n);
         // SUMO draws a polygon filled or as an outline, not both: the outline is a polygon of its own.
-        libsumo::Polygon::add(id + ":outline", shape, traciColour(colour, 255), false, area.name, layer + 1,
-                              kOutlineWidth);
+        libsumo::Polygon::add(id + ":outline", shape, traciColour(colour, 255), false, area.name,
+                              kFirstOutlineLayer + n, kOutlineWidth);
     }
 }
 
@@ -113,6 +124,39 @@ void GuiWatch::finish(kernel::SimTime now) const {
                        "picture during the next step\n",
                        shot.request.seconds, shot.request.file.string());
         }
+    }
+}
+
+void GuiWatch::closeWithin(traffic::SumoBridge& sumo, std::chrono::seconds grace, int exitCode) {
+    std::mutex mutex;
+    std::condition_variable closed;
+    bool done = false;
+    std::thread watchdog([&] {
+        std::unique_lock lock(mutex);
+        if (closed.wait_for(lock, grace, [&] { return done; })) return;
+        fmt::print(stderr,
+                   "sbsim: warning: sumo-gui did not close within {} s; ending without it (SUMO's own output "
+                   "files may be incomplete)\n",
+                   grace.count());
+        std::fflush(stdout);
+        std::fflush(stderr);
+        std::_Exit(exitCode);
+    });
+    sumo.close();
+    {
+        const std::lock_guard lock(mutex);
+        done = true;
+    }
+    closed.notify_one();
+    watchdog.join();
+}
+
+void GuiWatch::wakeBeforeClose() {
+    try {
+        const libsumo::TraCIPosition offset = libsumo::GUI::getOffset(kView);
+        libsumo::GUI::setOffset(kView, offset.x, offset.y);  // the same view: only a redraw
+    } catch (const std::exception&) {
+        // No view (the user closed it): nothing to wake.
     }
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -10,6 +11,7 @@
 #include "sbsim/kernel/Signal.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/storyboard/Story.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::app {
 
@@ -39,6 +41,13 @@ public:
     void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
     /// Warns (stderr) about screenshots the run ended before sumo-gui could take.
     void finish(kernel::SimTime now) const;
+    /// Closes SUMO, giving sumo-gui `grace` to end: libsumo's GUI sometimes never returns from
+    /// closing (its event loop misses the request to stop). Past that, this prints a warning and
+    /// ends the process with `exitCode`, everything of sbsim's own having been written already.
+    static void closeWithin(traffic::SumoBridge& sumo, std::chrono::seconds grace, int exitCode);
+    /// Wakes sumo-gui's event loop (a redraw of the view), so that closing SUMO, which waits for
+    /// that loop to end, does not wait forever when no X event comes after the last step.
+    static void wakeBeforeClose();
 
 private:
     struct Shot {

@@ -92,6 +92,7 @@ int runSimulation(const CommandLine& cl) {
     settings.warningsShown = cl.verbose ? SIZE_MAX : kWarningsShown;
     settings.readVehicles = !cl.noSnapshot;
     settings.gui = cl.gui;
+    if (cl.gui) settings.beforeClose = &GuiWatch::wakeBeforeClose;
     if (cl.guiDelay)
         settings.extraOptions.insert(settings.extraOptions.end(), {"--delay", fmt::format("{:g}", *cl.guiDelay)});
 
@@ -222,11 +223,10 @@ int runSimulation(const CommandLine& cl) {
         if (Interruption::requested()) break;
         fmt::print(stderr, "sbsim: warning: --param {} was never read by the story or a service\n", name);
     }
-    if (Interruption::requested()) {
-        fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());
-        return 130;  // the shell's convention for SIGINT
-    }
-    return 0;
+    const int exitCode = Interruption::requested() ? 130 : 0;  // 130: the shell's convention for SIGINT
+    if (Interruption::requested()) fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());
+    if (gui) GuiWatch::closeWithin(sumo, std::chrono::seconds(10), exitCode);
+    return exitCode;
 }
 
 }  // namespace sbsim::app

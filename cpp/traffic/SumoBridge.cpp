@@ -202,6 +202,7 @@ void SumoBridge::close() {
     if (!loaded_) return;
     loaded_ = false;
     try {
+        if (settings_.beforeClose) settings_.beforeClose();
         libsumo::Simulation::close();
     } catch (const std::exception&) {
         // Closing is best effort: SUMO may already have shut down after a fatal error.
