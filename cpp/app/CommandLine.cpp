@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -50,6 +51,17 @@ CLI::Validator share() {
 CLI::Validator metres(bool allowZero) {
     if (allowZero) return numberWhere<double>("metres >= 0", [](double m) { return std::isfinite(m) && m >= 0; });
     return numberWhere<double>("metres > 0", [](double m) { return std::isfinite(m) && m > 0; });
+}
+
+/// SECONDS:FILE, the time as --end takes it and a file name not empty.
+std::optional<GuiScreenshot> parseScreenshot(const std::string& text) {
+    const auto colon = text.find(':');
+    if (colon == std::string::npos || colon + 1 == text.size()) return std::nullopt;
+    double t = 0;
+    const char* begin = text.data();
+    const auto [ptr, ec] = std::from_chars(begin, begin + colon, t);
+    if (ec != std::errc() || ptr != begin + colon || !std::isfinite(t) || t < 0 || t > kMaxSeconds) return std::nullopt;
+    return GuiScreenshot{t, text.substr(colon + 1)};
 }
 
 }  // namespace
@@ -166,6 +178,31 @@ void CommandLine::declareOptions(CLI::App& app) {
         app.add_flag("-v,--verbose", verbose, "show every SUMO warning on stderr, not the first 3 of a kind");
     app.add_flag("-q,--quiet", quiet, "no progress, no summary, no SUMO warnings")->excludes(verboseFlag);
 
+    app.option_defaults()->group("Watching (sumo-gui)");
+    auto* guiFlag = app.add_flag("--gui", gui,
+                                 "run inside sumo-gui: story areas drawn, vehicles in their active\n"
+                                 "story's colour; needs an X display (xvfb-run without one). SUMO's\n"
+                                 "GUI options go through --sumo-option, e.g. \"--start --quit-on-end\"");
+    app.add_option("--gui-delay", guiDelay, "wait between steps in sumo-gui (its --delay)")
+        ->type_name("MS")
+        ->check(numberWhere<double>("milliseconds >= 0 and at most 1e9",
+                                    [](double ms) { return std::isfinite(ms) && ms >= 0 && ms <= 1e9; }))
+        ->needs(guiFlag);
+    app.add_option("--gui-screenshot",
+                   "save sumo-gui's view as FILE (PNG, ...) at the first step\n"
+                   "reaching SECONDS, at the view's size; repeatable")
+        ->type_name("SECONDS:FILE")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->allow_extra_args(false)
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                if (parseScreenshot(text)) return {};
+                return fmt::format("expects SECONDS:FILE (seconds >= 0 and at most 3e9), got '{}'", text);
+            },
+            ""))
+        ->each([this](const std::string& text) { guiScreenshots.push_back(*parseScreenshot(text)); })
+        ->needs(guiFlag);
+
     // Options declared later (a subcommand's) start from CLI11's defaults again.
     app.option_defaults()->group("Options")->multi_option_policy(CLI::MultiOptionPolicy::Throw);
 }
@@ -180,6 +217,10 @@ void CommandLine::complete(std::vector<std::string> sumoArgs) {
     }
     sumoOptions.insert(sumoOptions.end(), sumoArgs.begin(), sumoArgs.end());
     applyOptionParameters();
+    if (guiDelay && std::any_of(sumoOptions.begin(), sumoOptions.end(),
+                                [](const std::string& w) { return w == "--delay" || w == "-d"; })) {
+        throw UsageError("--gui-delay: SUMO's --delay is given too (through --sumo-option or after --); give one");
+    }
     if (v2xFadeStart && *v2xFadeStart > v2xRange) {
         throw UsageError(fmt::format("--v2x-fade-start: the fade start ({:g} m) must not exceed --v2x-range ({:g} m)",
                                      *v2xFadeStart, v2xRange));

@@ -14,6 +14,12 @@ class Option;
 
 namespace sbsim::app {
 
+/// A sumo-gui screenshot to take (--gui-screenshot SECONDS:FILE).
+struct GuiScreenshot {
+    double seconds = 0;
+    std::filesystem::path file;
+};
+
 /// The options of a run: those of `sbsim [options]`, also accepted after a subcommand's name.
 struct CommandLine {
     /// SUMO's own default seed; the storyboard's when --seed is not given.
@@ -40,8 +46,11 @@ struct CommandLine {
     std::optional<std::filesystem::path> sumoLog;   ///< every SUMO warning, as SUMO printed it
     bool verbose = false;                           ///< every SUMO warning on stderr, not the first few of a kind
     bool quiet = false;
-    unsigned threads = 0;     ///< threads reading the per-step snapshot; 0 = all cores
-    bool noSnapshot = false;  ///< step SUMO only (a benchmark baseline)
+    unsigned threads = 0;                       ///< threads reading the per-step snapshot; 0 = all cores
+    bool noSnapshot = false;                    ///< step SUMO only (a benchmark baseline)
+    bool gui = false;                           ///< run inside sumo-gui, showing the stories
+    std::optional<double> guiDelay;             ///< ms between steps in sumo-gui (its --delay)
+    std::vector<GuiScreenshot> guiScreenshots;  ///< in the order given
 
     /// Declares the options on `app`, bound to this object's fields (which must outlive parsing),
     /// with their checks, help text and defaults.

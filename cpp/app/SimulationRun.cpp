@@ -12,6 +12,7 @@
 #include "sbsim/app/AfterEachStep.h"
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/BundledScenario.h"
+#include "sbsim/app/GuiWatch.h"
 #include "sbsim/app/Interruption.h"
 #include "sbsim/app/OutputFile.h"
 #include "sbsim/app/ProgressDisplay.h"
@@ -75,6 +76,11 @@ int runSimulation(const CommandLine& cl) {
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
     std::optional<OutputFile> sumoLog;
     if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
+    std::optional<GuiWatch> gui;
+    if (cl.gui) {
+        GuiWatch::requireDisplay();
+        gui.emplace(cl.guiScreenshots, files);
+    }
     Interruption::checkpoint("before SUMO loaded");
 
     traffic::SumoSettings settings;
@@ -85,6 +91,10 @@ int runSimulation(const CommandLine& cl) {
     settings.quiet = cl.quiet;
     settings.warningsShown = cl.verbose ? SIZE_MAX : kWarningsShown;
     settings.readVehicles = !cl.noSnapshot;
+    settings.gui = cl.gui;
+    if (cl.gui) settings.beforeClose = &GuiWatch::wakeBeforeClose;
+    if (cl.guiDelay)
+        settings.extraOptions.insert(settings.extraOptions.end(), {"--delay", fmt::format("{:g}", *cl.guiDelay)});
 
     // Declared before the simulation so it outlives the stories' Python objects.
     std::optional<storyboard::PythonRuntime> python;
@@ -131,6 +141,13 @@ int runSimulation(const CommandLine& cl) {
         Interruption::checkpoint("while the story was being created");
         if (created == 0) fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
     }
+    if (gui) {
+        if (board != nullptr) {
+            board->paintStories();
+            gui->drawAreas(board->stories());
+        }
+        sim.subscribe(traffic::SumoBridge::stepSignal, *gui);
+    }
 
     services::ServiceManager* serviceManager = nullptr;
     services::Medium* medium = nullptr;
@@ -172,6 +189,7 @@ int runSimulation(const CommandLine& cl) {
         throw InputError(fmt::format("--services: {}", e.what()));
     }
     if (progress) progress->clear();
+    if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
@@ -205,11 +223,10 @@ int runSimulation(const CommandLine& cl) {
         if (Interruption::requested()) break;
         fmt::print(stderr, "sbsim: warning: --param {} was never read by the story or a service\n", name);
     }
-    if (Interruption::requested()) {
-        fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());
-        return 130;  // the shell's convention for SIGINT
-    }
-    return 0;
+    const int exitCode = Interruption::requested() ? 130 : 0;  // 130: the shell's convention for SIGINT
+    if (Interruption::requested()) fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());
+    if (gui) GuiWatch::closeWithin(sumo, std::chrono::seconds(10), exitCode);
+    return exitCode;
 }
 
 }  // namespace sbsim::app

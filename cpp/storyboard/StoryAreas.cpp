@@ -1,6 +1,8 @@
 #include "sbsim/storyboard/StoryAreas.h"
 
+#include <cmath>
 #include <functional>
+#include <numbers>
 #include <set>
 
 #include "sbsim/storyboard/conditions/DistanceCondition.h"
@@ -26,5 +28,16 @@ std::vector<StoryArea> conditionAreas(const Condition& root) {
 }
 
 std::vector<StoryArea> storyAreas(const Story& story) { return conditionAreas(story.condition()); }
+
+std::vector<Eigen::Vector2d> outline(const StoryArea& area, int circleVertices) {
+    if (!area.radius) return area.points;
+    std::vector<Eigen::Vector2d> out;
+    out.reserve(static_cast<std::size_t>(circleVertices));
+    for (int k = 0; k < circleVertices; ++k) {
+        const double a = 2 * std::numbers::pi * k / circleVertices;
+        out.push_back(area.points.front() + *area.radius * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    }
+    return out;
+}
 
 }  // namespace sbsim::storyboard

@@ -27,5 +27,8 @@ struct SBSIM_API StoryArea {
 SBSIM_API std::vector<StoryArea> conditionAreas(const Condition& root);
 /// The areas of a story's condition tree (see conditionAreas).
 SBSIM_API std::vector<StoryArea> storyAreas(const Story& story);
+/// The area as a polygon: its vertices, or a circle as `circleVertices` points on it (what SUMO,
+/// which has no circles, draws).
+SBSIM_API std::vector<Eigen::Vector2d> outline(const StoryArea& area, int circleVertices = 36);
 
 }  // namespace sbsim::storyboard

@@ -7,7 +7,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sbsim/storyboard/StoryPalette.h"
 #include "sbsim/storyboard/StoryboardSignal.h"
+#include "sbsim/storyboard/effects/ColorEffect.h"
 #include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::storyboard {
@@ -296,12 +298,21 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
     ++story.activeVehicles_;
     if (log_ != nullptr) log_->activate(now_, story.name(), id);
     Scope scope(*this, state, story, id, &result, &snapshot);
-    for (const EffectPtr& effect : story.effects()) {
-        const EffectStack::Token token = nextToken_++;
-        scope.setToken(token);
-        effect->apply(scope);
-        state.applied[s].push_back({effect.get(), token});
-    }
+    // Removed in reverse order like the effects, so the paint goes last.
+    if (paintStories_) applyEffect(scope, state.applied[s], paintOf(s));
+    for (const EffectPtr& effect : story.effects()) applyEffect(scope, state.applied[s], *effect);
+}
+
+void Storyboard::applyEffect(Scope& scope, std::vector<AppliedEffect>& applied, Effect& effect) {
+    const EffectStack::Token token = nextToken_++;
+    scope.setToken(token);
+    effect.apply(scope);
+    applied.push_back({&effect, token});
+}
+
+Effect& Storyboard::paintOf(std::size_t story) {
+    while (paints_.size() <= story) paints_.push_back(std::make_unique<ColorEffect>(storyColour(paints_.size())));
+    return *paints_[story];
 }
 
 void Storyboard::deactivate(VehicleState& state, std::size_t s, const std::string& id) {

@@ -64,6 +64,12 @@ public:
     /// (--storyboard-equipped-only); by default they see every vehicle.
     void seeEquippedOnly(const traffic::Penetration& penetration) { equippedOnly_ = penetration; }
     kernel::SimTime warmupEndTime() const { return warmupEnd_; }
+    /// Shows which story acts on a vehicle (`sbsim --gui`): while a story is active on a vehicle,
+    /// the vehicle takes the story's colour (storyColour of its registration index). The colour is
+    /// applied before the story's own effects, as one more colour effect on the vehicle's stack,
+    /// so a ColorEffect of the story wins over it, the latest activated story's colour wins among
+    /// stories, and the vehicle's own colour comes back when none is active.
+    void paintStories() { paintStories_ = true; }
 
     void registerStory(StoryPtr story);
     const std::vector<StoryPtr>& stories() const { return stories_; }
@@ -114,6 +120,8 @@ private:
                   const traffic::VehicleSnapshot& snapshot);
     void deactivate(VehicleState& state, std::size_t story, const std::string& id);
     void collectConditions(Condition& root);
+    void applyEffect(Scope& scope, std::vector<AppliedEffect>& applied, Effect& effect);
+    Effect& paintOf(std::size_t story);
 
     EventLog* log_;
     traffic::SumoBridge* bridge_ = nullptr;  // the attached SUMO, told what the stories read
@@ -144,7 +152,9 @@ private:
     std::map<std::string, std::uint64_t, std::less<>> signalsByCause_;
     kernel::SimTime warmupEnd_;
     std::optional<traffic::Penetration> equippedOnly_;
-    traffic::VehicleSnapshot equippedView_;  // the equipped vehicles of the step, with equippedOnly_
+    bool paintStories_ = false;
+    std::vector<std::unique_ptr<Effect>> paints_;  // per story, made on first activation (paintStories)
+    traffic::VehicleSnapshot equippedView_;        // the equipped vehicles of the step, with equippedOnly_
     std::vector<traffic::VehicleSnapshot::Index> equippedScratch_;
 };
 

@@ -89,7 +89,14 @@ void SumoBridge::load() {
     if (settings_.quiet) defaultOption(args, "--no-warnings", "true");
     args.insert(args.end(), extra.begin(), extra.end());
 
-    if (const auto failure = capturingErrors(capture_, warnings_, [&] { libsumo::Simulation::load(args); })) {
+    const auto start = [&] {
+        if (!settings_.gui) return libsumo::Simulation::load(args);
+        // libsumo opens its GUI when the program name is sumo-gui; stepping and the API stay the same.
+        std::vector<std::string> command{"sumo-gui"};
+        command.insert(command.end(), args.begin(), args.end());
+        libsumo::Simulation::start(command);
+    };
+    if (const auto failure = capturingErrors(capture_, warnings_, start)) {
         throw SumoLoadError(*failure);
     }
     loaded_ = true;
@@ -201,6 +208,7 @@ void SumoBridge::close() {
     if (!loaded_) return;
     loaded_ = false;
     try {
+        if (settings_.beforeClose) settings_.beforeClose();
         libsumo::Simulation::close();
     } catch (const std::exception&) {
         // Closing is best effort: SUMO may already have shut down after a fatal error.

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,11 @@ struct SBSIM_API SumoSettings {
     /// False: step SUMO without reading vehicle states (the snapshot keeps only ids) — a
     /// baseline that shows libsumo's own cost against the sumo binary.
     bool readVehicles = true;
+    /// Start SUMO's GUI (sumo-gui inside this process, libsumo's GUI) instead of plain SUMO; an
+    /// X display must be reachable, or FOX ends the process.
+    bool gui = false;
+    /// Called right before SUMO is closed (sbsim --gui wakes the GUI's event loop there).
+    std::function<void()> beforeClose;
 };
 
 /// An error SUMO reported, as one line: its exception's message, or the "Error:" lines it printed
@@ -100,8 +106,10 @@ public:
     SumoWarnings& warnings() { return warnings_; }
     const SumoWarnings& warnings() const { return warnings_; }
 
-private:
+    /// Closes SUMO now (the destructor does otherwise); nothing after this may ask SUMO anything.
     void close();
+
+private:
     void checkTimes(double begin, double end);
     void step();
     void scheduleNextStep();
