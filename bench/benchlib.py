@@ -74,7 +74,7 @@ def alternate(commands: dict[str, Sequence[str]], runs: int) -> dict[str, list[R
         for name, cmd in commands.items():
             r = timed(cmd)
             results[name].append(r)
-            print(f"  run {i + 1}/{runs} {name:<22} wall {r.wall:7.2f} s  cpu {r.cpu:7.2f} s", flush=True)
+            print(f"  run {i + 1}/{runs} {name:<28} wall {r.wall:7.2f} s  cpu {r.cpu:7.2f} s", flush=True)
     return results
 
 

@@ -8,6 +8,7 @@ prints medians and the ratio. Target: sbsim at most 1.05x sumo's wall time.
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from benchlib import PRELOADS, alternate, median, paired_ratio, preloaded, sbsim, scenario, summary_value, sumo
 
@@ -20,7 +21,9 @@ def main() -> None:
     parser.add_argument(
         "--preload", nargs="*", default=[], choices=sorted(PRELOADS), help="also run sbsim with these allocators"
     )
-    parser.add_argument("--compare", metavar="EXE", help="also run this other sbsim executable (e.g. an older build)")
+    parser.add_argument(
+        "--compare", nargs="*", default=[], metavar="EXE", help="also run these other sbsim executables (older builds)"
+    )
     args = parser.parse_args()
 
     cfg = str(scenario(args.preset))
@@ -34,15 +37,15 @@ def main() -> None:
     }
     for allocator in args.preload:
         commands[f"sbsim + {allocator}"] = preloaded(allocator, commands["sbsim"])
-    if args.compare:
-        commands["sbsim (--compare)"] = [args.compare, "--sumocfg", cfg, "--end", end]
+    for exe in args.compare:
+        commands[f"sbsim {Path(exe).name}"] = [exe, "--sumocfg", cfg, "--end", end]
     print(f"{args.preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
     results = alternate(commands, args.runs)
 
     base_wall = median([r.wall for r in results["sumo"]])
     base_cpu = median([r.cpu for r in results["sumo"]])
     print(
-        f"\n{'command':<22} {'median wall':>12} {'ratio':>7} {'per round (min-max)':>22} "
+        f"\n{'command':<28} {'median wall':>12} {'ratio':>7} {'per round (min-max)':>22} "
         f"{'median cpu':>11} {'ratio':>7} {'peak RSS':>9}"
     )
     for name, runs in results.items():
@@ -51,7 +54,7 @@ def main() -> None:
         rss = max(r.rss_mb for r in runs)
         paired, low, high = paired_ratio(results, name)
         print(
-            f"{name:<22} {wall:10.2f} s {wall / base_wall:6.3f}x {paired:8.3f}x ({low:.3f}-{high:.3f}) "
+            f"{name:<28} {wall:10.2f} s {wall / base_wall:6.3f}x {paired:8.3f}x ({low:.3f}-{high:.3f}) "
             f"{cpu:9.2f} s {cpu / base_cpu:6.3f}x {rss:7.0f} MB"
         )
 

@@ -25,7 +25,9 @@ def main() -> None:
     parser.add_argument(
         "--preload", nargs="*", default=[], choices=sorted(PRELOADS), help="also run sbsim with these allocators"
     )
-    parser.add_argument("--compare", metavar="EXE", help="also run this other sbsim executable (e.g. an older build)")
+    parser.add_argument(
+        "--compare", nargs="*", default=[], metavar="EXE", help="also run these other sbsim executables (older builds)"
+    )
     args = parser.parse_args()
 
     rows = []
@@ -38,14 +40,14 @@ def main() -> None:
         commands = {"sumo": [sumo(), "-c", cfg, "--end", end], "sbsim + six stories": stories}
         for allocator in args.preload:
             commands[f"six stories + {allocator}"] = preloaded(allocator, stories)
-        if args.compare:
-            commands["six stories (--compare)"] = [args.compare, *stories[1:]]
+        for exe in args.compare:
+            commands[f"six stories {Path(exe).name}"] = [exe, *stories[1:]]
         results = alternate(commands, args.runs)
         for name in list(commands)[1:]:
             paired, low, high = paired_ratio(results, name)
             rss = max(r.rss_mb for r in results[name])
-            extras.append(f"{preset:<10} {name:<26} {paired:.3f}x ({low:.3f}-{high:.3f})  peak RSS {rss:.0f} MB")
-        extras.append(f"{preset:<10} {'sumo':<26} peak RSS {max(r.rss_mb for r in results['sumo']):.0f} MB")
+            extras.append(f"{preset:<10} {name:<28} {paired:.3f}x ({low:.3f}-{high:.3f})  peak RSS {rss:.0f} MB")
+        extras.append(f"{preset:<10} {'sumo':<28} peak RSS {max(r.rss_mb for r in results['sumo']):.0f} MB")
         story_runs = results["sbsim + six stories"]
         steps = summary_value(story_runs[0].stdout, "steps")
         # Vehicle-steps: the grids hold their full count after the 100 s ramp, so use the peak.

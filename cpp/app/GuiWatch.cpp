@@ -97,7 +97,9 @@ void GuiWatch::drawAreas(const std::vector<storyboard::StoryPtr>& stories) {
             const std::string id = fmt::format("sbsim:{}:{}", name, n);
             libsumo::Polygon::add(id + ":fill", shape, traciColour(colour, kFillAlpha), true, name,
                                   kFirstFillLayer - n);
-            // SUMO draws a polygon filled or as an outline, not both: the outline is a polygon of its own.
+            // SUMO draws a polygon filled or as an outline, not both: the outline is a polygon of its
+            // own, and an open line unless it ends where it starts.
+            if (!shape.value.empty()) shape.value.push_back(shape.value.front());
             libsumo::Polygon::add(id + ":outline", shape, traciColour(colour, 255), false, name, kFirstOutlineLayer + n,
                                   kOutlineWidth);
             ++n;
