@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sbsim::traffic {
 
@@ -41,15 +42,20 @@ public:
     /// The columns read per step (the others are read at departure).
     constexpr SnapshotColumns perStep() const { return SnapshotColumns(bits_ & kPerStepBits); }
 
-    /// "position|speed", in declaration order ("none" for none); for messages and tests.
-    std::string str() const {
-        static constexpr const char* kNames[] = {"position", "speed", "angle", "acceleration",
-                                                 "lane",     "size",  "type",  "max_speed"};
-        std::string out;
+    /// The columns' names ("position", "max_speed"), in declaration order.
+    std::vector<std::string_view> names() const {
+        std::vector<std::string_view> out;
         for (std::uint32_t k = 0; k < 8; ++k) {
-            if ((bits_ & (1u << k)) == 0) continue;
+            if ((bits_ & (1u << k)) != 0) out.emplace_back(kNames[k]);
+        }
+        return out;
+    }
+    /// "position|speed" ("none" for none); for messages and tests.
+    std::string str() const {
+        std::string out;
+        for (const std::string_view name : names()) {
             if (!out.empty()) out += '|';
-            out += kNames[k];
+            out += name;
         }
         return out.empty() ? "none" : out;
     }

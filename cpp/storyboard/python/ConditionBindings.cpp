@@ -83,19 +83,7 @@ void bindConditions(py::module_& m) {
         .def(py::init<>())
         // A subclass's own `columns` (a class attribute) shadows this, and PythonCondition reads it.
         .def_property_readonly(
-            "columns",
-            [](const Condition& c) {
-                const std::string names = c.columns().str();
-                std::vector<std::string> out;
-                if (!c.columns().empty()) {
-                    for (std::size_t at = 0; at <= names.size();) {
-                        const std::size_t bar = std::min(names.find('|', at), names.size());
-                        out.push_back(names.substr(at, bar - at));
-                        at = bar + 1;
-                    }
-                }
-                return py::tuple(py::cast(out));
-            },
+            "columns", [](const Condition& c) { return py::tuple(py::cast(c.columns().names())); },
             "The snapshot columns this condition reads (its children declare their own).")
         .doc() =
         "Base of custom conditions: override test(self, vehicle) -> bool | set[str], or the "

@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "StoryboardTestSupport.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/StoryAreas.h"
 #include "sbsim/storyboard/StoryPalette.h"
@@ -68,12 +69,7 @@ TEST(StoryPalette, TenDistinctColoursInMatplotlibsOrderThenRepeats) {
     EXPECT_FALSE(seen.contains(rgba(kOwn)));
 }
 
-VehicleSnapshot::Vehicle car(std::string id, double speed) {
-    VehicleSnapshot::Vehicle v;
-    v.id = std::move(id);
-    v.speed = speed;
-    return v;
-}
+using test::car;
 
 class StoryPaintTest : public testing::Test {
 protected:

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "StoryboardTestSupport.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Storyboard.h"
@@ -57,12 +58,7 @@ private:
     Commands& log_;
 };
 
-VehicleSnapshot::Vehicle car(std::string id, double speed) {
-    VehicleSnapshot::Vehicle v;
-    v.id = std::move(id);
-    v.speed = speed;
-    return v;
-}
+using test::car;
 
 class SignalProbe : public kernel::Listener {
 public:

@@ -32,6 +32,9 @@ inline Vehicle car(std::string id, double x, double y, double speed = 0, double 
     return v;
 }
 
+/// A vehicle that matters only for its speed (m/s), at the origin.
+inline Vehicle car(std::string id, double speed) { return car(std::move(id), 0, 0, speed); }
+
 /// One step as the board sees it: a snapshot built by hand and its neighbour grid.
 class Scene {
 public:
