@@ -1,25 +1,37 @@
-"""Storyboard benchmark: the six-story set (bench/stories/six_stories.py) against plain `sumo` on
-grids with 1,000 to 20,000 running vehicles. Prints, per grid, medians of interleaved runs, the
-wall-time ratio, and the storyboard's own time per step and per vehicle-step (which should stay
-flat if the storyboard's time grows linearly with the number of vehicles).
-Targets: at most 1.10x sumo at 5,000 vehicles, 1.15x at 20,000.
+"""Storyboard benchmark: story sets against plain `sumo` on grids with 1,000 to 20,000 running
+vehicles. The sets: `six` (bench/stories/six_stories.py, one story per kind of work the storyboard
+does each step) and `logic` (bench/stories/logic_stories.py: Hold, Not, Headway, Distance). Prints,
+per grid and set, medians of interleaved runs, the wall-time ratio, and the storyboard's own time
+per step and per vehicle-step (which should stay flat if the storyboard's time grows linearly with
+the number of vehicles).
+Targets for the six-story set: at most 1.10x sumo at 5,000 vehicles, 1.12x at 20,000.
 
-    .venv/bin/python bench/storyboard.py [--presets bench1k bench5k bench20k] [--end 300] [--runs 3]
+    PYTHONPATH=python .venv/bin/python bench/storyboard.py [--presets bench1k bench5k bench20k]
+        [--sets six logic] [--end 300] [--runs 3]
 """
 
 from __future__ import annotations
 
 import argparse
+import re
 from pathlib import Path
 
 from benchlib import PRELOADS, alternate, median, paired_ratio, preloaded, sbsim, scenario, summary_value, sumo
 
-STORY = Path(__file__).resolve().parent / "stories" / "six_stories.py"
+STORIES = Path(__file__).resolve().parent / "stories"
+SETS = {"six": STORIES / "six_stories.py", "logic": STORIES / "logic_stories.py"}
+
+
+def tenth_vehicle(cfg: Path) -> str:
+    """The id of the routes file's 11th vehicle (the logic set's Distance target; ids differ by grid)."""
+    ids = re.findall(r'<vehicle id="([^"]+)"', (cfg.parent / "routes.rou.xml").read_text())
+    return ids[10]
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--presets", nargs="+", default=["bench1k", "bench5k", "bench20k"])
+    parser.add_argument("--sets", nargs="+", default=list(SETS), choices=list(SETS), help="story sets (default all)")
     parser.add_argument("--end", type=float, default=300.0, help="simulated seconds (default 300)")
     parser.add_argument("--runs", type=int, default=3, help="runs per command (default 3)")
     parser.add_argument(
@@ -34,45 +46,52 @@ def main() -> None:
     extras: list[str] = []  # per command: ratio to sumo round by round, peak RSS
     for preset in args.presets:
         cfg = str(scenario(preset))
+        parameters = {"six": [], "logic": ["--param", f"target={tenth_vehicle(Path(cfg))}"]}
         end = repr(args.end)
         print(f"{preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
-        stories = [sbsim(), "--sumocfg", cfg, "--end", end, "--story", str(STORY)]
-        commands = {"sumo": [sumo(), "-c", cfg, "--end", end], "sbsim + six stories": stories}
+        sets = {
+            f"sbsim + {name}": [sbsim(), "--sumocfg", cfg, "--end", end, "--story", str(SETS[name]), *parameters[name]]
+            for name in args.sets
+        }
+        commands = {"sumo": [sumo(), "-c", cfg, "--end", end], **sets}
+        first = next(iter(sets.values()))  # the extra builds and allocators run the first set
         for allocator in args.preload:
-            commands[f"six stories + {allocator}"] = preloaded(allocator, stories)
+            commands[f"{args.sets[0]} + {allocator}"] = preloaded(allocator, first)
         for exe in args.compare:
-            commands[f"six stories {Path(exe).name}"] = [exe, *stories[1:]]
+            commands[f"{args.sets[0]} {Path(exe).name}"] = [exe, *first[1:]]
         results = alternate(commands, args.runs)
         for name in list(commands)[1:]:
             paired, low, high = paired_ratio(results, name)
             rss = max(r.rss_mb for r in results[name])
             extras.append(f"{preset:<10} {name:<28} {paired:.3f}x ({low:.3f}-{high:.3f})  peak RSS {rss:.0f} MB")
         extras.append(f"{preset:<10} {'sumo':<28} peak RSS {max(r.rss_mb for r in results['sumo']):.0f} MB")
-        story_runs = results["sbsim + six stories"]
-        steps = summary_value(story_runs[0].stdout, "steps")
-        # Vehicle-steps: the grids hold their full count after the 100 s ramp, so use the peak.
-        running = summary_value(story_runs[0].stdout, "peak running")
-        board = median([summary_value(r.stdout, "time in storyboard") for r in story_runs])
-        reading = median([summary_value(r.stdout, "time reading vehicles") for r in story_runs])
-        rows.append(
-            (
-                preset,
-                running,
-                median([r.wall for r in results["sumo"]]),
-                median([r.wall for r in story_runs]),
-                1000 * board / steps,
-                1e6 * board / (steps * running),
-                1000 * reading / steps,
+        for name in sets:
+            story_runs = results[name]
+            steps = summary_value(story_runs[0].stdout, "steps")
+            # Vehicle-steps: the grids hold their full count after the 100 s ramp, so use the peak.
+            running = summary_value(story_runs[0].stdout, "peak running")
+            board = median([summary_value(r.stdout, "time in storyboard") for r in story_runs])
+            reading = median([summary_value(r.stdout, "time reading vehicles") for r in story_runs])
+            rows.append(
+                (
+                    preset,
+                    name.removeprefix("sbsim + "),
+                    running,
+                    median([r.wall for r in results["sumo"]]),
+                    median([r.wall for r in story_runs]),
+                    1000 * board / steps,
+                    1e6 * board / (steps * running),
+                    1000 * reading / steps,
+                )
             )
-        )
 
     print(
-        f"\n{'grid':<10} {'vehicles':>8} {'sumo':>9} {'sbsim':>9} {'ratio':>7} "
+        f"\n{'grid':<10} {'set':<6} {'vehicles':>8} {'sumo':>9} {'sbsim':>9} {'ratio':>7} "
         f"{'storyboard/step':>16} {'per vehicle-step':>17} {'reading/step':>13}"
     )
-    for preset, running, base, wall, per_step, per_vehicle, reading in rows:
+    for preset, story_set, running, base, wall, per_step, per_vehicle, reading in rows:
         print(
-            f"{preset:<10} {running:8.0f} {base:7.2f} s {wall:7.2f} s {wall / base:6.3f}x "
+            f"{preset:<10} {story_set:<6} {running:8.0f} {base:7.2f} s {wall:7.2f} s {wall / base:6.3f}x "
             f"{per_step:13.2f} ms {per_vehicle:14.3f} us {reading:10.2f} ms"
         )
     print("\nratio to sumo per round, median (min-max), and peak RSS:")

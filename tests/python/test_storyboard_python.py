@@ -209,6 +209,32 @@ def test_pythonic_helpers_and_aliases(trips_cfg: Path, tmp_path: Path) -> None:
     assert set(run.activated("any")) == {"veh2", "veh3"}
 
 
+REGISTER = "storyboard.Story(storyboard.CarSetCondition('veh1'), [storyboard.StopEffect()], name='ok')"
+
+
+@pytest.mark.parametrize(
+    "create",
+    [
+        f"def createStories():\n    board.registerStory({REGISTER})",  # Artery: the module-level board
+        f"def createStories(b):\n    b.registerStory({REGISTER})",
+        f"def createStories(*args):\n    args[0].registerStory({REGISTER})",
+        f"def createStories(b=None, *, k=1):\n    b.registerStory({REGISTER})",
+        f"class Create:\n    def __call__(self, b):\n        b.registerStory({REGISTER})\ncreateStories = Create()",
+    ],
+)
+def test_create_stories_is_given_the_board_when_it_takes_a_parameter(
+    create: str, trips_cfg: Path, tmp_path: Path
+) -> None:
+    run = run_story(trips_cfg, f"import storyboard\n{create}\n", tmp_path, end=10)
+    assert run.activated("ok") == ["veh1"]
+
+
+def test_create_stories_taking_only_keywords_is_a_clear_error(trips_cfg: Path, tmp_path: Path) -> None:
+    run = run_story(trips_cfg, "def createStories(**kw):\n    pass\n", tmp_path, end=10, check=False)
+    assert run.returncode == 2
+    assert "TypeError" in run.result.stderr and "story.py" in run.result.stderr
+
+
 def test_a_condition_declaring_its_columns_reads_those_and_no_others(trips_cfg: Path, tmp_path: Path) -> None:
     # The snapshot reads only what the conditions declared: a declared column is there, another
     # one is a clear error (not a stale value), a wrong declaration is bad input.

@@ -10,6 +10,23 @@ namespace fs = std::filesystem;
 
 namespace sbsim::storyboard {
 
+namespace {
+
+/// How many parameters `f` declares, as len(inspect.signature(f).parameters). A plain function's
+/// code object says it without importing inspect (and with it ast, dis, re, tokenize: 0.8 MB
+/// resident that a run would carry to its end); other callables ask inspect.
+std::size_t parameterCount(const py::object& f) {
+    if (PyFunction_Check(f.ptr())) {
+        const auto* code = reinterpret_cast<PyCodeObject*>(PyFunction_GetCode(f.ptr()));
+        const int flags = code->co_flags;
+        return static_cast<std::size_t>(code->co_argcount + code->co_kwonlyargcount + ((flags & CO_VARARGS) ? 1 : 0) +
+                                        ((flags & CO_VARKEYWORDS) ? 1 : 0));
+    }
+    return py::len(py::module_::import("inspect").attr("signature")(f).attr("parameters"));
+}
+
+}  // namespace
+
 StoryScript::StoryScript(PythonRuntime& python, const fs::path& script, Storyboard& board, const CanvasFrame& frame)
     : script_(fs::absolute(script)), board_(board), frame_(frame), python_(python) {
     ScriptContext& context = ScriptContext::current();
@@ -37,8 +54,7 @@ std::size_t StoryScript::createStories() {
             throw StoryError(script_.string() + ": the script defines no createStories(board) function");
         }
         const py::object create = module.attr("createStories");
-        const py::object signature = py::module_::import("inspect").attr("signature")(create);
-        if (py::len(signature.attr("parameters")) == 0) {
+        if (parameterCount(create) == 0) {
             create();
         } else {
             create(boardHandle);
