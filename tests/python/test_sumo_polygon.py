@@ -7,8 +7,16 @@ import shutil
 from pathlib import Path
 
 import pytest
-from sbsim_helpers import StoryRun, active_timeline, assert_no_crash, run_story, write_story
-from storyboard.runner import run
+from sbsim_helpers import (
+    STORIES,
+    StoryRun,
+    active_timeline,
+    assert_no_crash,
+    read_fcd,
+    run_story,
+    write_story,
+)
+from storyboard.runner import read_events, run
 
 LIMIT = 13.89  # the grid's speed limit (make_grid's default)
 STEP = 1.0
@@ -103,3 +111,32 @@ def test_check_reads_the_polygon(polygon_cfg: Path, tmp_path: Path) -> None:
     assert_no_crash(result)
     assert result.returncode == 0, result.stderr
     assert "PolygonCondition(4 points, SUMO frame: (190, 190) (410, 190) (410, 410) (190, 410))" in result.stdout
+
+
+def test_the_weather_front_story_slows_the_vehicles_under_the_front(tmp_path: Path) -> None:
+    folder = STORIES / "weather-front"
+    events, fcd_path = tmp_path / "ev.jsonl", tmp_path / "fcd.xml"
+    result = run(
+        folder / "weather-front.sumocfg",
+        story=folder / "story.py",
+        events=events,
+        end=220,
+        sumo_options=[f"--fcd-output {fcd_path}", "--precision 6"],
+        timeout=120,
+    )
+    assert_no_crash(result)
+    assert result.returncode == 0, result.stderr
+    log = read_events(events)
+    assert min(e["t"] for e in log) == 150  # the front arrives
+    fcd = read_fcd(fcd_path)
+    timeline = active_timeline(log, "weather-front", fcd.times)
+    checked = 0
+    for t in fcd.times:
+        for v in fcd.running[t]:
+            x, y = fcd.pos[v][t]
+            assert (v in timeline[t]) == (t >= 150 and 700 < x + y < 1100), f"{v} at {t}: {(x, y)}"
+        earlier = [timeline.get(round(t - k * STEP, 3), frozenset()) for k in (1, 2, 3, 4, 5)]
+        for v in frozenset.intersection(*earlier, timeline[t]):
+            assert fcd.speed[v][t] <= 0.5 * LIMIT + 0.01, f"{v} at {t}: {fcd.speed[v][t]} m/s under the front"
+            checked += 1
+    assert checked > 500
