@@ -7,6 +7,9 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "sbsim/storyboard/geometry/PathCurvature.h"
 
 namespace sbsim::storyboard {
 
@@ -25,16 +28,51 @@ TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(d
 
 void TtcCondition::prepare(const EvaluationContext& ctx) { computeMovers(ctx.snapshot()); }
 
+void TtcCondition::Poses::erase(std::string_view id) {
+    const auto it = std::lower_bound(ids.begin(), ids.end(), id);
+    if (it == ids.end() || *it != id) return;
+    const auto k = it - ids.begin();
+    ids.erase(it);
+    fronts.erase(fronts.begin() + k);
+    angles.erase(angles.begin() + k);
+}
+
+void TtcCondition::forget(std::string_view vehicleId) {
+    current_.erase(vehicleId);
+    previous_.erase(vehicleId);
+}
+
+std::size_t TtcCondition::heldVehicles() const { return std::max(current_.ids.size(), previous_.ids.size()); }
+
 void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
+    if (currentTime_ != snapshot.time()) {
+        std::swap(previous_, current_);
+        currentTime_ = snapshot.time();
+    }
     const VehicleIndex n = snapshot.size();
+    const auto count = static_cast<std::size_t>(n);
+    current_.ids = snapshot.ids();  // reuses the strings' buffers
+    current_.fronts.resize(count);
+    current_.angles.resize(count);
     movers_.clear();
-    movers_.reserve(static_cast<std::size_t>(n));
+    movers_.reserve(count);
     circles_.clear();
-    circles_.reserve(static_cast<std::size_t>(n));
+    circles_.reserve(count);
+    std::size_t p = 0;  // both id lists ascend: one merge pass finds each vehicle's previous pose
     for (VehicleIndex i = 0; i < n; ++i) {
-        movers_.emplace_back(Footprint::fromSumo(snapshot.positions().col(i), snapshot.angles()[i],
-                                                 snapshot.lengths()[i], snapshot.widths()[i]),
-                             snapshot.speeds()[i]);
+        const auto k = static_cast<std::size_t>(i);
+        const Eigen::Vector2d front = snapshot.positions().col(i);
+        const double angle = snapshot.angles()[i];
+        const double speed = snapshot.speeds()[i];
+        current_.fronts[k] = front;
+        current_.angles[k] = angle;
+        while (p < previous_.ids.size() && previous_.ids[p] < current_.ids[k]) ++p;
+        const double curvature =
+            p < previous_.ids.size() && previous_.ids[p] == current_.ids[k]
+                ? geometry::PathCurvature::of(previous_.fronts[p], previous_.angles[p], front, angle, speed)
+                : 0.0;
+        movers_.emplace_back(Footprint::fromSumo(front, angle, snapshot.lengths()[i], snapshot.widths()[i]), speed,
+                             curvature);
         circles_.push_back(movers_.back().circle);
     }
     stamp_ = SnapshotStamp::of(snapshot);
@@ -62,7 +100,12 @@ bool TtcCondition::mayConflict(const MovingCircle& a, const MovingCircle& b, dou
     // Beyond the last sample time, ceil(ttc/dt)·dt < ttc + dt: the circles must meet before that.
     const double dt = std::min(a.sampleStep, b.sampleStep);
     if (!(dt > 0 && std::isfinite(dt)) || !(ttc > 0)) return false;  // both standing, or zero length
-    return mayMeet(a, b, (ttc + dt) * (1 + 1e-12));
+    const double horizon = (ttc + dt) * (1 + 1e-12);
+    if (a.curvature == 0 && b.curvature == 0) return mayMeet(a, b, horizon);
+    // On a bend a centre still stays within speed·t of where it starts (an arc is no shorter
+    // than its chord).
+    const double reach = a.radius + b.radius + 1e-4 + (a.velocity.norm() + b.velocity.norm()) * horizon;
+    return !((b.centre - a.centre).squaredNorm() > reach * reach);
 }
 
 bool TtcCondition::conflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
@@ -72,6 +115,7 @@ bool TtcCondition::conflict(const MovingFootprint& ma, const MovingFootprint& mb
 
 bool TtcCondition::sampledConflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
     if (std::isnan(ma.speed) || std::isnan(mb.speed)) return false;
+    if (ma.curvature != 0 || mb.curvature != 0) return sampledCurvedConflict(ma, mb, ttc);
     const Footprint& a = ma.footprint;
     const Footprint& b = mb.footprint;
     const double dt = std::min(ma.circle.sampleStep, mb.circle.sampleStep);
@@ -111,6 +155,27 @@ bool TtcCondition::sampledConflict(const MovingFootprint& ma, const MovingFootpr
     for (std::int64_t i = first; i <= last; ++i) {
         const double t = static_cast<double>(i) * dt;
         if (overlaps(a.movedFor(ma.speed, t), b.movedFor(mb.speed, t))) return true;
+    }
+    return false;
+}
+
+bool TtcCondition::sampledCurvedConflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
+    const double dt = std::min(ma.circle.sampleStep, mb.circle.sampleStep);
+    const double lastStep = std::min(std::ceil(ttc / dt), 1e15);
+    // The centres close in by at most the sum of the speeds (chord <= arc): the samples before
+    // the holding circles can first touch are skipped; each later one is tested circle first.
+    const double reach = ma.circle.radius + mb.circle.radius + 1e-4;
+    const double closing = std::abs(ma.speed) + std::abs(mb.speed);
+    const double gap = (mb.footprint.centre() - ma.footprint.centre()).norm() - reach;
+    const double firstCandidate = std::max(1.0, std::floor(gap / closing / dt));
+    if (!(firstCandidate <= lastStep)) return false;
+    const auto first = static_cast<std::int64_t>(firstCandidate);
+    const auto last = static_cast<std::int64_t>(lastStep);
+    for (std::int64_t i = first; i <= last; ++i) {
+        const double t = static_cast<double>(i) * dt;
+        const Footprint a = ma.at(t);
+        const Footprint b = mb.at(t);
+        if (!((b.centre() - a.centre()).squaredNorm() > reach * reach) && overlaps(a, b)) return true;
     }
     return false;
 }

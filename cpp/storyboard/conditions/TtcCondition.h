@@ -1,6 +1,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "sbsim/storyboard/Condition.h"
@@ -11,10 +13,15 @@
 namespace sbsim::storyboard {
 
 /// The set of other vehicles within `distance` m (position to position, inclusive) that the ego
-/// would hit within `ttc` seconds if both kept driving straight at constant speed (Artery's
-/// straight-line case): the two footprints are compared at t = i·dt, i = 1..ceil(ttc/dt), with dt the
-/// shorter of length/speed of the two (a standing vehicle does not count), so consecutive samples
-/// leave no gap. Touching counts as hitting; two standing vehicles never conflict.
+/// would hit within `ttc` seconds if both kept driving at constant speed, as in Artery: straight
+/// on, or along a circle for a vehicle on a bend. The two footprints are compared at t = i·dt,
+/// i = 1..ceil(ttc/dt), with dt the shorter of length/speed of the two (a standing vehicle does not
+/// count), so consecutive samples leave no gap. Touching counts as hitting; two standing vehicles
+/// never conflict.
+///
+/// A vehicle's bend is the curvature geometry::PathCurvature finds between its pose in the
+/// previous snapshot this condition saw and its pose now (none in its first step); its
+/// footprint's centre then follows the circle of that curvature, the heading turning with it.
 class TtcCondition : public Condition {
 public:
     /// Throws std::invalid_argument unless ttc > 0 and distance >= 0, both finite.
@@ -26,6 +33,8 @@ public:
     }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
+    void forget(std::string_view vehicleId) override;
+    std::size_t heldVehicles() const override;
     std::optional<double> neighbourRadius() const override { return distance_; }
 
     double ttc() const { return ttc_; }
@@ -33,7 +42,8 @@ public:
 
     /// Whether `a` at `speedA` and `b` at `speedB` (m/s, along their headings) overlap at one of
     /// the sample times above. Equal to testing every sample, but only the samples near the time
-    /// interval where the moving rectangles can overlap (found per separating axis) are tested.
+    /// interval where the moving rectangles can overlap (found per separating axis) are tested
+    /// (when both drive straight; with a bend, the samples after the two could first meet).
     static bool conflict(const geometry::Footprint& a, double speedA, const geometry::Footprint& b, double speedB,
                          double ttc);
     static bool conflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b, double ttc);
@@ -41,18 +51,38 @@ public:
     /// conflict() is false as well.
     static bool mayConflict(const geometry::MovingCircle& a, const geometry::MovingCircle& b, double ttc);
 
+    /// test() keeps no state; prepare() keeps the poses for the next step's curvatures.
     bool pure() const override { return true; }
+
+    /// The curvature (1/m) vehicle `i` of the last prepared snapshot is predicted to drive on.
+    double curvature(VehicleIndex i) const { return movers_[static_cast<std::size_t>(i)].curvature; }
 
 private:
     /// conflict() for a pair that passed mayConflict(): the samples near the possible overlap.
     static bool sampledConflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b, double ttc);
+    /// sampledConflict() when one of the two is on a bend.
+    static bool sampledCurvedConflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b,
+                                      double ttc);
     void computeMovers(const traffic::VehicleSnapshot& snapshot);
+
+    /// The front bumper poses of one snapshot, by vehicle id in ascending order.
+    struct Poses {
+        std::vector<std::string> ids;
+        std::vector<Eigen::Vector2d> fronts;
+        std::vector<double> angles;  // SUMO degrees
+        void erase(std::string_view id);
+    };
 
     double ttc_;
     double distance_;
     SnapshotStamp stamp_;
     std::vector<geometry::MovingFootprint> movers_;  // per vehicle of the step
     std::vector<geometry::MovingCircle> circles_;    // the same, compact
+    // The poses of the last snapshot seen and of the one before it (an earlier time): a snapshot
+    // seen again at the same time compares with the same previous poses.
+    std::optional<kernel::SimTime> currentTime_;
+    Poses current_;
+    Poses previous_;
 };
 
 }  // namespace sbsim::storyboard

@@ -22,6 +22,19 @@ Footprint Footprint::fromSumo(const Eigen::Vector2d& frontBumper, double sumoAng
     return {frontBumper - (0.5 * length) * heading, heading, length, width};
 }
 
+Footprint Footprint::turned(double distance, double curvature) const {
+    const double angle = curvature * distance;  // radians turned, counter-clockwise
+    const double sin = std::sin(angle);
+    const double halfSin = std::sin(0.5 * angle);
+    const Eigen::Vector2d left = -right();
+    Footprint f = *this;
+    // The exact circle: sin(κs)/κ along the heading, (1 - cos κs)/κ = 2 sin²(κs/2)/κ to the left
+    // (the half-angle form keeps precision on gentle curves, where 1 - cos κs cancels).
+    f.centre_ += (sin / curvature) * heading_ + (2 * halfSin * halfSin / curvature) * left;
+    f.heading_ = std::cos(angle) * heading_ + sin * left;
+    return f;
+}
+
 std::array<Eigen::Vector2d, 4> Footprint::corners() const {
     const Eigen::Vector2d l = halfLength_ * heading_;
     const Eigen::Vector2d w = halfWidth_ * right();

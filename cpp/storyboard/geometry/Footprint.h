@@ -39,6 +39,14 @@ public:
     }
     /// The footprint after `seconds` at constant `speed` (m/s) along the heading.
     Footprint movedFor(double speed, double seconds) const { return moved(speed * seconds); }
+    /// The footprint after driving `distance` m along the circular arc of signed `curvature`
+    /// (1/m, positive turning left, i.e. counter-clockwise; not 0) that starts at its centre
+    /// along its heading; the heading turns with the arc.
+    Footprint turned(double distance, double curvature) const;
+    /// The footprint after `seconds` at constant `speed` (m/s) along that arc.
+    Footprint turnedFor(double speed, double curvature, double seconds) const {
+        return turned(speed * seconds, curvature);
+    }
 
 private:
     Eigen::Vector2d centre_;

@@ -14,6 +14,7 @@ struct MovingCircle {
     Eigen::Vector2d velocity;  ///< m/s
     double radius;             ///< m
     double sampleStep;         ///< s to drive one own length; infinite when standing
+    double curvature;          ///< 1/m of the arc it drives on; 0: straight along `velocity`
 };
 
 /// Whether two moving circles come within touching distance at some t in [0, horizon]: the
@@ -33,18 +34,27 @@ inline bool mayMeet(const MovingCircle& a, const MovingCircle& b, double horizon
     return !((dd - reach2) * ww > dw * dw);  // the closest approach is dd - dw²/ww
 }
 
-/// A footprint driving straight on at constant speed, with what the time-to-collision test needs
-/// of it worked out once per step rather than once per pair.
+/// A footprint driving on at constant speed, straight or (curvature != 0) along a circular arc
+/// from its centre, with what the time-to-collision test needs of it worked out once per step
+/// rather than once per pair.
 struct MovingFootprint {
-    MovingFootprint(const Footprint& f, double speedAlongHeading)
+    MovingFootprint(const Footprint& f, double speedAlongHeading, double pathCurvature = 0)
         : footprint(f),
           speed(speedAlongHeading),
+          curvature(pathCurvature),
           circle{f.centre(), speedAlongHeading * f.heading(), std::hypot(f.halfLength(), f.halfWidth()),
                  speedAlongHeading != 0 ? 2 * f.halfLength() / std::abs(speedAlongHeading)
-                                        : std::numeric_limits<double>::infinity()} {}
+                                        : std::numeric_limits<double>::infinity(),
+                 pathCurvature} {}
+
+    /// The footprint after `seconds`.
+    Footprint at(double seconds) const {
+        return curvature == 0 ? footprint.movedFor(speed, seconds) : footprint.turnedFor(speed, curvature, seconds);
+    }
 
     Footprint footprint;
-    double speed;  ///< m/s along the heading (negative: backwards)
+    double speed;      ///< m/s along the heading (negative: backwards)
+    double curvature;  ///< 1/m, positive turning left; 0: straight
     MovingCircle circle;
 };
 

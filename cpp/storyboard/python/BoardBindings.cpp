@@ -9,6 +9,7 @@
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/ScriptContext.h"
+#include "sbsim/traffic/SumoPolygons.h"
 
 namespace py = pybind11;
 
@@ -152,6 +153,16 @@ void bindBoard(py::module_& m) {
         .def("convert_traci_position", convert, py::arg("x"), py::arg("y"))
         .def_property_readonly("stories", [](const BoardHandle& h) { return h.board().stories(); });
     m.def("_board", [] { return BoardHandle{}; });
+    // SUMO is loaded before any script runs (`sbsim check` too); an unknown id is a ValueError.
+    m.def(
+        "sumo_polygon",
+        [](const std::string& polyId) {
+            py::list points;
+            for (const Eigen::Vector2d& p : traffic::SumoPolygons::shape(polyId))
+                points.append(py::make_tuple(p.x(), p.y()));
+            return points;
+        },
+        py::arg("poly_id"));
 }
 
 }  // namespace sbsim::storyboard

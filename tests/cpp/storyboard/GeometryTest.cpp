@@ -1,10 +1,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "ThrownMessage.h"
 #include "sbsim/storyboard/geometry/Footprint.h"
+#include "sbsim/storyboard/geometry/MovingFootprint.h"
+#include "sbsim/storyboard/geometry/PathCurvature.h"
 #include "sbsim/storyboard/geometry/Polygon.h"
 
 namespace sbsim::storyboard::geometry {
@@ -118,6 +121,96 @@ TEST(Footprint, MovesAlongTheHeading) {
     EXPECT_EQ(f.moved(10).centre(), V(7.5, 0));
     EXPECT_EQ(f.movedFor(4, 2.5).frontBumper(), V(10, 0));
     EXPECT_EQ(f.moved(-2).frontBumper(), V(-2, 0));
+}
+
+TEST(Footprint, TurnsAlongTheCircle) {
+    constexpr double kPi = std::numbers::pi;
+    constexpr double kEps = 1e-12;
+    // Centre (50, 0) heading north, turning left on a circle of radius 50 around the origin: a
+    // quarter of it ends at (0, 50) heading west.
+    const Footprint f(V(50, 0), V(0, 1), 5, 2);
+    const Footprint quarter = f.turned(25 * kPi, 1.0 / 50);
+    EXPECT_NEAR(quarter.centre().x(), 0, kEps);
+    EXPECT_NEAR(quarter.centre().y(), 50, kEps);
+    EXPECT_NEAR(quarter.heading().x(), -1, kEps);
+    EXPECT_NEAR(quarter.heading().y(), 0, kEps);
+    EXPECT_EQ(quarter.halfLength(), 2.5);
+    EXPECT_EQ(quarter.halfWidth(), 1);
+    // Turning right (negative curvature) half round the circle about (100, 0): (150, 0), south.
+    const Footprint right = f.turned(50 * kPi, -1.0 / 50);
+    EXPECT_NEAR(right.centre().x(), 150, kEps);
+    EXPECT_NEAR(right.centre().y(), 0, kEps);
+    EXPECT_NEAR(right.heading().y(), -1, kEps);
+    // Any pose and arc: the centre is the start rotated about the circle's midpoint by κs and
+    // stays at radius 1/|κ|; the heading is the tangent there.
+    const V heading = Footprint::headingOf(-31);
+    const Footprint g(V(3, -7), heading, 4.5, 1.8);
+    for (const double curvature : {1.0 / 12, -1.0 / 80, 1.0 / 2400}) {
+        const V mid = g.centre() + (1 / curvature) * V(-heading.y(), heading.x());
+        for (const double s : {0.5, 7.0, 40.0}) {
+            const double a = curvature * s;
+            const V r = g.centre() - mid;
+            const V expected =
+                mid + V(std::cos(a) * r.x() - std::sin(a) * r.y(), std::sin(a) * r.x() + std::cos(a) * r.y());
+            const Footprint t = g.turned(s, curvature);
+            EXPECT_NEAR((t.centre() - expected).norm(), 0, 1e-9) << curvature << " " << s;
+            EXPECT_NEAR((t.centre() - mid).norm(), std::abs(1 / curvature), 1e-9);
+            EXPECT_NEAR(t.heading().dot(t.centre() - mid), 0, 1e-9);
+            EXPECT_NEAR(t.heading().norm(), 1, 1e-15);
+            const V rotated(std::cos(a) * heading.x() - std::sin(a) * heading.y(),
+                            std::sin(a) * heading.x() + std::cos(a) * heading.y());
+            EXPECT_NEAR((t.heading() - rotated).norm(), 0, 1e-15);
+        }
+    }
+    // A moving footprint with a curvature turns at its speed; without one it drives straight.
+    const MovingFootprint onBend(f, 10, 1.0 / 50);
+    EXPECT_NEAR((onBend.at(2.5 * kPi).centre() - V(0, 50)).norm(), 0, kEps);
+    const MovingFootprint straight(f, 10);
+    EXPECT_EQ(straight.at(3).centre(), f.movedFor(10, 3).centre());
+}
+
+TEST(PathCurvature, HeadingChangeWrapsIntoMinusPiToPi) {
+    constexpr double kDeg = std::numbers::pi / 180;
+    // SUMO angles run clockwise: 350° -> 10° turns right (negative), 10° -> 350° left.
+    EXPECT_NEAR(PathCurvature::headingChange(350, 10), -20 * kDeg, 1e-15);
+    EXPECT_NEAR(PathCurvature::headingChange(10, 350), 20 * kDeg, 1e-15);
+    EXPECT_NEAR(PathCurvature::headingChange(-5, 365), -10 * kDeg, 1e-15);
+    EXPECT_EQ(PathCurvature::headingChange(90, 90), 0);
+    EXPECT_EQ(PathCurvature::headingChange(0, 360), 0);
+    // A half turn is +pi either way: the interval is open at -pi.
+    EXPECT_EQ(PathCurvature::headingChange(0, 180), std::numbers::pi);
+    EXPECT_EQ(PathCurvature::headingChange(180, 0), std::numbers::pi);
+    EXPECT_EQ(PathCurvature::headingChange(90, 270), std::numbers::pi);
+    // Just past a half turn clockwise is just short of one counter-clockwise, and the other way.
+    EXPECT_NEAR(PathCurvature::headingChange(0, 180.000001), std::numbers::pi - 1e-6 * kDeg, 1e-12);
+    EXPECT_NEAR(PathCurvature::headingChange(0, 179.999999), -std::numbers::pi + 1e-6 * kDeg, 1e-12);
+}
+
+TEST(PathCurvature, HeadingChangeOverDistance) {
+    constexpr double kDeg = std::numbers::pi / 180;
+    // 10 m north, heading 0° -> 355°: 5° left over 10 m.
+    EXPECT_NEAR(PathCurvature::of(V(0, 0), 0, V(0, 10), 355, 10), 5 * kDeg / 10, 1e-15);
+    EXPECT_NEAR(PathCurvature::of(V(0, 0), 355, V(0, 10), 5, 10), -10 * kDeg / 10, 1e-15);
+    // The distance is the straight one between the two front bumpers.
+    EXPECT_NEAR(PathCurvature::of(V(1, 1), 90, V(4, 5), 80, 3), 10 * kDeg / 5, 1e-15);
+}
+
+TEST(PathCurvature, ThresholdsMeanStraight) {
+    const double bend = PathCurvature::of(V(0, 0), 0, V(0, 10), 355, 1);
+    EXPECT_GT(bend, 0);
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 0, V(0, 10), 355, 0.999), 0);  // too slow
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 0, V(0, 10), 355, 0), 0);
+    EXPECT_GT(PathCurvature::of(V(0, 0), 0, V(0, 0.01), 355, 5), 0);  // the shortest distance
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 0, V(0, 0.0099), 355, 5), 0);
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 0, V(0, 0), 355, 5), 0);
+    // A radius of 2500 m curves; 2600 m counts as straight.
+    const double degreesOver100m = [](double radius) { return 100 / radius * 180 / std::numbers::pi; }(2499);
+    EXPECT_GT(PathCurvature::of(V(0, 0), 0, V(0, 100), 360 - degreesOver100m, 10), 0);
+    const double gentle = 100 / 2600.0 * 180 / std::numbers::pi;
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 0, V(0, 100), 360 - gentle, 10), 0);
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 360 - gentle, V(0, 100), 0, 10), 0);
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 0, V(0, 100), 0, 10), 0);
+    EXPECT_EQ(PathCurvature::of(V(0, 0), 0, V(0, 100), 0, std::nan("")), 0);
 }
 
 TEST(Footprint, OverlapAndSeparation) {

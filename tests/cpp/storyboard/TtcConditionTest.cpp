@@ -4,16 +4,19 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 
 #include "StoryboardTestSupport.h"
 #include "ThrownMessage.h"
+#include "sbsim/storyboard/geometry/PathCurvature.h"
 
 namespace sbsim::storyboard::test {
 namespace {
 
 using geometry::Footprint;
+using geometry::MovingFootprint;
 using V = Eigen::Vector2d;
 
 /// The definition: every sample time i·dt, i = 1..ceil(ttc/dt).
@@ -28,6 +31,24 @@ bool naiveConflict(const Footprint& a, double va, const Footprint& b, double vb,
         if (overlaps(a.movedFor(va, t), b.movedFor(vb, t))) return true;
     }
     return false;
+}
+
+/// The definition for movers that may be on a bend: every sample, each footprint where at() puts it.
+bool naiveConflict(const MovingFootprint& a, const MovingFootprint& b, double ttc) {
+    if (a.speed == 0 && b.speed == 0) return false;
+    const double dt = std::min(a.circle.sampleStep, b.circle.sampleStep);
+    const auto steps = static_cast<long>(std::ceil(ttc / dt));
+    for (long i = 1; i <= steps; ++i) {
+        const double t = static_cast<double>(i) * dt;
+        if (overlaps(a.at(t), b.at(t))) return true;
+    }
+    return false;
+}
+
+/// A car driving counter-clockwise on the ring of radius `r` around the origin, its front bumper
+/// at polar angle `phi` (radians).
+Vehicle ringCar(std::string id, double r, double phi, double speed) {
+    return car(std::move(id), r * std::cos(phi), r * std::sin(phi), speed, -phi * 180 / std::numbers::pi);
 }
 
 TEST(TtcCondition, HeadOn) {
@@ -194,6 +215,126 @@ TEST(TtcCondition, MatchesAllPairsOnRandomTraffic) {
         total += expected.size();
     }
     EXPECT_GT(total, 20u);
+}
+
+TEST(TtcCondition, CurvedConflictEqualsSamplingEveryStep) {
+    std::mt19937_64 rng(5150);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int conflicts = 0;
+    constexpr int kPairs = 20'000;
+    for (int k = 0; k < kPairs; ++k) {
+        const auto speed = [&] { return unit(rng) < 0.15 ? 0.0 : std::round(30 * unit(rng) * 4) / 4; };
+        // Radii from 5 m to 500 m either way, or straight.
+        const auto curvature = [&] {
+            const double c = unit(rng) < 0.25 ? 0.0 : 1 / (5 + 495 * unit(rng) * unit(rng));
+            return unit(rng) < 0.5 ? c : -c;
+        };
+        const MovingFootprint a(Footprint::fromSumo(V(0, 0), 360 * unit(rng), 3 + std::round(9 * unit(rng)), 1.8),
+                                speed(), curvature());
+        const MovingFootprint b(Footprint::fromSumo(V(50 * unit(rng) - 25, 50 * unit(rng) - 25), 360 * unit(rng),
+                                                    3 + std::round(9 * unit(rng)), 1.8),
+                                speed(), curvature());
+        const double ttc = std::vector<double>{0.5, 2, 4, 8}[k % 4];
+        const bool expected = naiveConflict(a, b, ttc);
+        ASSERT_EQ(TtcCondition::conflict(a, b, ttc), expected) << "pair " << k;
+        conflicts += expected;
+    }
+    EXPECT_GT(conflicts, kPairs / 20);
+    EXPECT_LT(conflicts, kPairs * 19 / 20);
+}
+
+TEST(TtcCondition, RingConvergingOnlyWithCurves) {
+    // A fast car closes on a slow one on a ring of radius 40 m: 15 m between the follower's front
+    // and the leader's rear, closing at 15 m/s. Straight on, the follower leaves the ring along
+    // its tangent (5 m off it after 20 m) and misses.
+    constexpr double kR = 40;
+    const auto step = [&](double t) {
+        return std::vector<Vehicle>{ringCar("leader", kR, (5 * t) / kR, 5),
+                                    ringCar("follower", kR, (20 * t - 35) / kR, 20)};
+    };
+    Scene scene(step(0), SimTime::zero());
+    TtcCondition c(3, 50);
+    EXPECT_FALSE(scene.test(c, "follower"));  // the first step has no bend yet: straight
+    scene.set(step(1), SimTime::fromSeconds(1));
+    EXPECT_EQ(scene.others(scene.test(c, "follower")), (Ids{"leader"}));
+    EXPECT_EQ(scene.others(scene.test(c, "leader")), (Ids{"follower"}));
+    // Testing the same step again compares with the same previous step.
+    EXPECT_EQ(scene.others(scene.test(c, "follower")), (Ids{"leader"}));
+    const double expectedCurvature = 0.125 / (2 * kR * std::sin(0.0625));  // heading change over the chord
+    EXPECT_NEAR(c.curvature(scene.index("leader")), expectedCurvature, 1e-12);
+    EXPECT_GT(c.curvature(scene.index("follower")), 0.99 / kR);
+
+    TtcCondition straight(3, 50);  // has not seen the step before: straight lines
+    EXPECT_FALSE(scene.test(straight, "follower"));
+    EXPECT_EQ(straight.curvature(scene.index("follower")), 0);
+    // Predicted on the ring, the follower reaches the leader after 1 s (15 m at 15 m/s).
+    TtcCondition tooShort(0.7, 50);  // samples up to 0.75 s
+    Scene twice(step(0), SimTime::zero());
+    (void)twice.test(tooShort, "follower");
+    twice.set(step(1), SimTime::fromSeconds(1));
+    EXPECT_FALSE(twice.test(tooShort, "follower"));
+}
+
+TEST(TtcCondition, StraightDrivingMatchesTheStraightPrediction) {
+    // Random traffic that drove straight on between two steps gets exactly the straight-line
+    // answer, as a condition without a previous step (the prediction before curves) gives.
+    std::mt19937_64 rng(78);
+    std::uniform_real_distribution<double> coordinate(0, 250);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<Vehicle> before;
+    std::vector<Vehicle> after;
+    for (int k = 0; k < 400; ++k) {
+        Vehicle v = car("v" + std::to_string(k), coordinate(rng), coordinate(rng), unit(rng) < 0.2 ? 0 : 30 * unit(rng),
+                        unit(rng) < 0.3 ? 90.0 * std::floor(4 * unit(rng)) : 360 * unit(rng), 4 + 3 * unit(rng),
+                        1.6 + 0.8 * unit(rng));
+        Vehicle moved = v;
+        const V step = 0.5 * v.speed * Footprint::headingOf(v.angle);
+        v.x -= step.x();
+        v.y -= step.y();
+        // Some drift by less than the straight threshold (a 3 km radius).
+        if (k % 3 == 0) moved.angle += step.norm() / 3000 * 180 / std::numbers::pi;
+        before.push_back(v);
+        after.push_back(moved);
+    }
+    Scene scene(before, SimTime::fromSeconds(2.5), 40);
+    TtcCondition c(4, 40);
+    c.prepare(scene.ctx());
+    scene.set(after, SimTime::fromSeconds(3), 40);
+    c.prepare(scene.ctx());
+    TtcCondition fresh(4, 40);
+    fresh.prepare(scene.ctx());
+    std::size_t total = 0;
+    for (VehicleIndex ego = 0; ego < scene.snapshot().size(); ++ego) {
+        ASSERT_EQ(c.curvature(ego), 0) << ego;
+        const ConditionResult r = c.test(scene.ctx(), ego);
+        ASSERT_EQ(r.others(), fresh.test(scene.ctx(), ego).others()) << "ego " << ego;
+        total += r.others().size();
+    }
+    EXPECT_GT(total, 20u);
+}
+
+TEST(TtcCondition, KeepsPosesOnlyOfRunningVehicles) {
+    Scene scene({ringCar("a", 40, 0, 10), ringCar("b", 40, 1, 10), ringCar("c", 40, 2, 10)}, SimTime::zero());
+    TtcCondition c(2);
+    c.prepare(scene.ctx());
+    EXPECT_EQ(c.heldVehicles(), 3u);
+    c.forget("b");
+    EXPECT_EQ(c.heldVehicles(), 2u);
+    scene.set({ringCar("a", 40, 0.25, 10), ringCar("c", 40, 2.25, 10)}, SimTime::fromSeconds(1));
+    c.prepare(scene.ctx());
+    EXPECT_EQ(c.heldVehicles(), 2u);
+    EXPECT_NE(c.curvature(scene.index("a")), 0);
+    // A vehicle that left and came back with the same id starts without a bend.
+    c.forget("a");
+    scene.set({ringCar("a", 40, 0.5, 10), ringCar("c", 40, 2.5, 10)}, SimTime::fromSeconds(2));
+    c.prepare(scene.ctx());
+    EXPECT_EQ(c.curvature(scene.index("a")), 0);
+    EXPECT_NE(c.curvature(scene.index("c")), 0);
+    scene.set({}, SimTime::fromSeconds(3));
+    c.prepare(scene.ctx());
+    scene.set({}, SimTime::fromSeconds(4));
+    c.prepare(scene.ctx());
+    EXPECT_EQ(c.heldVehicles(), 0u);
 }
 
 }  // namespace
