@@ -64,4 +64,9 @@ def __getattr__(name: str) -> Any:
     # Only reached for names not defined above: outside sbsim, say why instead of a bare AttributeError.
     if not IN_SBSIM and name[:1].isupper():
         _require_sbsim(name)
+    if not IN_SBSIM and not name.startswith("_"):  # e.g. sumo_polygon: still an AttributeError, for hasattr
+        raise AttributeError(
+            f"module 'storyboard' has no attribute {name!r} here: the story API exists only inside a story run by "
+            "sbsim --story"
+        )
     raise AttributeError(f"module 'storyboard' has no attribute {name!r}")
