@@ -1,6 +1,9 @@
 #include "sbsim/storyboard/EffectStack.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cstdio>
 
 namespace sbsim::storyboard {
 
@@ -38,6 +41,16 @@ void EffectStack::pushType(Token token, std::string typeId) {
 
 void EffectStack::pushColor(Token token, traffic::Color color) {
     if (const auto v = colors_.push(token, color, [this] { return vehicle_->color(); })) vehicle_->setColor(*v);
+}
+
+void EffectStack::pushLane(Token token, int index) {
+    if (lanes_.push(token, index, [] { return 0; })) holdLane();
+}
+
+void EffectStack::pushRoute(Token token, Route route) {
+    const std::optional<Route> before = routes_.effective();
+    if (const auto v = routes_.push(token, std::move(route), [this] { return ownRoute(); }))
+        applyRoute(*v, before ? before->via : routes_.original().via);
 }
 
 std::string EffectStack::ownType() const {
@@ -82,6 +95,52 @@ void EffectStack::remove(Token token) {
         if (const auto v = types_.remove(token)) applyType(*v);
     } else if (colors_.contains(token)) {
         if (const auto v = colors_.remove(token)) vehicle_->setColor(*v);
+    } else if (lanes_.contains(token)) {
+        if (lanes_.remove(token)) lanes_.empty() ? releaseLane() : holdLane();
+    } else if (routes_.contains(token)) {
+        const std::vector<std::string> viaBefore = routes_.effective()->via;
+        if (const auto v = routes_.remove(token)) applyRoute(*v, viaBefore);
+    }
+}
+
+void EffectStack::holdLane() {
+    const std::string road = vehicle_->roadId();
+    // On a junction (SUMO's internal roads, ':...') or off the road: the last command stands.
+    if (road.empty() || road.front() == ':') return;
+    if (road != laneRoad_) {
+        laneRoad_ = road;
+        laneRoadLanes_ = vehicle_->laneCount();
+    }
+    vehicle_->changeLane(std::min(*lanes_.effective(), laneRoadLanes_ - 1), kLaneHoldSeconds);
+}
+
+void EffectStack::releaseLane() {
+    // A command for no time ends the held one: SUMO's lane-change model decides again.
+    vehicle_->changeLane(vehicle_->laneIndex(), 0);
+    laneRoad_.clear();
+}
+
+EffectStack::Route EffectStack::ownRoute() const {
+    const std::vector<std::string> edges = vehicle_->route();
+    return {edges.empty() ? std::nullopt : std::optional<std::string>(edges.back()), vehicle_->via()};
+}
+
+void EffectStack::applyRoute(const Route& route, const std::vector<std::string>& viaBefore) {
+    // Routed from where the vehicle is now: the edges it drove are not given back.
+    const std::optional<std::string>& target = route.target ? route.target : routes_.original().target;
+    try {
+        if (route.via != viaBefore) vehicle_->setVia(route.via);
+        if (target) vehicle_->changeTarget(*target);
+    } catch (const traffic::CommandRefused& e) {
+        warn(fmt::format("vehicle '{}' keeps its route: {}", vehicle_->id(), e.what()));
+    }
+}
+
+void EffectStack::warn(const std::string& message) const {
+    if (warn_) {
+        warn_(message);
+    } else {
+        std::fprintf(stderr, "sbsim: warning: %s\n", message.c_str());
     }
 }
 

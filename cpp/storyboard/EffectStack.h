@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -23,38 +24,62 @@ namespace sbsim::storyboard {
 /// - speed factor, type and colour: the most recently activated one rules (LatestWins), the value
 ///   from before the first comes back after the last. A type brings its own max speed and maps
 ///   the speed factor onto its own distribution, so a type change under an active cap or factor
-///   records the new type's own values and renews the cap and the factor.
-/// A command goes to SUMO only when a domain's effective value changes.
+///   records the new type's own values and renews the cap and the factor;
+/// - lane: the most recently activated lane index rules, renewed each step (settle()) for the lane
+///   count of the road the vehicle is on; after the last, the vehicle changes lanes freely again;
+/// - route: the most recently activated route change rules; the destination (and via edges) from
+///   before the first comes back after the last, by routing the vehicle from where it is then.
+/// A command goes to SUMO only when a domain's effective value changes (and to keep a lane).
 class SBSIM_API EffectStack {
 public:
     using Token = std::uint64_t;  ///< identifies one effect activation
     enum class Hold { Stop, EmergencyStop };
+    /// A route change: to `target` (default: the vehicle's own destination) through `via`.
+    struct Route {
+        std::optional<std::string> target;
+        std::vector<std::string> via;
+        bool operator==(const Route&) const = default;
+    };
+    /// Receives the warnings of commands SUMO refused (a route it found none for): the run goes on.
+    using Warn = std::function<void(const std::string& message)>;
+    /// How long one lane command keeps the vehicle on its lane; renewed every step before it ends.
+    static constexpr double kLaneHoldSeconds = 5.0;
 
-    explicit EffectStack(traffic::VehicleController& vehicle) : vehicle_(&vehicle) {}
+    /// Without `warn`, warnings go to stderr.
+    explicit EffectStack(traffic::VehicleController& vehicle, Warn warn = {})
+        : vehicle_(&vehicle), warn_(std::move(warn)) {}
 
     void pushSpeedCap(Token token, double mps);
     void pushHold(Token token, Hold hold);
     void pushSpeedFactor(Token token, double factor);
     void pushType(Token token, std::string typeId);
     void pushColor(Token token, traffic::Color color);
+    /// Keeps the vehicle on lane `index` (from the right, 0-based; clamped to the road's lanes).
+    void pushLane(Token token, int index);
+    void pushRoute(Token token, Route route);
     /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
     void remove(Token token);
-    /// Called each step with the vehicle's speed: an EmergencyStop braking with slowDown() is
-    /// turned into a hold once the vehicle stands, since SUMO lets it drive on after slowDown.
+    /// Called each step with the vehicle's speed while settling(): an EmergencyStop braking with
+    /// slowDown() is turned into a hold once the vehicle stands, since SUMO lets it drive on after
+    /// slowDown; a lane is renewed.
     void settle(double speed) {
         if (!holds_.empty()) settleHold(speed);
+        if (!lanes_.empty()) holdLane();
     }
 
     bool empty() const {
-        return caps_.empty() && holds_.empty() && factors_.empty() && types_.empty() && colors_.empty();
+        return caps_.empty() && holds_.empty() && factors_.empty() && types_.empty() && colors_.empty() &&
+               lanes_.empty() && routes_.empty();
     }
-    /// Whether a Stop or EmergencyStop is active (only then does settle() have work).
-    bool holding() const { return !holds_.empty(); }
+    /// Whether settle() has work: a Stop, EmergencyStop or lane is active.
+    bool settling() const { return !holds_.empty() || !lanes_.empty(); }
     std::optional<double> effectiveCap() const;
     std::optional<Hold> effectiveHold() const;
     std::optional<double> effectiveSpeedFactor() const { return factors_.effective(); }
     std::optional<std::string> effectiveType() const { return types_.effective(); }
     std::optional<traffic::Color> effectiveColor() const { return colors_.effective(); }
+    std::optional<int> effectiveLane() const { return lanes_.effective(); }
+    std::optional<Route> effectiveRoute() const { return routes_.effective(); }
 
 private:
     void settleHold(double speed);
@@ -62,8 +87,14 @@ private:
     void applyHold(std::optional<Hold> before);
     void applyType(const std::string& typeId);
     std::string ownType() const;
+    void holdLane();
+    void releaseLane();
+    Route ownRoute() const;
+    void applyRoute(const Route& route, const std::vector<std::string>& viaBefore);
+    void warn(const std::string& message) const;
 
     traffic::VehicleController* vehicle_;
+    Warn warn_;
     std::vector<std::pair<Token, double>> caps_;  // activation order
     std::vector<std::pair<Token, Hold>> holds_;   // activation order
     double recordedMaxSpeed_ = 0;
@@ -72,6 +103,10 @@ private:
     LatestWins<double> factors_;
     LatestWins<std::string> types_;
     LatestWins<traffic::Color> colors_;
+    LatestWins<int> lanes_;
+    std::string laneRoad_;  // the road whose lane count laneRoadLanes_ is
+    int laneRoadLanes_ = 0;
+    LatestWins<Route> routes_;
 };
 
 }  // namespace sbsim::storyboard

@@ -156,7 +156,13 @@ Storyboard::VehicleState& Storyboard::stateFor(const std::string& id) {
     VehicleState& state = it->second;
     if (inserted) {
         state.controller = makeController_(id);
-        state.stack = std::make_unique<EffectStack>(*state.controller);
+        // Refused commands are counted and shown with SUMO's own warnings (and go to --sumo-log).
+        EffectStack::Warn warn;
+        if (bridge_ != nullptr)
+            warn = [bridge = bridge_](const std::string& message) {
+                bridge->warnings().take("Warning: " + message + "\n");
+            };
+        state.stack = std::make_unique<EffectStack>(*state.controller, std::move(warn));
         state.applied.resize(stories_.size());
         state.active.resize(stories_.size());
         state.activations.resize(stories_.size());
@@ -235,8 +241,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         }
         // A vehicle's state is kept until it leaves, even while idle: stories that flip often
         // (a speed threshold) would otherwise rebuild it again and again.
-        if (changed) row.holding = row.state->stack->holding();
-        if (row.holding) row.state->stack->settle(snapshot.speeds()[i]);
+        if (changed) row.settling = row.state->stack->settling();
+        if (row.settling) row.state->stack->settle(snapshot.speeds()[i]);
     }
     stateIds_ = ids;
     if (log_ != nullptr) log_->flush();
@@ -274,7 +280,7 @@ void Storyboard::matchStates(const std::vector<std::string>& ids) {
     for (std::size_t k = 0; k < ids.size(); ++k) {
         if (rows_[k].state != nullptr) continue;
         if (const auto it = vehicles_.find(ids[k]); it != vehicles_.end()) {
-            rows_[k] = Row{&it->second, it->second.stack->holding()};
+            rows_[k] = Row{&it->second, it->second.stack->settling()};
             copyFlags(it->second, activeFlags_.data() + k * stride);
         }
     }

@@ -105,7 +105,7 @@ private:
     /// A vehicle of the current pass, by snapshot index.
     struct Row {
         VehicleState* state = nullptr;  // none until a story first activates for it
-        bool holding = false;           // its stack holds its speed (settle() each step)
+        bool settling = false;          // its stack holds its speed or lane (settle() each step)
     };
     class Scope;
 

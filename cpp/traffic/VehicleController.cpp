@@ -2,6 +2,8 @@
 
 #include "sbsim/traffic/SnapshotBuilder.h"
 
+#include <libsumo/Edge.h>
+#include <libsumo/TraCIDefs.h>
 #include <libsumo/Vehicle.h>
 
 namespace sbsim::traffic {
@@ -41,6 +43,23 @@ void VehicleController::setType(const std::string& typeId) {
 }
 void VehicleController::setColor(const Color& color) {
     Vehicle::setColor(id_, libsumo::TraCIColor(color.r, color.g, color.b, color.a));
+}
+int VehicleController::laneCount() const { return libsumo::Edge::getLaneNumber(Vehicle::getRoadID(id_)); }
+std::vector<std::string> VehicleController::route() const { return Vehicle::getRoute(id_); }
+std::vector<std::string> VehicleController::via() const { return Vehicle::getVia(id_); }
+void VehicleController::setVia(const std::vector<std::string>& edges) {
+    try {
+        Vehicle::setVia(id_, edges);
+    } catch (const libsumo::TraCIException& e) {
+        throw CommandRefused(e.what());
+    }
+}
+void VehicleController::changeTarget(const std::string& edge) {
+    try {
+        Vehicle::changeTarget(id_, edge);
+    } catch (const libsumo::TraCIException& e) {
+        throw CommandRefused(e.what());
+    }
 }
 
 }  // namespace sbsim::traffic

@@ -1,11 +1,20 @@
 #pragma once
 
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/traffic/Color.h"
 
 namespace sbsim::traffic {
+
+/// SUMO refused a command that may fail in a running scenario (no route to an edge): one line,
+/// SUMO's message. The caller decides whether the run goes on.
+class SBSIM_API CommandRefused : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
 
 /// Commands and live queries for one vehicle, forwarded to libsumo::Vehicle. Effects and services
 /// act on vehicles only through this class, so every SUMO command has one place to look — and the
@@ -45,6 +54,20 @@ public:
     /// Gives the vehicle another type (its max speed becomes the type's).
     virtual void setType(const std::string& typeId);
     virtual void setColor(const Color& color);
+
+    // Added after the others, for the same reason.
+    /// Lanes of the road the vehicle is on.
+    virtual int laneCount() const;
+    /// The edges of the vehicle's route, from its start to its destination.
+    virtual std::vector<std::string> route() const;
+    /// The edges its routings must pass, in order (SUMO's via).
+    virtual std::vector<std::string> via() const;
+    /// Makes the vehicle's next routings pass `edges` in order; throws CommandRefused for an
+    /// unknown edge.
+    virtual void setVia(const std::vector<std::string>& edges);
+    /// Routes the vehicle from where it is to `edge` (through its via edges) by travel time; throws
+    /// CommandRefused when SUMO finds no route, leaving the route as it was.
+    virtual void changeTarget(const std::string& edge);
 
 private:
     std::string id_;

@@ -223,6 +223,15 @@ class ColorEffect(Effect):
     color: tuple[int, int, int, int]
     def __init__(self, color: tuple[int, int, int] | tuple[int, int, int, int]) -> None: ...
 
+class LaneEffect(Effect):
+    lane_index: int
+    def __init__(self, lane_index: int) -> None: ...
+
+class RouteEffect(Effect):
+    target_edge: str | None
+    via: list[str]
+    def __init__(self, target_edge: str | None = None, *, via: Iterable[str] | None = None) -> None: ...
+
 EffectFactory = Effect
 SpeedEffectFactory = SpeedEffect
 StopEffectFactory = StopEffect

@@ -2,8 +2,12 @@
 
 #include <pybind11/stl.h>
 
+#include <limits>
+
 #include "sbsim/storyboard/effects/ColorEffect.h"
 #include "sbsim/storyboard/effects/EmergencyStopEffect.h"
+#include "sbsim/storyboard/effects/LaneEffect.h"
+#include "sbsim/storyboard/effects/RouteEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/SpeedFactorEffect.h"
@@ -36,6 +40,36 @@ traffic::Color toColor(const py::handle& value) {
         parts[k] = static_cast<std::uint8_t>(v);
     }
     return {parts[0], parts[1], parts[2], parts[3]};
+}
+
+/// A lane index: a whole number 0..INT_MAX.
+int toLaneIndex(const py::object& value) {
+    if (!py::isinstance<py::int_>(value) || py::isinstance<py::bool_>(value))
+        throw py::type_error("LaneEffect needs a whole lane index, got " + py::repr(value).cast<std::string>());
+    if (value < py::int_(0) || value > py::int_(std::numeric_limits<int>::max()))
+        throw py::value_error("LaneEffect needs a lane index >= 0, got " + py::repr(value).cast<std::string>());
+    return value.cast<int>();
+}
+
+/// An edge id: a non-empty str.
+std::string toEdge(const py::handle& value) {
+    if (!py::isinstance<py::str>(value))
+        throw py::type_error("RouteEffect edges must be edge ids (str), got " + py::repr(value).cast<std::string>());
+    std::string edge = value.cast<std::string>();
+    if (edge.empty()) throw py::value_error("RouteEffect edges must not be empty strings");
+    return edge;
+}
+
+std::shared_ptr<RouteEffect> makeRouteEffect(const py::object& targetEdge, const py::object& via) {
+    if (targetEdge.is_none() == via.is_none())
+        throw py::value_error("RouteEffect needs either target_edge or via=[edges], not both or neither");
+    if (!targetEdge.is_none()) return std::make_shared<RouteEffect>(toEdge(targetEdge), std::vector<std::string>{});
+    if (!py::isinstance<py::iterable>(via) || py::isinstance<py::str>(via))
+        throw py::type_error("RouteEffect via must be a list of edge ids, got " + py::repr(via).cast<std::string>());
+    std::vector<std::string> edges;
+    for (const py::handle edge : via) edges.push_back(toEdge(edge));
+    if (edges.empty()) throw py::value_error("RouteEffect via needs at least one edge");
+    return std::make_shared<RouteEffect>(std::nullopt, std::move(edges));
 }
 
 }  // namespace
@@ -78,6 +112,15 @@ void bindEffects(py::module_& m) {
             const traffic::Color& c = e.color();
             return py::make_tuple(c.r, c.g, c.b, c.a);
         });
+    py::class_<LaneEffect, Effect, py::smart_holder>(m, "LaneEffect")
+        .def(py::init([](const py::object& index) { return std::make_shared<LaneEffect>(toLaneIndex(index)); }),
+             py::arg("lane_index"))
+        .def_property_readonly("lane_index", &LaneEffect::laneIndex);
+    py::class_<RouteEffect, Effect, py::smart_holder>(m, "RouteEffect")
+        .def(py::init(&makeRouteEffect), py::arg("target_edge") = py::none(), py::kw_only(),
+             py::arg("via") = py::none())
+        .def_property_readonly("target_edge", [](const RouteEffect& e) { return e.route().target; })
+        .def_property_readonly("via", [](const RouteEffect& e) { return e.route().via; });
     // Artery's names: its effects derive from EffectFactory; and its older factory names.
     m.attr("EffectFactory") = m.attr("Effect");
     m.attr("SpeedEffectFactory") = m.attr("SpeedEffect");

@@ -22,6 +22,10 @@ constexpr double kEmergencyDecel = 9.0;
 constexpr double kOwnSpeedFactor = 1.1;
 const std::string kOwnType = "car";
 constexpr traffic::Color kOwnColor{1, 2, 3, 255};
+constexpr int kOwnLane = 1;
+constexpr int kRoadLanes = 3;
+const std::string kOwnDestination = "home";
+const std::string kUnreachable = "island";  // an edge SUMO finds no route to
 
 /// Each type's own max speed: a new type brings its own, as in SUMO.
 double typeMaxSpeed(const std::string& type) {
@@ -86,6 +90,25 @@ public:
         color_ = color;
         ++commands;
     }
+    std::string roadId() const override { return road_; }
+    int laneCount() const override { return kRoadLanes; }
+    int laneIndex() const override { return kOwnLane; }
+    void changeLane(int index, double seconds) override {
+        laneCommand_ = {index, seconds};
+        ++commands;
+    }
+    std::vector<std::string> route() const override { return {road_, destination_}; }
+    std::vector<std::string> via() const override { return via_; }
+    void setVia(const std::vector<std::string>& edges) override {
+        via_ = edges;
+        ++commands;
+    }
+    void changeTarget(const std::string& edge) override {
+        ++commands;
+        if (edge == kUnreachable) throw traffic::CommandRefused("no connection to 'island'");
+        destination_ = edge;
+        routedVia_ = via_;
+    }
 
     double speedFactor_ = kOwnSpeedFactor;
     std::string type_ = kOwnType;
@@ -95,13 +118,19 @@ public:
     std::optional<double> held_;
     std::optional<double> slowingTo_;
     double slowDownSeconds = 0;
+    std::string road_ = "road";
+    std::optional<std::pair<int, double>> laneCommand_;  // the last changeLane: index, seconds
+    std::string destination_ = kOwnDestination;
+    std::vector<std::string> via_;
+    std::vector<std::string> routedVia_;  // the via edges of the last routing
     int commands = 0;
 };
 
 struct Spec {
-    enum Kind { Cap, Stop, EmergencyStop, Factor, Type, Paint } kind;
-    double cap = 0;  // also the factor, and the red of a Paint
-    std::string type = {};
+    enum Kind { Cap, Stop, EmergencyStop, Factor, Type, Paint, Lane, Route } kind;
+    double cap = 0;         // also the factor, the red of a Paint and the lane
+    std::string type = {};  // also a Route's target
+    std::vector<std::string> via = {};
     traffic::Color color() const { return {static_cast<std::uint8_t>(cap), 0, 0, 255}; }
     std::string label() const {
         switch (kind) {
@@ -117,6 +146,10 @@ struct Spec {
                 return "type:" + type;
             case Paint:
                 return "paint" + std::to_string(static_cast<int>(cap));
+            case Lane:
+                return "lane" + std::to_string(static_cast<int>(cap));
+            case Route:
+                return "route:" + (type.empty() ? "via " + via.front() : type);
         }
         return "?";
     }
@@ -142,6 +175,12 @@ void push(EffectStack& stack, const Spec& s, EffectStack::Token token) {
         case Spec::Paint:
             stack.pushColor(token, s.color());
             break;
+        case Spec::Lane:
+            stack.pushLane(token, static_cast<int>(s.cap));
+            break;
+        case Spec::Route:
+            stack.pushRoute(token, {s.type.empty() ? std::nullopt : std::optional<std::string>(s.type), s.via});
+            break;
     }
 }
 
@@ -152,6 +191,8 @@ struct Effective {
     std::optional<double> factor;
     std::optional<std::string> type;
     std::optional<double> paint;
+    std::optional<int> lane;
+    std::optional<std::pair<std::string, std::vector<std::string>>> route;  // target ("": own), via
     bool operator==(const Effective&) const = default;
 };
 
@@ -176,6 +217,12 @@ Effective effective(const std::vector<Spec>& active) {
             case Spec::Paint:
                 e.paint = s.cap;
                 break;
+            case Spec::Lane:
+                e.lane = static_cast<int>(s.cap);
+                break;
+            case Spec::Route:
+                e.route = {s.type, s.via};
+                break;
         }
     }
     return e;
@@ -192,6 +239,23 @@ void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const s
     EXPECT_NEAR(v.speedFactor_, e.factor.value_or(mapSpeedFactor(kOwnSpeedFactor, kOwnType, type)), 1e-12) << context;
     const traffic::Color paint = e.paint ? Spec{Spec::Paint, *e.paint, {}}.color() : kOwnColor;
     EXPECT_EQ(v.color_, paint) << context;
+    if (e.lane) {
+        const std::pair<int, double> held{std::min(*e.lane, kRoadLanes - 1), EffectStack::kLaneHoldSeconds};
+        EXPECT_EQ(v.laneCommand_, held) << context;
+    } else {
+        // Never held, or released: a command for no time, to the lane it is on.
+        const std::pair<int, double> released{kOwnLane, 0.0};
+        EXPECT_TRUE(!v.laneCommand_ || v.laneCommand_ == released) << context << ": lane still held";
+    }
+    if (e.route && e.route->first != kUnreachable) {
+        EXPECT_EQ(v.destination_, e.route->first.empty() ? kOwnDestination : e.route->first) << context;
+        EXPECT_EQ(v.via_, e.route->second) << context;
+        EXPECT_EQ(v.routedVia_, e.route->second) << context;
+    } else if (!e.route) {
+        EXPECT_EQ(v.destination_, kOwnDestination) << context;
+        EXPECT_TRUE(v.via_.empty()) << context;
+        EXPECT_TRUE(v.routedVia_.empty()) << context;
+    }
     if (!hold) {
         EXPECT_FALSE(v.held_.has_value()) << context << ": vehicle still held";
         EXPECT_FALSE(v.slowingTo_.has_value()) << context << ": vehicle still braking";
@@ -208,7 +272,7 @@ void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const s
     }
 }
 
-void runAllOrders(const std::vector<Spec>& specs) {
+void runAllOrders(const std::vector<Spec>& specs, const EffectStack::Warn& warn = {}) {
     std::vector<std::size_t> activation(specs.size());
     for (std::size_t i = 0; i < specs.size(); ++i) activation[i] = i;
     int cases = 0;
@@ -217,7 +281,7 @@ void runAllOrders(const std::vector<Spec>& specs) {
         std::sort(removal.begin(), removal.end());
         do {
             ModelVehicle vehicle;
-            EffectStack stack(vehicle);
+            EffectStack stack(vehicle, warn);
             std::vector<std::size_t> active;  // indices into specs, activation order
             const auto activeSpecs = [&] {
                 std::vector<Spec> out;
@@ -297,6 +361,58 @@ TEST(EffectStack, TypesUnderASpeedFactorKeepItInEveryOrder) {
 
 TEST(EffectStack, FactorTypeColourCapAndStopInEveryOrder) {
     runAllOrders({{Spec::Factor, 0.7}, {Spec::Type, 0, "bus"}, {Spec::Paint, 9}, {Spec::Cap, 12}, {Spec::Stop}});
+}
+
+TEST(EffectStack, ThreeLanesInEveryOrder) { runAllOrders({{Spec::Lane, 0}, {Spec::Lane, 2}, {Spec::Lane, 0}}); }
+
+TEST(EffectStack, ThreeRoutesInEveryOrder) {
+    runAllOrders({{Spec::Route, 0, "west"}, {Spec::Route, 0, "", {"bridge", "tunnel"}}, {Spec::Route, 0, "east"}});
+}
+
+TEST(EffectStack, LaneRouteCapAndColourInEveryOrder) {
+    runAllOrders({{Spec::Lane, 1}, {Spec::Route, 0, "west"}, {Spec::Cap, 12}, {Spec::Paint, 9}});
+}
+
+TEST(EffectStack, ARouteSumoCannotFindIsAWarningInEveryOrder) {
+    // The vehicle keeps the route it has while the unreachable target rules; the others and the
+    // own destination still come back.
+    int warnings = 0;
+    runAllOrders({{Spec::Route, 0, kUnreachable}, {Spec::Route, 0, "west"}, {Spec::Lane, 0}},
+                 [&](const std::string& message) {
+                     EXPECT_NE(message.find("island"), std::string::npos) << message;
+                     ++warnings;
+                 });
+    EXPECT_GT(warnings, 0);
+}
+
+TEST(EffectStack, ALaneBeyondTheRoadsLanesIsItsLeftmost) {
+    ModelVehicle v;
+    EffectStack stack(v);
+    stack.pushLane(1, 7);
+    EXPECT_EQ(v.laneCommand_, (std::pair<int, double>{kRoadLanes - 1, EffectStack::kLaneHoldSeconds}));
+}
+
+TEST(EffectStack, TheLaneIsRenewedEachStepOnlyWhileActive) {
+    ModelVehicle v;
+    EffectStack stack(v);
+    EXPECT_FALSE(stack.settling());
+    stack.pushLane(1, 0);
+    EXPECT_TRUE(stack.settling());
+    for (int step = 1; step <= 3; ++step) {
+        v.laneCommand_.reset();
+        stack.settle(kSpeed);
+        EXPECT_EQ(v.laneCommand_, (std::pair<int, double>{0, EffectStack::kLaneHoldSeconds})) << "step " << step;
+    }
+    v.road_ = ":junction_0";  // SUMO's internal road: the last command stands
+    v.laneCommand_.reset();
+    stack.settle(kSpeed);
+    EXPECT_FALSE(v.laneCommand_.has_value());
+    v.road_ = "next";
+    stack.settle(kSpeed);
+    EXPECT_TRUE(v.laneCommand_.has_value());
+    stack.remove(1);
+    EXPECT_EQ(v.laneCommand_, (std::pair<int, double>{kOwnLane, 0.0}));
+    EXPECT_FALSE(stack.settling()) << "no lane: settle() has nothing to renew";
 }
 
 TEST(EffectStack, TheTypeComingBackIsTheOneSumosPrivateCopyWasMadeOf) {

@@ -26,6 +26,7 @@
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
+#include "sbsim/storyboard/effects/LaneEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
@@ -40,6 +41,7 @@ using traffic::VehicleSnapshot;
 struct Commands {
     std::map<std::string, double> maxSpeed;
     std::map<std::string, std::vector<double>> setSpeed;
+    std::map<std::string, std::vector<std::pair<int, double>>> changeLane;  // index, seconds
 };
 
 class RecordingVehicle : public traffic::VehicleController {
@@ -53,6 +55,10 @@ public:
     double emergencyDecel() const override { return 9.0; }
     void setMaxSpeed(double mps) override { log_.maxSpeed[id()] = mps; }
     void setSpeed(double mps) override { log_.setSpeed[id()].push_back(mps); }
+    std::string roadId() const override { return "road"; }
+    int laneCount() const override { return 2; }
+    int laneIndex() const override { return 0; }
+    void changeLane(int index, double seconds) override { log_.changeLane[id()].emplace_back(index, seconds); }
 
 private:
     Commands& log_;
@@ -195,6 +201,18 @@ TEST_F(StoryboardTest, TwoStopStoriesHoldUntilTheLastEnds) {
     for (int t = 1; t <= 6; ++t) step(t, {car("a", 1)});
     // Held once at t=1 (0), released once at t=6 (-1): the first story ending at t=4 sends nothing.
     EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
+}
+
+TEST_F(StoryboardTest, ALaneIsRenewedEachStepWhileItsStoryIsActiveOnly) {
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<TimeCondition>(SimTime::fromSeconds(2), SimTime::fromSeconds(3)),
+                                std::vector<EffectPtr>{std::make_shared<LaneEffect>(1)}, "keep left"));
+    for (int t = 1; t <= 6; ++t) step(t, {car("a", 10), car("b", 10)});
+    const double hold = EffectStack::kLaneHoldSeconds;
+    // t=2: the activation's command and the step's renewal; t=3: renewed; t=4: released; then nothing.
+    EXPECT_EQ(commands.changeLane.at("a"),
+              (std::vector<std::pair<int, double>>{{1, hold}, {1, hold}, {1, hold}, {0, 0.0}}));
+    EXPECT_EQ(commands.changeLane.at("b").size(), 4U);
 }
 
 TEST_F(StoryboardTest, AVehicleMissingFromOneSnapshotKeepsItsStories) {
