@@ -33,6 +33,7 @@
 #include "sbsim/storyboard/python/StoryScript.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/SumoBridge.h"
+#include "sbsim/traffic/VehicleRegistry.h"
 
 namespace sbsim::app {
 
@@ -100,6 +101,9 @@ int runSimulation(const CommandLine& cl) {
     std::optional<storyboard::PythonRuntime> python;
     if (story) python.emplace();
 
+    // One controller and effect stack per vehicle for the stories and the services alike; declared
+    // before the simulation, whose modules hold its entries.
+    traffic::VehicleRegistry vehicles;
     kernel::Simulation sim(static_cast<std::uint64_t>(cl.seed.value_or(CommandLine::kDefaultSeed)), cl.threads);
     for (const std::string& param : cl.params) {
         try {
@@ -113,6 +117,7 @@ int runSimulation(const CommandLine& cl) {
     const traffic::Penetration penetration(cl.penetration, sim.seed());
     auto& sumo = sim.emplaceModule<traffic::SumoBridge>(settings);
     if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
+    vehicles.attach(sumo);
     try {
         sumo.load();
     } catch (const traffic::SumoLoadError& e) {
@@ -130,6 +135,7 @@ int runSimulation(const CommandLine& cl) {
     std::unique_ptr<storyboard::StoryScript> script;
     if (story) {
         board = &sim.emplaceModule<storyboard::Storyboard>(log ? &*log : nullptr);
+        board->useRegistry(vehicles);
         board->attach(sumo);
         board->setWarmupEndTime(kernel::SimTime::fromSeconds(cl.warmup));
         if (cl.storyboardEquippedOnly) board->seeEquippedOnly(penetration);
@@ -161,6 +167,7 @@ int runSimulation(const CommandLine& cl) {
         medium = &sim.emplaceModule<services::Medium>(radio, sumo.snapshot(), [serviceManager](const std::string& id) {
             return serviceManager->middlewareOf(id);
         });
+        serviceManager->useRegistry(vehicles);
         serviceManager->setMedium(*medium);
         serviceManager->setPenetration(penetration);
         serviceManager->attach(sumo);

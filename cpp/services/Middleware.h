@@ -7,7 +7,8 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/services/Service.h"
-#include "sbsim/traffic/VehicleController.h"
+#include "sbsim/services/ServiceVehicle.h"
+#include "sbsim/traffic/VehicleRegistry.h"
 
 namespace sbsim::services {
 
@@ -27,7 +28,8 @@ public:
     Middleware(ServiceManager& manager, std::string vehicleId);
 
     const std::string& vehicleId() const { return vehicleId_; }
-    traffic::VehicleController& controller() { return *controller_; }
+    /// What `service` (hosted here) commands the vehicle through.
+    ServiceVehicle& vehicleOf(const Service& service);
     ServiceManager& manager() const { return manager_; }
     const std::vector<Service*>& services() const { return services_; }
 
@@ -43,8 +45,9 @@ public:
 private:
     ServiceManager& manager_;
     std::string vehicleId_;
-    std::unique_ptr<traffic::VehicleController> controller_;
+    std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle_;  // the storyboard's as well
     std::vector<Service*> services_;
+    std::vector<std::unique_ptr<ServiceVehicle>> vehicles_;  // per service, as services_
     kernel::SimTime departedAt_;
 };
 

@@ -16,7 +16,7 @@ Middleware& hostOf(Middleware* m) {
 }  // namespace
 
 const std::string& Service::vehicleId() const { return hostOf(middleware_).vehicleId(); }
-traffic::VehicleController& Service::vehicle() { return hostOf(middleware_).controller(); }
+ServiceVehicle& Service::vehicle() { return hostOf(middleware_).vehicleOf(*this); }
 const traffic::VehicleSnapshot& Service::snapshot() const { return hostOf(middleware_).manager().snapshot(); }
 
 std::optional<traffic::VehicleSnapshot::Index> Service::selfIndex() const { return snapshot().indexOf(vehicleId()); }

@@ -7,6 +7,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/StudyParameters.h"
+#include "sbsim/services/ServiceVehicle.h"
 #include "sbsim/services/V2xMessage.h"
 #include "sbsim/storyboard/StoryboardSignal.h"
 #include "sbsim/traffic/VehicleController.h"
@@ -39,8 +40,9 @@ public:
     const std::string& vehicleId() const;
 
 protected:
-    /// Commands and live queries for this service's vehicle.
-    traffic::VehicleController& vehicle();
+    /// Commands and live queries for this service's vehicle; a max speed set here composes with
+    /// the stories' caps (ServiceVehicle).
+    ServiceVehicle& vehicle();
     /// The current step's snapshot of all vehicles (read-only).
     const traffic::VehicleSnapshot& snapshot() const;
     /// This vehicle's index in snapshot(), if it is running.

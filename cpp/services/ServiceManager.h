@@ -27,8 +27,13 @@ public:
     ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot);
     ~ServiceManager() override;
 
-    /// Listen to vehicles departing and arriving (a SumoBridge).
+    /// Listen to vehicles departing and arriving (a SumoBridge); the manager's own registry, if it
+    /// has one, is attached to it.
     void attach(kernel::Module& sumo);
+    /// Commands vehicles through `registry`, shared with the storyboard (default: a registry of
+    /// the manager's own). Call before the first vehicle departs.
+    void useRegistry(traffic::VehicleRegistry& registry);
+    traffic::VehicleRegistry& registry() const { return *registry_; }
     void setMedium(Medium& medium) { medium_ = &medium; }
     /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
     /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
@@ -62,6 +67,8 @@ private:
     kernel::Message triggerTimer_{"service trigger"};
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;
+    std::unique_ptr<traffic::VehicleRegistry> ownRegistry_;  // unless given one (useRegistry)
+    traffic::VehicleRegistry* registry_;
 };
 
 }  // namespace sbsim::services

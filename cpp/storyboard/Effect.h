@@ -6,9 +6,9 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/storyboard/ConditionResult.h"
-#include "sbsim/storyboard/EffectStack.h"
 #include "sbsim/storyboard/TypeName.h"
 #include "sbsim/storyboard/VehicleHandle.h"
+#include "sbsim/traffic/EffectStack.h"
 #include "sbsim/traffic/VehicleController.h"
 
 namespace sbsim::storyboard {
@@ -25,9 +25,9 @@ public:
     /// A handle to the vehicle that may outlive the call (what scripts get).
     virtual VehicleHandle handle() = 0;
     /// The vehicle's composition of built-in effects.
-    virtual EffectStack& stack() = 0;
-    /// Identifies this activation of this effect (for EffectStack::remove).
-    virtual EffectStack::Token token() const = 0;
+    virtual traffic::EffectStack& stack() = 0;
+    /// Identifies this activation of this effect (for traffic::EffectStack::remove).
+    virtual traffic::EffectStack::Token token() const = 0;
     /// The condition's other vehicles at activation, ascending ids.
     virtual const std::vector<std::string>& others() const = 0;
     /// Emits a StoryboardSignal for this vehicle (and logs it); `onExit` when the story deactivates.

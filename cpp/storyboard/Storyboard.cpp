@@ -23,14 +23,14 @@ public:
           const ConditionResult* result = nullptr, const traffic::VehicleSnapshot* snapshot = nullptr)
         : board_(board), state_(state), story_(story), id_(id), result_(result), snapshot_(snapshot) {}
 
-    void setToken(EffectStack::Token token) { token_ = token; }
+    void setToken(traffic::EffectStack::Token token) { token_ = token; }
 
     const Story& story() const override { return story_; }
     const std::string& vehicleId() const override { return id_; }
     traffic::VehicleController& vehicle() override { return *state_.controller; }
     VehicleHandle handle() override { return VehicleHandle(id_, state_.controller); }
-    EffectStack& stack() override { return *state_.stack; }
-    EffectStack::Token token() const override { return token_; }
+    traffic::EffectStack& stack() override { return state_.vehicle->stack; }
+    traffic::EffectStack::Token token() const override { return token_; }
     /// Converted from snapshot indices on first use: most activations never ask.
     const std::vector<std::string>& others() const override {
         if (!othersReady_) {
@@ -64,13 +64,14 @@ private:
     const traffic::VehicleSnapshot* snapshot_;
     mutable std::vector<std::string> others_;
     mutable bool othersReady_ = false;
-    EffectStack::Token token_ = 0;
+    traffic::EffectStack::Token token_ = 0;
 };
 
 Storyboard::Storyboard(EventLog* log)
     : kernel::Module("storyboard"),
       log_(log),
-      makeController_([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); }),
+      ownRegistry_(std::make_unique<traffic::VehicleRegistry>()),
+      registry_(ownRegistry_.get()),
       queries_(std::make_unique<traffic::SumoQueries>()) {}
 
 Storyboard::~Storyboard() = default;
@@ -80,6 +81,13 @@ void Storyboard::attach(kernel::Module& sumo) {
     sumo.subscribe(traffic::SumoBridge::stepSignal, *this);
     bridge_ = dynamic_cast<traffic::SumoBridge*>(&sumo);
     if (bridge_) bridge_->demandColumns(columns());
+    if (bridge_ && ownRegistry_) ownRegistry_->attach(*bridge_);
+}
+
+void Storyboard::useRegistry(traffic::VehicleRegistry& registry) {
+    if (!vehicles_.empty()) throw std::logic_error("Storyboard::useRegistry after vehicles got state");
+    registry_ = &registry;
+    ownRegistry_.reset();
 }
 
 traffic::SnapshotColumns Storyboard::columns() const {
@@ -155,14 +163,8 @@ Storyboard::VehicleState& Storyboard::stateFor(const std::string& id) {
     auto [it, inserted] = vehicles_.try_emplace(id);
     VehicleState& state = it->second;
     if (inserted) {
-        state.controller = makeController_(id);
-        // Refused commands are counted and shown with SUMO's own warnings (and go to --sumo-log).
-        EffectStack::Warn warn;
-        if (bridge_ != nullptr)
-            warn = [bridge = bridge_](const std::string& message) {
-                bridge->warnings().take("Warning: " + message + "\n");
-            };
-        state.stack = std::make_unique<EffectStack>(*state.controller, std::move(warn));
+        state.vehicle = registry_->of(id);
+        state.controller = std::shared_ptr<traffic::VehicleController>(state.vehicle, state.vehicle->controller.get());
         state.applied.resize(stories_.size());
         state.active.resize(stories_.size());
         state.activations.resize(stories_.size());
@@ -190,6 +192,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
             }
             forgetState(id);
             vehicles_.erase(it);
+            registry_->drop(id);
         }
         for (Condition* c : conditions_) c->forget(id);
     }
@@ -241,8 +244,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         }
         // A vehicle's state is kept until it leaves, even while idle: stories that flip often
         // (a speed threshold) would otherwise rebuild it again and again.
-        if (changed) row.settling = row.state->stack->settling();
-        if (row.settling) row.state->stack->settle(snapshot.speeds()[i]);
+        if (changed) row.settling = row.state->vehicle->stack.settling();
+        if (row.settling) row.state->vehicle->stack.settle(snapshot.speeds()[i]);
     }
     stateIds_ = ids;
     if (log_ != nullptr) log_->flush();
@@ -280,7 +283,7 @@ void Storyboard::matchStates(const std::vector<std::string>& ids) {
     for (std::size_t k = 0; k < ids.size(); ++k) {
         if (rows_[k].state != nullptr) continue;
         if (const auto it = vehicles_.find(ids[k]); it != vehicles_.end()) {
-            rows_[k] = Row{&it->second, it->second.stack->settling()};
+            rows_[k] = Row{&it->second, it->second.vehicle->stack.settling()};
             copyFlags(it->second, activeFlags_.data() + k * stride);
         }
     }
@@ -310,7 +313,7 @@ void Storyboard::activate(VehicleState& state, std::size_t s, const std::string&
 }
 
 void Storyboard::applyEffect(Scope& scope, std::vector<AppliedEffect>& applied, Effect& effect) {
-    const EffectStack::Token token = nextToken_++;
+    const traffic::EffectStack::Token token = registry_->newToken();
     scope.setToken(token);
     effect.apply(scope);
     applied.push_back({&effect, token});

@@ -13,13 +13,14 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/RandomStream.h"
-#include "sbsim/storyboard/EffectStack.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Story.h"
+#include "sbsim/traffic/EffectStack.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/TrafficQueries.h"
 #include "sbsim/traffic/VehicleController.h"
+#include "sbsim/traffic/VehicleRegistry.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
@@ -41,7 +42,7 @@ public:
     /// Payload: StoryboardSignal. Emitted by SignalEffect on activation.
     static const kernel::SignalId signalEmitted;
 
-    using ControllerFactory = std::function<std::unique_ptr<traffic::VehicleController>(const std::string& id)>;
+    using ControllerFactory = traffic::VehicleRegistry::ControllerFactory;
 
     /// `log` (optional) receives the event lines. Random streams and the threads evaluating pure
     /// stories are the simulation's.
@@ -49,12 +50,17 @@ public:
     ~Storyboard() override;
 
     /// Listen to `sumo`'s arrivals and steps (a SumoBridge); without this call, drive update() by hand.
-    /// A SumoBridge is also told which snapshot values the stories read, now and as stories come.
+    /// A SumoBridge is also told which snapshot values the stories read, now and as stories come
+    /// (and the board's own registry, if it has one, is attached to it).
     void attach(kernel::Module& sumo);
+    /// Commands vehicles through `registry`'s controllers and effect stacks, shared with the
+    /// services (default: a registry of the board's own). Call before the first update().
+    void useRegistry(traffic::VehicleRegistry& registry);
     /// The snapshot values the registered stories read (none without stories).
     traffic::SnapshotColumns columns() const;
-    /// Replaces how vehicles are commanded (default: libsumo through traffic::VehicleController).
-    void setControllerFactory(ControllerFactory factory) { makeController_ = std::move(factory); }
+    /// Replaces how vehicles are commanded (default: libsumo through traffic::VehicleController),
+    /// in the registry the board uses.
+    void setControllerFactory(ControllerFactory factory) { registry_->setControllerFactory(std::move(factory)); }
     /// Replaces what conditions ask of the traffic beyond the snapshot (default: libsumo).
     void setTrafficQueries(std::unique_ptr<traffic::TrafficQueries> queries) { queries_ = std::move(queries); }
 
@@ -92,12 +98,14 @@ public:
 private:
     struct AppliedEffect {
         Effect* effect;
-        EffectStack::Token token;
+        traffic::EffectStack::Token token;
     };
     struct VehicleState {
-        /// Shared only with the weak VehicleHandles given to scripts; gone when the vehicle leaves.
+        /// The vehicle's one controller and effect stack (the services' too).
+        std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle;
+        /// vehicle's controller, shared with the weak VehicleHandles given to scripts: they lapse
+        /// when the board lets go of the vehicle, after it left.
         std::shared_ptr<traffic::VehicleController> controller;
-        std::unique_ptr<EffectStack> stack;
         std::vector<std::vector<AppliedEffect>> applied;  // per story; non-empty iff active
         std::vector<bool> active;                         // per story
         std::vector<std::uint64_t> activations;           // per story: how often it activated for the vehicle
@@ -145,8 +153,8 @@ private:
     std::vector<Row> rowScratch_;
     std::vector<std::uint8_t> flagScratch_;
     std::vector<std::string> leftSinceStep_;
-    EffectStack::Token nextToken_ = 1;
-    ControllerFactory makeController_;
+    std::unique_ptr<traffic::VehicleRegistry> ownRegistry_;  // unless given one (useRegistry)
+    traffic::VehicleRegistry* registry_;
     std::unique_ptr<traffic::TrafficQueries> queries_;
     double updateSeconds_ = 0;
     std::map<std::string, std::uint64_t, std::less<>> signalsByCause_;

@@ -7,23 +7,9 @@
 
 namespace sbsim::traffic {
 
-namespace {
-/// Vehicles whose max speed a command changed since the last fill (any builder's; there is one
-/// SUMO per process).
-struct MaxSpeedChanges {
-    std::mutex mutex;
-    std::vector<std::string> ids;
-};
-MaxSpeedChanges& maxSpeedChanges() {
-    static MaxSpeedChanges changes;
-    return changes;
-}
-}  // namespace
-
 void SnapshotBuilder::maxSpeedChanged(const std::string& id) {
-    MaxSpeedChanges& changes = maxSpeedChanges();
-    const std::lock_guard lock(changes.mutex);
-    changes.ids.push_back(id);
+    const std::lock_guard lock(maxSpeedMutex_);
+    maxSpeedChanges_.push_back(id);
 }
 
 std::int32_t SnapshotBuilder::intern(const std::string& s) {
@@ -103,15 +89,14 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
     out.columns_ = columns_;
     resize(out, order_.size());
     {
-        MaxSpeedChanges& changes = maxSpeedChanges();
-        const std::lock_guard lock(changes.mutex);
+        const std::lock_guard lock(maxSpeedMutex_);
         if (columns_.contains(SnapshotColumns::MaxSpeed)) {
-            for (const std::string& id : changes.ids) {
+            for (const std::string& id : maxSpeedChanges_) {
                 if (const auto it = running_.find(id); it != running_.end())
                     it->second.maxSpeed = libsumo::Vehicle::getMaxSpeed(id);
             }
         }
-        changes.ids.clear();
+        maxSpeedChanges_.clear();
     }
 
     const bool position = columns_.contains(SnapshotColumns::Position);

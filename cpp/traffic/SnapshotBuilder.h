@@ -2,12 +2,14 @@
 
 #include <cstdint>
 #include <map>
+#include <mutex>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "sbsim/kernel/ParallelFor.h"
 #include "sbsim/traffic/SnapshotColumns.h"
+#include "sbsim/traffic/VehicleController.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
@@ -18,12 +20,12 @@ namespace sbsim::traffic {
 /// (Vehicle::subscribe + getAllSubscriptionResults, which allocates a result object per value):
 /// getters won clearly (bench/README.md), so getters it is. Each getter looks the vehicle up by id,
 /// and that lookup dominates, so the builder asks as little as it can: length, width and type are
-/// read once, at departure; max speed at departure and again only after VehicleController changed
-/// it (maxSpeedChanged()); acceleration is derived from the speed change over the step, exactly as
+/// read once, at departure; max speed at departure and again only after a VehicleController told
+/// it of a change (maxSpeedChanged()); acceleration is derived from the speed change over the step, exactly as
 /// SUMO computes it (the getter only for a vehicle's first step). The reads are independent per
 /// vehicle and read-only, so they are spread over the machine's cores. A vehicle's lane is interned
 /// only when it changes.
-class SnapshotBuilder {
+class SnapshotBuilder : public MaxSpeedListener {
 public:
     /// The values to read from now on (default: all). Constant values it adds are read at once for
     /// the vehicles already running.
@@ -39,9 +41,9 @@ public:
 
     std::size_t running() const { return running_.size(); }
 
-    /// Tells every builder that `id`'s max speed was changed by a command: it is read again at
-    /// the next fill. Called by VehicleController::setMaxSpeed.
-    static void maxSpeedChanged(const std::string& id);
+    /// `id`'s max speed was changed by a command: it is read again at the next fill. Called by the
+    /// VehicleControllers given this builder (through SumoBridge::maxSpeedListener()).
+    void maxSpeedChanged(const std::string& id) override;
 
 private:
     struct Record {
@@ -67,7 +69,9 @@ private:
     bool orderStale_ = true;
     std::unordered_map<std::string, std::int32_t> internIndex_;
     std::vector<std::string> strings_;
-    std::vector<std::int32_t> laneRoad_;  // by interned lane index; -1 unknown
+    std::vector<std::int32_t> laneRoad_;        // by interned lane index; -1 unknown
+    std::mutex maxSpeedMutex_;                  // a story's Python threads may command vehicles too
+    std::vector<std::string> maxSpeedChanges_;  // since the last fill
 };
 
 }  // namespace sbsim::traffic

@@ -102,6 +102,8 @@ public:
     /// SUMO's version string, e.g. "SUMO v1_28_0" (asked of libsumo; SUMO must be loaded).
     std::string sumoVersion() const;
     double snapshotSeconds() const { return snapshotSeconds_; }
+    /// What VehicleControllers tell of max-speed changes (the snapshot reads max speeds only then).
+    MaxSpeedListener& maxSpeedListener() { return builder_; }
     /// SUMO's warnings so far, by kind (set a log on it before load() to keep them all).
     SumoWarnings& warnings() { return warnings_; }
     const SumoWarnings& warnings() const { return warnings_; }

@@ -1,7 +1,5 @@
 #include "sbsim/traffic/VehicleController.h"
 
-#include "sbsim/traffic/SnapshotBuilder.h"
-
 #include <libsumo/Edge.h>
 #include <libsumo/TraCIDefs.h>
 #include <libsumo/Vehicle.h>
@@ -27,7 +25,7 @@ Color VehicleController::color() const {
 
 void VehicleController::setMaxSpeed(double mps) {
     Vehicle::setMaxSpeed(id_, mps);
-    SnapshotBuilder::maxSpeedChanged(id_);  // the snapshot reads max speed only when it changes
+    if (listener_ != nullptr) listener_->maxSpeedChanged(id_);  // the snapshot reads max speed only then
 }
 void VehicleController::setSpeed(double mps) { Vehicle::setSpeed(id_, mps); }
 void VehicleController::slowDown(double mps, double seconds) { Vehicle::slowDown(id_, mps, seconds); }
@@ -39,7 +37,7 @@ void VehicleController::changeLaneRelative(int offset, double seconds) {
 void VehicleController::setSpeedFactor(double factor) { Vehicle::setSpeedFactor(id_, factor); }
 void VehicleController::setType(const std::string& typeId) {
     Vehicle::setType(id_, typeId);
-    SnapshotBuilder::maxSpeedChanged(id_);  // the new type brings its own max speed
+    if (listener_ != nullptr) listener_->maxSpeedChanged(id_);  // the new type brings its own max speed
 }
 void VehicleController::setColor(const Color& color) {
     Vehicle::setColor(id_, libsumo::TraCIColor(color.r, color.g, color.b, color.a));

@@ -16,13 +16,25 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// Told when a command changed a vehicle's max speed: the per-step snapshot reads max speeds
+/// only then.
+class SBSIM_API MaxSpeedListener {
+public:
+    virtual void maxSpeedChanged(const std::string& id) = 0;
+
+protected:
+    ~MaxSpeedListener() = default;
+};
+
 /// Commands and live queries for one vehicle, forwarded to libsumo::Vehicle. Effects and services
 /// act on vehicles only through this class, so every SUMO command has one place to look — and the
-/// per-step snapshot learns of max-speed changes here (change it through this class, not libsumo).
+/// per-step snapshot (`listener`) learns of max-speed changes here (change it through this class,
+/// not libsumo). One vehicle has one controller: traffic::VehicleRegistry hands it out.
 /// The methods are virtual so unit tests can stand a model vehicle in for SUMO's.
 class SBSIM_API VehicleController {
 public:
-    explicit VehicleController(std::string id) : id_(std::move(id)) {}
+    explicit VehicleController(std::string id, MaxSpeedListener* listener = nullptr)
+        : id_(std::move(id)), listener_(listener) {}
     virtual ~VehicleController() = default;
 
     const std::string& id() const { return id_; }
@@ -71,6 +83,7 @@ public:
 
 private:
     std::string id_;
+    MaxSpeedListener* listener_;
 };
 
 }  // namespace sbsim::traffic

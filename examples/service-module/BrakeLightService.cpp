@@ -29,13 +29,12 @@ void BrakeLightService::indicate(const sbsim::services::V2xMessage& message) {
     if (!self || !sender) return;
     const double distance = (snapshot().positions().col(*self) - snapshot().positions().col(*sender)).norm();
     if (distance > reactDistance_) return;
-    ownMaxSpeed_ = vehicle().maxSpeed();
-    vehicle().setMaxSpeed(cautionSpeed_);
+    vehicle().setMaxSpeed(cautionSpeed_);  // composes with the stories' caps
     scheduleAfter(sbsim::kernel::SimTime::fromSeconds(cautionTime_), cautionOver_);
 }
 
 void BrakeLightService::handleMessage(sbsim::kernel::Message& msg) {
-    if (&msg == &cautionOver_) vehicle().setMaxSpeed(ownMaxSpeed_);
+    if (&msg == &cautionOver_) vehicle().endMaxSpeed();  // whatever rules without this cap comes back
 }
 
 }  // namespace example

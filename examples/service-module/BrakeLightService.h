@@ -33,7 +33,6 @@ private:
     double reactDistance_ = 100.0;
     double cautionSpeed_ = 8.0;
     double cautionTime_ = 5.0;
-    double ownMaxSpeed_ = 0.0;
     sbsim::kernel::Message cautionOver_{"caution over"};
 };
 

@@ -7,7 +7,9 @@ namespace sbsim::storyboard {
 /// Brakes with the vehicle's emergency deceleration, ignoring its safe-speed checks, while active.
 class EmergencyStopEffect : public Effect {
 public:
-    void apply(EffectScope& scope) override { scope.stack().pushHold(scope.token(), EffectStack::Hold::EmergencyStop); }
+    void apply(EffectScope& scope) override {
+        scope.stack().pushHold(scope.token(), traffic::EffectStack::Hold::EmergencyStop);
+    }
     void remove(EffectScope& scope) override { scope.stack().remove(scope.token()); }
 };
 

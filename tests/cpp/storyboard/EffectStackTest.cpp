@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "sbsim/storyboard/EffectStack.h"
+#include "sbsim/traffic/EffectStack.h"
 
-namespace sbsim::storyboard {
+namespace sbsim::traffic {
 namespace {
 
 constexpr double kOwnMaxSpeed = 33.0;
@@ -21,7 +21,7 @@ constexpr double kSpeed = 12.0;
 constexpr double kEmergencyDecel = 9.0;
 constexpr double kOwnSpeedFactor = 1.1;
 const std::string kOwnType = "car";
-constexpr traffic::Color kOwnColor{1, 2, 3, 255};
+constexpr Color kOwnColor{1, 2, 3, 255};
 constexpr int kOwnLane = 1;
 constexpr int kRoadLanes = 3;
 const std::string kOwnDestination = "home";
@@ -44,7 +44,7 @@ double mapSpeedFactor(double factor, const std::string& from, const std::string&
 }
 
 /// A vehicle that behaves like SUMO's for the commands the stack sends, and counts them.
-class ModelVehicle : public traffic::VehicleController {
+class ModelVehicle : public VehicleController {
 public:
     ModelVehicle() : VehicleController("model") {}
 
@@ -75,7 +75,7 @@ public:
     }
     std::string typeId() const override { return type_; }
     double speedFactor() const override { return speedFactor_; }
-    traffic::Color color() const override { return color_; }
+    Color color() const override { return color_; }
     void setSpeedFactor(double factor) override {
         speedFactor_ = factor;
         ++commands;
@@ -86,7 +86,7 @@ public:
         maxSpeed_ = typeMaxSpeed(type);  // a per-vehicle max speed is lost with the old type
         ++commands;
     }
-    void setColor(const traffic::Color& color) override {
+    void setColor(const Color& color) override {
         color_ = color;
         ++commands;
     }
@@ -105,14 +105,14 @@ public:
     }
     void changeTarget(const std::string& edge) override {
         ++commands;
-        if (edge == kUnreachable) throw traffic::CommandRefused("no connection to 'island'");
+        if (edge == kUnreachable) throw CommandRefused("no connection to 'island'");
         destination_ = edge;
         routedVia_ = via_;
     }
 
     double speedFactor_ = kOwnSpeedFactor;
     std::string type_ = kOwnType;
-    traffic::Color color_ = kOwnColor;
+    Color color_ = kOwnColor;
     double maxSpeed_ = kOwnMaxSpeed;
     int speedMode_ = kOwnSpeedMode;
     std::optional<double> held_;
@@ -131,7 +131,7 @@ struct Spec {
     double cap = 0;         // also the factor, the red of a Paint and the lane
     std::string type = {};  // also a Route's target
     std::vector<std::string> via = {};
-    traffic::Color color() const { return {static_cast<std::uint8_t>(cap), 0, 0, 255}; }
+    Color color() const { return {static_cast<std::uint8_t>(cap), 0, 0, 255}; }
     std::string label() const {
         switch (kind) {
             case Cap:
@@ -237,7 +237,7 @@ void expectState(const ModelVehicle& v, const std::vector<Spec>& active, const s
     EXPECT_EQ(v.type_, type) << context;
     EXPECT_DOUBLE_EQ(v.maxSpeed_, cap.value_or(typeMaxSpeed(type))) << context;
     EXPECT_NEAR(v.speedFactor_, e.factor.value_or(mapSpeedFactor(kOwnSpeedFactor, kOwnType, type)), 1e-12) << context;
-    const traffic::Color paint = e.paint ? Spec{Spec::Paint, *e.paint, {}}.color() : kOwnColor;
+    const Color paint = e.paint ? Spec{Spec::Paint, *e.paint, {}}.color() : kOwnColor;
     EXPECT_EQ(v.color_, paint) << context;
     if (e.lane) {
         const std::pair<int, double> held{std::min(*e.lane, kRoadLanes - 1), EffectStack::kLaneHoldSeconds};
@@ -501,4 +501,4 @@ TEST(EffectStack, UnknownTokensAreIgnored) {
 }
 
 }  // namespace
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::traffic

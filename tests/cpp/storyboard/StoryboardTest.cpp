@@ -208,7 +208,7 @@ TEST_F(StoryboardTest, ALaneIsRenewedEachStepWhileItsStoryIsActiveOnly) {
         std::make_shared<Story>(std::make_shared<TimeCondition>(SimTime::fromSeconds(2), SimTime::fromSeconds(3)),
                                 std::vector<EffectPtr>{std::make_shared<LaneEffect>(1)}, "keep left"));
     for (int t = 1; t <= 6; ++t) step(t, {car("a", 10), car("b", 10)});
-    const double hold = EffectStack::kLaneHoldSeconds;
+    const double hold = traffic::EffectStack::kLaneHoldSeconds;
     // t=2: the activation's command and the step's renewal; t=3: renewed; t=4: released; then nothing.
     EXPECT_EQ(commands.changeLane.at("a"),
               (std::vector<std::pair<int, double>>{{1, hold}, {1, hold}, {1, hold}, {0, 0.0}}));

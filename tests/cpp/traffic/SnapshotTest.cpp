@@ -241,11 +241,12 @@ TEST(SnapshotColumns, OnlyWhatWasAskedForIsReadAndLateReadersGetEverything) {
 TEST(SnapshotCommanded, MatchesLibsumoWhileVehiclesAreCommanded) {
     class Commander : public kernel::Listener {
     public:
+        explicit Commander(traffic::MaxSpeedListener& listener) : listener_(listener) {}
         void receiveSignal(kernel::Module&, kernel::SignalId, const kernel::Object& value) override {
             const auto& s = dynamic_cast<const traffic::VehicleSnapshot&>(value);
             ++steps;
             for (traffic::VehicleSnapshot::Index i = 0; i < s.size(); ++i) {
-                traffic::VehicleController v(s.ids()[i]);
+                traffic::VehicleController v(s.ids()[i], &listener_);
                 switch ((steps + i) % 37) {
                     case 0:
                         v.setMaxSpeed(3.0 + (i % 5));
@@ -274,6 +275,9 @@ TEST(SnapshotCommanded, MatchesLibsumoWhileVehiclesAreCommanded) {
         }
         int steps = 0;
         int commands = 0;
+
+    private:
+        traffic::MaxSpeedListener& listener_;
     };
     traffic::SumoSettings settings = scenarioSettings();
     settings.extraOptions = {"--step-length", "0.1"};
@@ -281,7 +285,7 @@ TEST(SnapshotCommanded, MatchesLibsumoWhileVehiclesAreCommanded) {
     kernel::Simulation sim;
     auto& bridge = sim.emplaceModule<SumoBridge>(settings);
     SnapshotChecker checker(sim, bridge);
-    Commander commander;
+    Commander commander(bridge.maxSpeedListener());
     // The checker, subscribed first, checks step k's snapshot; then the commander commands for k+1.
     sim.subscribe(SumoBridge::stepSignal, commander);
     sim.run();

@@ -86,7 +86,7 @@ TEST_F(VehicleControllerTest, LiveQueriesMatchTheSnapshot) {
 TEST_F(VehicleControllerTest, SetMaxSpeedShowsInTheNextSnapshot) {
     stepUntil(10);
     const std::string id = freshVehicle();
-    VehicleController c(id);
+    VehicleController c(id, &bridge_->maxSpeedListener());
     const double before = maxSpeedOf(id);
     ASSERT_GT(before, 5.0);
     c.setMaxSpeed(5.0);

@@ -1,11 +1,11 @@
-#include "sbsim/storyboard/EffectStack.h"
+#include "sbsim/traffic/EffectStack.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdio>
 
-namespace sbsim::storyboard {
+namespace sbsim::traffic {
 
 std::optional<double> EffectStack::effectiveCap() const {
     if (caps_.empty()) return std::nullopt;
@@ -39,7 +39,7 @@ void EffectStack::pushType(Token token, std::string typeId) {
     if (const auto v = types_.push(token, std::move(typeId), [this] { return ownType(); })) applyType(*v);
 }
 
-void EffectStack::pushColor(Token token, traffic::Color color) {
+void EffectStack::pushColor(Token token, Color color) {
     if (const auto v = colors_.push(token, color, [this] { return vehicle_->color(); })) vehicle_->setColor(*v);
 }
 
@@ -131,7 +131,7 @@ void EffectStack::applyRoute(const Route& route, const std::vector<std::string>&
     try {
         if (route.via != viaBefore) vehicle_->setVia(route.via);
         if (target) vehicle_->changeTarget(*target);
-    } catch (const traffic::CommandRefused& e) {
+    } catch (const CommandRefused& e) {
         warn(fmt::format("vehicle '{}' keeps its route: {}", vehicle_->id(), e.what()));
     }
 }
@@ -186,4 +186,4 @@ void EffectStack::applyHold(std::optional<Hold> before) {
     }
 }
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::traffic

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-namespace sbsim::storyboard {
+namespace sbsim::traffic {
 
 /// One domain of a vehicle's effects (a speed factor, a type, a colour): the most recently
 /// activated active entry rules, and the value from before the first entry comes back when the
@@ -59,4 +59,4 @@ private:
     T original_{};
 };
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::traffic

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
-#include "sbsim/storyboard/LatestWins.h"
 #include "sbsim/traffic/Color.h"
+#include "sbsim/traffic/LatestWins.h"
 #include "sbsim/traffic/VehicleController.h"
 
-namespace sbsim::storyboard {
+namespace sbsim::traffic {
 
 /// One vehicle's active built-in effects, composed per domain so that the vehicle always behaves
 /// as if only the currently active stories had ever acted (Artery's stack restores in the wrong
@@ -46,14 +46,13 @@ public:
     static constexpr double kLaneHoldSeconds = 5.0;
 
     /// Without `warn`, warnings go to stderr.
-    explicit EffectStack(traffic::VehicleController& vehicle, Warn warn = {})
-        : vehicle_(&vehicle), warn_(std::move(warn)) {}
+    explicit EffectStack(VehicleController& vehicle, Warn warn = {}) : vehicle_(&vehicle), warn_(std::move(warn)) {}
 
     void pushSpeedCap(Token token, double mps);
     void pushHold(Token token, Hold hold);
     void pushSpeedFactor(Token token, double factor);
     void pushType(Token token, std::string typeId);
-    void pushColor(Token token, traffic::Color color);
+    void pushColor(Token token, Color color);
     /// Keeps the vehicle on lane `index` (from the right, 0-based; clamped to the road's lanes).
     void pushLane(Token token, int index);
     void pushRoute(Token token, Route route);
@@ -77,7 +76,7 @@ public:
     std::optional<Hold> effectiveHold() const;
     std::optional<double> effectiveSpeedFactor() const { return factors_.effective(); }
     std::optional<std::string> effectiveType() const { return types_.effective(); }
-    std::optional<traffic::Color> effectiveColor() const { return colors_.effective(); }
+    std::optional<Color> effectiveColor() const { return colors_.effective(); }
     std::optional<int> effectiveLane() const { return lanes_.effective(); }
     std::optional<Route> effectiveRoute() const { return routes_.effective(); }
 
@@ -93,7 +92,7 @@ private:
     void applyRoute(const Route& route, const std::vector<std::string>& viaBefore);
     void warn(const std::string& message) const;
 
-    traffic::VehicleController* vehicle_;
+    VehicleController* vehicle_;
     Warn warn_;
     std::vector<std::pair<Token, double>> caps_;  // activation order
     std::vector<std::pair<Token, Hold>> holds_;   // activation order
@@ -102,11 +101,11 @@ private:
     bool emergencyHeld_ = false;  // the EmergencyStop's vehicle stands and is held at 0
     LatestWins<double> factors_;
     LatestWins<std::string> types_;
-    LatestWins<traffic::Color> colors_;
+    LatestWins<Color> colors_;
     LatestWins<int> lanes_;
     std::string laneRoad_;  // the road whose lane count laneRoadLanes_ is
     int laneRoadLanes_ = 0;
     LatestWins<Route> routes_;
 };
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::traffic
