@@ -9,8 +9,8 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from sbsim_helpers import StoryRun, run_story
-from storyboard.runner import run
+from sbsim_helpers import STORIES, StoryRun, read_fcd, run_story
+from storyboard.runner import read_events, run
 
 CLOSED = ("B1C1", "C1B1")
 CLOSE_FROM, CLOSE_TO = 60, 180
@@ -193,3 +193,52 @@ def test_check_lists_world_stories(trips_cfg: Path, tmp_path: Path) -> None:
         "story 'w'\n  world story: acts on the network\n  TimeCondition(5 s, 9 s)\n  → CloseRoadEffect(B1C1, C1B1)\n"
         in (result.stdout)
     )
+
+
+def test_bridge_closure_story_runs_as_its_readme_says(tmp_path: Path) -> None:
+    folder = STORIES / "bridge-closure"
+    events = tmp_path / "bridge.jsonl"
+    fcd_path = tmp_path / "bridge.fcd.xml"
+    result = run(
+        folder / "bridge-closure.sumocfg",
+        story=folder / "story.py",
+        events=events,
+        sumo_options=[f"--fcd-output {fcd_path}"],
+        timeout=120,
+    )
+    assert result.returncode == 0, result.stderr
+    assert "activations bridge-closed: 1" in result.stdout
+    lines = [e for e in read_events(events) if e["story"] == "bridge-closed"]
+    assert [(e["t"], e["type"], e["vehicle"]) for e in lines] == [(120, "activate", None), (361, "deactivate", None)]
+    fcd = read_fcd(fcd_path)
+    bridge = {v: lanes for v, lanes in fcd.lane.items() if any(lane.startswith("bridge_") for lane in lanes.values())}
+    on_bridge = {t: {v for v, lanes in bridge.items() if lanes.get(t, "").startswith("bridge_")} for t in fcd.times}
+    assert on_bridge[120] and all(on_bridge[t] <= on_bridge[120] for t in fcd.times if 120 <= t <= 361)
+    assert not any(on_bridge[t] for t in fcd.times if 160 <= t <= 361)
+    assert any(on_bridge[t] for t in fcd.times if t > 361)
+    assert any(e["story"] == "detour" for e in read_events(events))
+
+
+def test_broken_down_truck_story_runs_as_its_readme_says(tmp_path: Path) -> None:
+    folder = STORIES / "broken-down-truck"
+    events = tmp_path / "truck.jsonl"
+    fcd_path = tmp_path / "truck.fcd.xml"
+    result = run(
+        folder / "broken-down-truck.sumocfg",
+        story=folder / "story.py",
+        events=events,
+        sumo_options=[f"--fcd-output {fcd_path}"],
+        timeout=120,
+    )
+    assert result.returncode == 0, result.stderr
+    log = read_events(events)
+    assert [e for e in log if e["story"] == "breakdown"] == [
+        {"t": 300, "type": "activate", "story": "breakdown", "vehicle": None}
+    ]
+    fcd = read_fcd(fcd_path)
+    truck = fcd.speeds("broken-truck")
+    assert min(truck) > 300 and set(truck.values()) == {0.0}
+    assert set(fcd.lane["broken-truck"].values()) == {"motorway_0"}
+    warnings = [e for e in log if e["story"] == "warning" and e["type"] == "signal"]
+    assert warnings and all(e["others"] == ["broken-truck"] for e in warnings)
+    assert all(e["t"] >= min(truck) for e in warnings)
