@@ -97,8 +97,9 @@ Storyboard::Storyboard(EventLog* log)
 
 void Storyboard::setNetworkController(std::unique_ptr<traffic::NetworkController> network) {
     network_ = std::move(network);
-    networkStack_ = std::make_unique<NetworkStack>(
-        *network_, [](const std::string& message) { fmt::print(stderr, "sbsim: warning: {}\n", message); });
+    networkStack_ = std::make_unique<NetworkStack>(*network_, [this](const std::string& message) {
+        fmt::print(stderr, "sbsim: warning: t={} s: {}\n", now_.str(), message);
+    });
 }
 
 Storyboard::~Storyboard() = default;

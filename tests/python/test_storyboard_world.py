@@ -4,6 +4,7 @@ from its activation on, a held traffic light lets nobody cross; and the errors s
 
 from __future__ import annotations
 
+import json
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -193,6 +194,8 @@ def test_check_lists_world_stories(trips_cfg: Path, tmp_path: Path) -> None:
         "story 'w'\n  world story: acts on the network\n  TimeCondition(5 s, 9 s)\n  → CloseRoadEffect(B1C1, C1B1)\n"
         in (result.stdout)
     )
+    as_json = run(trips_cfg, story=story, extra=["check", "--json"], timeout=120)
+    assert [s["world"] for s in json.loads(as_json.stdout)["stories"]] == [True]
 
 
 def test_bridge_closure_story_runs_as_its_readme_says(tmp_path: Path) -> None:
