@@ -46,7 +46,7 @@ def main() -> int:
         before = events_digest(options.before, args, options.end)
         after = events_digest(options.after, args, options.end)
         same = same and before == after
-        print(f"{directory.name:16} {'identical' if before == after else 'DIFFERENT'} {before[:16]} {after[:16]}")
+        print(f"{directory.name:18} {'identical' if before == after else 'DIFFERENT'} {before[:16]} {after[:16]}")
     return 0 if same else 1
 
 

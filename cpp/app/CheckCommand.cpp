@@ -20,6 +20,7 @@
 #include "sbsim/storyboard/StoryAreas.h"
 #include "sbsim/storyboard/StoryCheck.h"
 #include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/WorldStory.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 #include "sbsim/storyboard/python/StoryScript.h"
 #include "sbsim/traffic/SumoBridge.h"
@@ -119,7 +120,9 @@ int CheckCommand::run(const CommandLine& cl) {
                 if (area.radius) entry["radius"] = *area.radius;
                 areas.push_back(std::move(entry));
             }
-            out["stories"].push_back({{"name", s->name()}, {"tree", std::move(nodes)}, {"areas", std::move(areas)}});
+            const bool world = dynamic_cast<const storyboard::WorldStory*>(s.get()) != nullptr;
+            out["stories"].push_back(
+                {{"name", s->name()}, {"world", world}, {"tree", std::move(nodes)}, {"areas", std::move(areas)}});
         }
         out["warnings"] = nlohmann::ordered_json::array();
         for (const auto& w : warnings) out["warnings"].push_back({{"story", w.story}, {"message", w.message}});

@@ -21,12 +21,12 @@ Event seconds(kernel::SimTime t) {
 
 // Key by key rather than from an initializer list, which builds a temporary array per pair and
 // made each line twice as slow.
-Event event(kernel::SimTime t, std::string_view type, std::string_view story, std::string_view vehicle) {
+Event event(kernel::SimTime t, std::string_view type, std::string_view story, std::optional<std::string_view> vehicle) {
     Event e;
     e["t"] = seconds(t);
     e["type"] = type;
     e["story"] = story;
-    e["vehicle"] = vehicle;
+    e["vehicle"] = vehicle ? Event(*vehicle) : Event(nullptr);
     return e;
 }
 
@@ -38,11 +38,11 @@ void write(std::ostream& out, const Event& e) {
 
 }  // namespace
 
-void EventLog::activate(kernel::SimTime t, std::string_view story, std::string_view vehicle) {
+void EventLog::activate(kernel::SimTime t, std::string_view story, std::optional<std::string_view> vehicle) {
     write(out_, event(t, "activate", story, vehicle));
 }
 
-void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::string_view vehicle,
+void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::optional<std::string_view> vehicle,
                           std::string_view reason) {
     Event e = event(t, "deactivate", story, vehicle);
     e["reason"] = reason;

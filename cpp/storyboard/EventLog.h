@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -13,13 +14,15 @@ namespace sbsim::storyboard {
 /// Writes storyboard events as JSON Lines (one object per line, flushed at each step's end), e.g.
 /// {"t":12.3,"type":"activate","story":"rain","vehicle":"flow0.1"}. Times are rounded to 1 ms.
 /// Bytes that are not UTF-8 in names and causes become U+FFFD. pandas.read_json(path, lines=True)
-/// reads the file.
+/// reads the file. A WorldStory's activate and deactivate lines have "vehicle": null.
 class SBSIM_API EventLog {
 public:
     explicit EventLog(std::ostream& out) : out_(out) {}
 
-    void activate(kernel::SimTime t, std::string_view story, std::string_view vehicle);
-    void deactivate(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view reason);
+    /// `vehicle`: none for a WorldStory.
+    void activate(kernel::SimTime t, std::string_view story, std::optional<std::string_view> vehicle);
+    void deactivate(kernel::SimTime t, std::string_view story, std::optional<std::string_view> vehicle,
+                    std::string_view reason);
     /// `onExit`: sent as the story deactivated; the line gets "phase":"exit".
     void signal(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view cause,
                 const std::vector<std::string>& others, bool onExit = false);

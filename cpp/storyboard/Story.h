@@ -12,12 +12,14 @@
 
 namespace sbsim::storyboard {
 
-/// A condition tree and the effects applied to each vehicle while the tree holds for it.
+/// A condition tree and the effects applied to each vehicle while the tree holds for it (a
+/// WorldStory: to the network while it holds).
 class SBSIM_API Story {
 public:
     /// Throws std::invalid_argument for a null condition or effect.
     Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::optional<std::string> name = std::nullopt,
           std::optional<std::uint64_t> maxActivations = std::nullopt);
+    virtual ~Story() = default;  // a WorldStory is one
 
     Condition& condition() const { return *condition_; }
     const ConditionPtr& conditionPtr() const { return condition_; }

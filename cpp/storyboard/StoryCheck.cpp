@@ -8,6 +8,7 @@
 #include <set>
 
 #include "sbsim/storyboard/StoryAreas.h"
+#include "sbsim/storyboard/WorldStory.h"
 #include "sbsim/storyboard/conditions/AccelerationCondition.h"
 #include "sbsim/storyboard/conditions/AllCondition.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
@@ -25,12 +26,15 @@
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
+#include "sbsim/storyboard/effects/CloseRoadEffect.h"
 #include "sbsim/storyboard/effects/ColorEffect.h"
 #include "sbsim/storyboard/effects/EmergencyStopEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
+#include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/SpeedFactorEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
+#include "sbsim/storyboard/effects/TrafficLightEffect.h"
 #include "sbsim/storyboard/effects/TypeEffect.h"
 
 namespace sbsim::storyboard {
@@ -191,10 +195,29 @@ std::string describe(const Effect& e) {
     return e.typeName();
 }
 
+std::string describe(const WorldEffect& e) {
+    if (const auto* c = dynamic_cast<const CloseRoadEffect*>(&e))
+        return fmt::format("CloseRoadEffect({})", fmt::join(c->edges(), ", "));
+    if (const auto* t = dynamic_cast<const TrafficLightEffect*>(&e))
+        return fmt::format("TrafficLightEffect('{}', '{}')", t->tls(), t->state());
+    if (const auto* s = dynamic_cast<const SpawnEffect*>(&e)) {
+        const SpawnEffect::Spec& spec = s->spec();
+        const std::string way = spec.route.empty() ? fmt::format("{} to {}", spec.from, spec.to)
+                                                   : fmt::format("route {}", fmt::join(spec.route, " "));
+        return fmt::format("SpawnEffect('{}', {}{})", spec.id, way, spec.type ? ", type " + *spec.type : "");
+    }
+    return e.typeName();
+}
+
 std::vector<DescribedNode> describeStory(const Story& story) {
     std::vector<DescribedNode> out;
+    const auto* world = dynamic_cast<const WorldStory*>(&story);
+    if (world != nullptr) out.push_back({1, "world story: acts on the network"});
     describeTree(story.condition(), 1, out);
     for (const EffectPtr& e : story.effects()) out.push_back({1, "→ " + describe(*e)});
+    if (world != nullptr) {
+        for (const WorldEffectPtr& e : world->worldEffects()) out.push_back({1, "→ " + describe(*e)});
+    }
     return out;
 }
 
@@ -202,6 +225,15 @@ std::vector<CheckWarning> checkStories(const std::vector<StoryPtr>& stories, con
     std::vector<CheckWarning> out;
     const Eigen::Matrix2d& b = scenario.boundary;
     const SimTime runEnd = scenario.end.value_or(SimTime::max());
+    // Vehicles the stories add themselves are as defined as the route files' ones.
+    std::set<std::string> spawned;
+    for (const StoryPtr& story : stories) {
+        if (const auto* world = dynamic_cast<const WorldStory*>(story.get())) {
+            for (const WorldEffectPtr& e : world->worldEffects()) {
+                if (const auto* s = dynamic_cast<const SpawnEffect*>(e.get())) spawned.insert(s->spec().id);
+            }
+        }
+    }
     for (const StoryPtr& story : stories) {
         const auto warn = [&](std::string message) { out.push_back({story->name(), std::move(message)}); };
         // The story's areas as the GUI and the report draw them (each shared polygon once).
@@ -229,7 +261,7 @@ std::vector<CheckWarning> checkStories(const std::vector<StoryPtr>& stories, con
                 if (!scenario.vehicleDefined) return;
                 std::set<std::string> unknown;
                 for (const std::string& id : s->ids()) {
-                    if (!scenario.vehicleDefined(id)) unknown.insert(id);
+                    if (!scenario.vehicleDefined(id) && !spawned.contains(id)) unknown.insert(id);
                 }
                 if (!unknown.empty())
                     warn(fmt::format("CarSetCondition names vehicles no route file defines: {}", idList(unknown)));

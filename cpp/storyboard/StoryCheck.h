@@ -12,6 +12,7 @@
 #include "sbsim/storyboard/Condition.h"
 #include "sbsim/storyboard/Effect.h"
 #include "sbsim/storyboard/Story.h"
+#include "sbsim/storyboard/WorldEffect.h"
 
 namespace sbsim::storyboard {
 
@@ -39,7 +40,9 @@ struct SBSIM_API DescribedNode {
 /// A condition or effect in one line: its class name and parameters, e.g. "TimeCondition(120 s, 420 s)".
 SBSIM_API std::string describe(const Condition& condition);
 SBSIM_API std::string describe(const Effect& effect);
-/// The story's condition tree (children indented one level) and then its effects.
+SBSIM_API std::string describe(const WorldEffect& effect);
+/// The story's condition tree (children indented one level) and then its effects (a WorldStory's
+/// world effects, after a first line "world story: acts on the network").
 SBSIM_API std::vector<DescribedNode> describeStory(const Story& story);
 /// The warnings `sbsim check` gives for a story set, in story order.
 SBSIM_API std::vector<CheckWarning> checkStories(const std::vector<StoryPtr>& stories, const CheckScenario& scenario);

@@ -7,6 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sbsim/kernel/OneLine.h"
+#include "sbsim/storyboard/StoryError.h"
 #include "sbsim/storyboard/StoryPalette.h"
 #include "sbsim/storyboard/StoryboardSignal.h"
 #include "sbsim/storyboard/effects/ColorEffect.h"
@@ -67,12 +69,39 @@ private:
     traffic::EffectStack::Token token_ = 0;
 };
 
+/// The WorldScope of one (world story, effect) activation.
+class Storyboard::WorldScopeImpl : public WorldScope {
+public:
+    WorldScopeImpl(Storyboard& board, const Story& story) : board_(board), story_(story) {}
+    void setToken(NetworkStack::Token token) { token_ = token; }
+
+    const Story& story() const override { return story_; }
+    kernel::SimTime now() const override { return board_.now_; }
+    traffic::NetworkController& network() override { return *board_.network_; }
+    NetworkStack& stack() override { return *board_.networkStack_; }
+    NetworkStack::Token token() const override { return token_; }
+
+private:
+    Storyboard& board_;
+    const Story& story_;
+    NetworkStack::Token token_ = 0;
+};
+
 Storyboard::Storyboard(EventLog* log)
     : kernel::Module("storyboard"),
       log_(log),
       ownRegistry_(std::make_unique<traffic::VehicleRegistry>()),
       registry_(ownRegistry_.get()),
-      queries_(std::make_unique<traffic::SumoQueries>()) {}
+      queries_(std::make_unique<traffic::SumoQueries>()) {
+    setNetworkController(std::make_unique<traffic::NetworkController>());
+}
+
+void Storyboard::setNetworkController(std::unique_ptr<traffic::NetworkController> network) {
+    network_ = std::move(network);
+    networkStack_ = std::make_unique<NetworkStack>(*network_, [this](const std::string& message) {
+        fmt::print(stderr, "sbsim: warning: t={} s: {}\n", now_.str(), message);
+    });
+}
 
 Storyboard::~Storyboard() = default;
 
@@ -131,7 +160,11 @@ void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
     if (!story->explicitName_) story->name_ = fmt::format("story{}", stories_.size());
     collectConditions(story->condition());
-    pure_.push_back(story->condition().pure());
+    const bool world = dynamic_cast<const WorldStory*>(story.get()) != nullptr;
+    if (world) worldStories_.push_back(stories_.size());
+    world_.push_back(world);
+    worldStates_.resize(stories_.size() + 1);
+    pure_.push_back(!world && story->condition().pure());
     maxActivations_.push_back(story->maxActivations().value_or(std::numeric_limits<std::uint64_t>::max()));
     if (pure_.back()) pureStories_.push_back(stories_.size());
     stories_.push_back(std::move(story));
@@ -148,6 +181,13 @@ std::size_t Storyboard::maxConditionStates() const {
     std::size_t most = 0;
     for (const Condition* c : conditions_) most = std::max(most, c->heldVehicles());
     return most;
+}
+
+bool Storyboard::isActive(const Story& story) const {
+    for (const std::size_t s : worldStories_) {
+        if (stories_[s].get() == &story) return worldStates_[s].active;
+    }
+    return false;
 }
 
 bool Storyboard::isActive(const std::string& vehicle, const Story& story) const {
@@ -200,6 +240,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 5.0));
     const EvaluationContext ctx(snapshot, grid_, queries_.get());
     for (Condition* c : conditions_) c->prepare(ctx);
+    if (!worldStories_.empty()) updateWorld();
 
     // All pure stories in one parallel loop: one hand-over to the workers per step, and each
     // vehicle's data is read while still in cache.
@@ -226,6 +267,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         std::uint8_t* const active = activeFlags_.data() + static_cast<std::size_t>(i) * stride;
         bool changed = false;
         for (std::size_t s = 0; s < stride; ++s) {
+            if (world_[s]) continue;
             ConditionResult tested(false);
             const ConditionResult& result =
                 pure_[s] ? precomputed_[s][i] : (tested = stories_[s]->condition().test(ctx, i));
@@ -250,6 +292,69 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     stateIds_ = ids;
     if (log_ != nullptr) log_->flush();
     updateSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+void Storyboard::updateWorld() {
+    networkStack_->step();
+    worldSnapshot_.assign({traffic::VehicleSnapshot::Vehicle{}}, now_);  // one row, id ""
+    worldGrid_.build(worldSnapshot_, 100);
+    const EvaluationContext ctx(worldSnapshot_, worldGrid_);
+    for (const std::size_t s : worldStories_) {
+        const bool holds = stories_[s]->condition().test(ctx, 0).isTrue();
+        if (holds && !worldStates_[s].active) {
+            activateWorld(s);
+        } else if (!holds && worldStates_[s].active) {
+            deactivateWorld(s);
+        }
+    }
+}
+
+namespace {
+
+/// Runs one world effect's apply or remove; what it throws becomes a StoryError naming the story,
+/// the effect and the time (a wrong edge or light id in a script ends the run with exit code 2).
+template <typename F>
+void worldCommand(const Story& story, const WorldEffect& effect, kernel::SimTime now, F command) {
+    try {
+        command();
+    } catch (const StoryError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw StoryError(fmt::format("story '{}': {} at t={} s: {}", story.name(), effect.typeName(), now.str(),
+                                     kernel::oneLine(e.what())));
+    }
+}
+
+}  // namespace
+
+void Storyboard::activateWorld(std::size_t s) {
+    Story& story = *stories_[s];
+    WorldState& state = worldStates_[s];
+    state.active = true;
+    ++story.activations_;
+    ++story.activeVehicles_;
+    if (log_ != nullptr) log_->activate(now_, story.name(), std::nullopt);
+    WorldScopeImpl scope(*this, story);
+    for (const WorldEffectPtr& effect : static_cast<const WorldStory&>(story).worldEffects()) {
+        const NetworkStack::Token token = registry_->newToken();
+        scope.setToken(token);
+        worldCommand(story, *effect, now_, [&] { effect->apply(scope); });
+        state.applied.emplace_back(effect.get(), token);
+    }
+}
+
+void Storyboard::deactivateWorld(std::size_t s) {
+    Story& story = *stories_[s];
+    WorldState& state = worldStates_[s];
+    state.active = false;
+    --story.activeVehicles_;
+    if (log_ != nullptr) log_->deactivate(now_, story.name(), std::nullopt, "condition");
+    WorldScopeImpl scope(*this, story);
+    for (auto it = state.applied.rbegin(); it != state.applied.rend(); ++it) {
+        scope.setToken(it->second);
+        worldCommand(story, *it->first, now_, [&] { it->first->remove(scope); });
+    }
+    state.applied.clear();
 }
 
 void Storyboard::matchStates(const std::vector<std::string>& ids) {

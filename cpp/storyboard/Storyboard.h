@@ -14,9 +14,12 @@
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/RandomStream.h"
 #include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/NetworkStack.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/traffic/EffectStack.h"
+#include "sbsim/storyboard/WorldStory.h"
 #include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/NetworkController.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/TrafficQueries.h"
 #include "sbsim/traffic/VehicleController.h"
@@ -37,6 +40,13 @@ namespace sbsim::storyboard {
 /// its state dropped, without commands to SUMO. Stories whose conditions are all pure (no state,
 /// no side effects) are evaluated for every vehicle up front, in parallel; that changes nothing
 /// but the time, since only the ordered pass acts on the results.
+///
+/// WorldStories are evaluated once per step, in registration order, after the vehicles that left
+/// and before the per-vehicle pass: the network the step's vehicle stories act on is then the one
+/// the world stories made for that step (a closure's re-routing is done before a vehicle story
+/// commands the vehicle, a vehicle spawned at t is known to SUMO from t on). Their conditions see
+/// a world of one row with the id "" (no SUMO vehicle has that id), so Hold and Rising keep their
+/// state for the world apart from any vehicle's.
 class SBSIM_API Storyboard : public kernel::Module, private kernel::Listener {
 public:
     /// Payload: StoryboardSignal. Emitted by SignalEffect on activation.
@@ -61,6 +71,8 @@ public:
     /// Replaces how vehicles are commanded (default: libsumo through traffic::VehicleController),
     /// in the registry the board uses.
     void setControllerFactory(ControllerFactory factory) { registry_->setControllerFactory(std::move(factory)); }
+    /// Replaces how world effects command the network (default: libsumo).
+    void setNetworkController(std::unique_ptr<traffic::NetworkController> network);
     /// Replaces what conditions ask of the traffic beyond the snapshot (default: libsumo).
     void setTrafficQueries(std::unique_ptr<traffic::TrafficQueries> queries) { queries_ = std::move(queries); }
 
@@ -86,6 +98,10 @@ public:
     void update(const traffic::VehicleSnapshot& snapshot, std::vector<std::string> left);
 
     bool isActive(const std::string& vehicle, const Story& story) const;
+    /// Whether the WorldStory `story` is active now.
+    bool isActive(const Story& story) const;
+    /// The network's composition of world effects (closed edges, held signals).
+    const NetworkStack& network() const { return *networkStack_; }
     /// Wall-clock seconds spent in update() (a profiling figure for the summary).
     double updateSeconds() const { return updateSeconds_; }
     /// How many signals SignalEffects emitted, by cause (the summary's figures).
@@ -116,6 +132,11 @@ private:
         bool settling = false;          // its stack holds its speed or lane (settle() each step)
     };
     class Scope;
+    class WorldScopeImpl;
+    struct WorldState {
+        bool active = false;
+        std::vector<std::pair<WorldEffect*, NetworkStack::Token>> applied;  // non-empty iff active
+    };
 
     void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
     void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
@@ -128,6 +149,9 @@ private:
                   const traffic::VehicleSnapshot& snapshot);
     void deactivate(VehicleState& state, std::size_t story, const std::string& id);
     void collectConditions(Condition& root);
+    void updateWorld();
+    void activateWorld(std::size_t story);
+    void deactivateWorld(std::size_t story);
     void applyEffect(Scope& scope, std::vector<AppliedEffect>& applied, Effect& effect);
     Effect& paintOf(std::size_t story);
 
@@ -136,7 +160,14 @@ private:
     kernel::SimTime now_;
     bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;
-    std::vector<bool> pure_;                                 // per story: its whole tree is pure
+    std::vector<bool> pure_;                 // per story: its whole tree is pure
+    std::vector<bool> world_;                // per story: a WorldStory
+    std::vector<std::size_t> worldStories_;  // indices of the WorldStories
+    std::vector<WorldState> worldStates_;    // per story (used for WorldStories)
+    std::unique_ptr<traffic::NetworkController> network_;
+    std::unique_ptr<NetworkStack> networkStack_;
+    traffic::VehicleSnapshot worldSnapshot_;  // the world's one row, at the step's time
+    traffic::NeighbourGrid worldGrid_;
     std::vector<std::uint64_t> maxActivations_;              // per story, per vehicle (max: unlimited)
     std::vector<std::size_t> pureStories_;                   // indices of the pure stories
     std::vector<std::vector<ConditionResult>> precomputed_;  // per pure story, per vehicle of the step

@@ -249,6 +249,42 @@ class Story:
         max_activations: int | None = None,
     ) -> None: ...
 
+class WorldStory(Story):
+    """A story about the network: a time-only condition, evaluated once per step; world effects."""
+
+    def __init__(
+        self,
+        condition: Condition,
+        effects: Iterable[WorldEffect] | None = None,
+        name: str | None = None,
+    ) -> None: ...
+
+class WorldEffect:
+    """Base of the effects on the network a WorldStory takes."""
+
+class CloseRoadEffect(WorldEffect):
+    edge_ids: list[str]
+    def __init__(self, edge_ids: str | Iterable[str]) -> None: ...
+
+class SpawnEffect(WorldEffect):
+    id: str
+    def __init__(
+        self,
+        id: str,
+        route: str | Iterable[str] | None = None,
+        from_edge: str | None = None,
+        to_edge: str | None = None,
+        type: str | None = None,
+        lane: int | str | None = None,
+        position: float | str | None = None,
+        speed: float | str | None = None,
+    ) -> None: ...
+
+class TrafficLightEffect(WorldEffect):
+    tls_id: str
+    state: str
+    def __init__(self, tls_id: str, state: str) -> None: ...
+
 class Parameters:
     """The run's study parameters (--param NAME=VALUE), read-only; values are bool, int, float or str."""
 

@@ -111,8 +111,9 @@ def stays(events: Events) -> pd.DataFrame:
     else:
         off["reason"] = pd.Series(dtype="object")
     # The n-th deactivation of a story for a vehicle closes its n-th activation.
-    on["n"] = on.groupby(keys).cumcount()
-    off["n"] = off.groupby(keys).cumcount()
+    # dropna=False: a WorldStory's lines have no vehicle.
+    on["n"] = on.groupby(keys, dropna=False).cumcount()
+    off["n"] = off.groupby(keys, dropna=False).cumcount()
     out = on.merge(off, on=[*keys, "n"], how="left").drop(columns="n")
     out["duration"] = out["end"] - out["start"]
     return out.reset_index(drop=True)

@@ -94,13 +94,16 @@ class EventLogError(ValueError):
 
 #: What every event carries, whatever its type (sbsim writes them first on each line).
 EVENT_FIELDS: dict[str, type | tuple[type, ...]] = {"t": (int, float), "type": str, "story": str, "vehicle": str}
+#: Event types a WorldStory writes with ``"vehicle": null`` (it acts on the network, not on a vehicle).
+WORLD_EVENT_TYPES = ("activate", "deactivate")
 
 
 def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
     """The events of an ``--events`` file, one dict per line (``pandas.read_json(path, lines=True)`` works too).
 
     Raises :class:`EventLogError` (naming the line) for a line that is not a JSON object with ``t``,
-    ``type``, ``story`` and ``vehicle``; blank lines are skipped.
+    ``type``, ``story`` and ``vehicle`` (``None`` in a WorldStory's activate and deactivate lines);
+    blank lines are skipped.
     """
     events: list[dict[str, Any]] = []
     with open(path, encoding="utf-8") as f:
@@ -114,6 +117,8 @@ def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
             if not isinstance(event, dict):
                 raise EventLogError(path, number, "not a JSON object")
             for key, kind in EVENT_FIELDS.items():
+                if key == "vehicle" and key in event and event[key] is None and event.get("type") in WORLD_EVENT_TYPES:
+                    continue
                 # bool is an int to isinstance, but never a time.
                 if not isinstance(event.get(key), kind) or isinstance(event.get(key), bool):
                     raise EventLogError(path, number, f"'{key}' missing or not a {_kind_name(kind)}")

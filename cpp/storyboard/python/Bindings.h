@@ -17,5 +17,7 @@ void bindConditions(pybind11::module_& m);
 void bindEffects(pybind11::module_& m);
 /// Story and the `board` scripts receive.
 void bindBoard(pybind11::module_& m);
+/// WorldStory and the world effects (after bindBoard: a WorldStory is a Story).
+void bindWorld(pybind11::module_& m);
 
 }  // namespace sbsim::storyboard

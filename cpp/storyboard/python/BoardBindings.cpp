@@ -7,6 +7,7 @@
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/WorldEffect.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/ScriptContext.h"
 #include "sbsim/traffic/SumoPolygons.h"
@@ -98,6 +99,10 @@ void bindBoard(py::module_& m) {
                  std::vector<EffectPtr> list;
                  if (!effects.is_none()) {
                      for (const py::handle e : py::iter(effects)) {
+                         if (py::isinstance<WorldEffect>(e)) {
+                             throw py::type_error("Story effects act on vehicles; " + py::repr(e).cast<std::string>() +
+                                                  " is a world effect: put it in a WorldStory");
+                         }
                          if (!py::isinstance<Effect>(e)) {
                              throw py::type_error("Story effects must be storyboard effects, got " +
                                                   py::repr(e).cast<std::string>());

@@ -21,6 +21,7 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
     bindConditions(m);
     bindEffects(m);
     bindBoard(m);
+    bindWorld(m);
 }
 
 PYBIND11_EMBEDDED_MODULE(timeline, m) {

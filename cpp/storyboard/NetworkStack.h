@@ -1,0 +1,79 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/traffic/LatestWins.h"
+#include "sbsim/traffic/NetworkController.h"
+
+namespace sbsim::storyboard {
+
+/// The network's active world effects, composed so that the network always looks as if only the
+/// active ones had ever acted (EffectStack's role for one vehicle):
+/// - closed edges: an edge is closed while any closure names it. Its lanes' permissions are
+///   recorded when the first closure arrives and restored exactly when the last one ends, in
+///   whatever order they end. Vehicles that would drive onto a closed edge are re-routed around
+///   it when it closes, and so are vehicles SUMO loads later (route files load vehicles ahead of
+///   their departure). A vehicle already on a closed edge drives off it. A vehicle waiting to
+///   depart that cannot avoid the closure (its trip starts or ends on a closed edge, or there is
+///   no way around) is removed before it departs, with a warning: SUMO would stop the run with
+///   "has no valid route" when inserting it. A running one keeps its route and waits at the
+///   closure (until it opens or SUMO teleports it), with a warning;
+/// - held signals: per traffic light, the most recently activated state rules; the programme and
+///   phase from before the first are set again after the last.
+/// A command goes to SUMO only when an effective value changes.
+class SBSIM_API NetworkStack {
+public:
+    using Token = std::uint64_t;
+    using Warn = std::function<void(const std::string& message)>;
+
+    explicit NetworkStack(traffic::NetworkController& network, Warn warn = {})
+        : network_(&network), warn_(std::move(warn)) {}
+
+    /// Throws std::invalid_argument, before changing anything, if an edge is not in the network.
+    void pushClosure(Token token, const std::vector<std::string>& edges);
+    /// Throws std::invalid_argument, before changing anything, for an unknown traffic light or a
+    /// state whose length is not the light's number of signals.
+    void pushSignalState(Token token, const std::string& tls, const std::string& state);
+    /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
+    void remove(Token token);
+    /// Called once per step, before world stories act: while edges are closed, steers the vehicles
+    /// SUMO loaded in the step (and those that left a closed edge since) around them.
+    void step();
+
+    bool closed(const std::string& edge) const { return closures_.contains(edge); }
+    std::set<std::string> closedEdges() const;
+    std::optional<std::string> heldState(const std::string& tls) const;
+
+private:
+    struct Closure {
+        std::vector<Token> tokens;
+        std::vector<std::pair<std::string, traffic::LanePermissions>> lanes;  // recorded at closing
+    };
+    struct SignalHold {
+        traffic::LatestWins<std::string> states;
+        std::string program;
+        int phase = 0;
+    };
+
+    void steer(const std::string& vehicle, bool waiting);
+    bool crossesClosure(const std::vector<std::string>& route, std::size_t from) const;
+    void warn(const std::string& message) const {
+        if (warn_) warn_(message);
+    }
+
+    traffic::NetworkController* network_;
+    Warn warn_;
+    std::map<std::string, Closure> closures_;    // by edge
+    std::map<std::string, SignalHold> signals_;  // by traffic light
+    std::set<std::string> onClosed_;             // were on a closed edge when it closed: steered once off it
+};
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,44 @@
+#include "sbsim/storyboard/effects/SpawnEffect.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace sbsim::storyboard {
+
+SpawnEffect::SpawnEffect(Spec spec) : spec_(std::move(spec)) {
+    if (spec_.id.empty()) throw std::invalid_argument("SpawnEffect needs a vehicle id");
+    const bool fromTo = !spec_.from.empty() || !spec_.to.empty();
+    if (!spec_.route.empty() && fromTo) {
+        throw std::invalid_argument("SpawnEffect takes a route or from_edge and to_edge, not both");
+    }
+    if (spec_.route.empty() && (spec_.from.empty() || spec_.to.empty())) {
+        throw std::invalid_argument("SpawnEffect needs a route (a list of edges) or both from_edge and to_edge");
+    }
+}
+
+void SpawnEffect::apply(WorldScope& scope) {
+    traffic::NetworkController& network = scope.network();
+    if (network.hasVehicle(spec_.id)) throw std::invalid_argument(fmt::format("vehicle '{}' exists already", spec_.id));
+    std::vector<std::string> edges = spec_.route;
+    for (const std::string& e : edges.empty() ? std::vector<std::string>{spec_.from, spec_.to} : edges) {
+        if (!network.hasEdge(e)) throw std::invalid_argument(fmt::format("no edge '{}' in the network", e));
+    }
+    traffic::VehicleSpawn spawn;
+    spawn.id = spec_.id;
+    if (spec_.type) spawn.typeId = *spec_.type;
+    if (edges.empty()) {
+        edges = network.findRoute(spec_.from, spec_.to, spawn.typeId);
+        if (edges.empty()) throw std::invalid_argument(fmt::format("no route from {} to {}", spec_.from, spec_.to));
+    }
+    // A route id of its own: scripts' route ids and the route files' cannot collide with it.
+    spawn.routeId = "sbsim:spawn:" + spec_.id;
+    for (int n = 1; network.hasRoute(spawn.routeId); ++n) spawn.routeId = fmt::format("sbsim:spawn:{}#{}", spec_.id, n);
+    if (spec_.lane) spawn.departLane = *spec_.lane;
+    if (spec_.position) spawn.departPos = *spec_.position;
+    if (spec_.speed) spawn.departSpeed = *spec_.speed;
+    network.addRoute(spawn.routeId, edges);
+    network.addVehicle(spawn);
+}
+
+}  // namespace sbsim::storyboard
