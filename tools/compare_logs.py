@@ -27,10 +27,13 @@ def scenario_arguments(directory: Path) -> list[str]:
 
 
 def events_digest(executable: str, args: list[str], end: float | None) -> str:
+    """The event log's SHA-256, or "exit N" when the run failed (e.g. an older build lacks a feature)."""
     with tempfile.TemporaryDirectory() as tmp:
         events = Path(tmp) / "events.jsonl"
         extra = ["--end", str(end)] if end is not None else []
-        subprocess.run([executable, *args, *extra, "--quiet", "--events", str(events)], check=True)
+        run = subprocess.run([executable, *args, *extra, "--quiet", "--events", str(events)], check=False)
+        if run.returncode != 0:
+            return f"exit {run.returncode}"
         return hashlib.sha256(events.read_bytes()).hexdigest()
 
 
