@@ -6,18 +6,39 @@ ServiceVehicle::ServiceVehicle(std::shared_ptr<traffic::VehicleRegistry::Vehicle
                                traffic::VehicleRegistry& registry)
     : VehicleController(vehicle->controller->id()), vehicle_(std::move(vehicle)), registry_(registry) {}
 
-void ServiceVehicle::setMaxSpeed(double mps) {
-    // Pushed before the old cap goes: replacing never lets the vehicle's own max speed through.
-    const auto old = cap_;
-    cap_ = registry_.newToken();
-    vehicle_->stack.pushSpeedCap(*cap_, mps);
+void ServiceVehicle::replace(std::optional<traffic::EffectStack::Token>& own,
+                             const std::function<void(traffic::EffectStack::Token)>& push) {
+    const auto old = own;
+    own = registry_.newToken();
+    push(*own);
     if (old) vehicle_->stack.remove(*old);
+}
+
+void ServiceVehicle::setMaxSpeed(double mps) {
+    replace(cap_, [&](traffic::EffectStack::Token token) { vehicle_->stack.pushSpeedCap(token, mps); });
 }
 
 void ServiceVehicle::endMaxSpeed() {
     if (!cap_) return;
     vehicle_->stack.remove(*cap_);
     cap_.reset();
+}
+
+void ServiceVehicle::changeTarget(const std::string& edge) {
+    routeValue_.target = edge;
+    replace(route_, [&](traffic::EffectStack::Token token) { vehicle_->stack.pushRoute(token, routeValue_); });
+}
+
+void ServiceVehicle::setVia(const std::vector<std::string>& edges) {
+    routeValue_.via = edges;
+    replace(route_, [&](traffic::EffectStack::Token token) { vehicle_->stack.pushRoute(token, routeValue_); });
+}
+
+void ServiceVehicle::endRoute() {
+    if (!route_) return;
+    vehicle_->stack.remove(*route_);
+    route_.reset();
+    routeValue_ = {};
 }
 
 }  // namespace sbsim::services

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,10 +12,13 @@
 namespace sbsim::services {
 
 /// What one service commands its vehicle through (Service::vehicle()): the vehicle's one
-/// controller, except that a max speed is this service's cap on the vehicle's effect stack. So a
-/// service's cap and a story's compose like two stories' caps: the latest set rules, and the
-/// vehicle's own max speed comes back only after the last one ended (endMaxSpeed(), or the
-/// vehicle leaving). A service setting a cap again replaces its own.
+/// controller, except that a max speed and a route change are this service's entries on the
+/// vehicle's effect stack. So a service's cap and a story's compose like two stories' caps: the
+/// latest set rules, and the vehicle's own max speed comes back only after the last one ended
+/// (endMaxSpeed(), or the vehicle leaving); likewise a service's target or via edges and a story's
+/// RouteEffect (endRoute()). A service setting either again replaces its own entry. Lane changes
+/// stay SUMO's own timed commands (changeLane's duration), not stack entries: a story's LaneEffect
+/// renews its lane every step and so rules while it is active.
 class SBSIM_API ServiceVehicle : public traffic::VehicleController {
 public:
     ServiceVehicle(std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle, traffic::VehicleRegistry& registry);
@@ -23,6 +27,12 @@ public:
     void setMaxSpeed(double mps) override;
     /// Ends this service's cap (if any): the cap before it, or the vehicle's own max speed, rules again.
     void endMaxSpeed();
+    /// This service's route change: to `edge`, through the via edges it set (if any).
+    void changeTarget(const std::string& edge) override;
+    /// This service's route change: through `edges`, to the target it set (or the vehicle's own).
+    void setVia(const std::vector<std::string>& edges) override;
+    /// Ends this service's route change: the one before it, or the vehicle's own destination, rules again.
+    void endRoute();
 
     std::string typeId() const override { return controller().typeId(); }
     std::string roadId() const override { return controller().roadId(); }
@@ -45,15 +55,19 @@ public:
     int laneCount() const override { return controller().laneCount(); }
     std::vector<std::string> route() const override { return controller().route(); }
     std::vector<std::string> via() const override { return controller().via(); }
-    void setVia(const std::vector<std::string>& edges) override { controller().setVia(edges); }
-    void changeTarget(const std::string& edge) override { controller().changeTarget(edge); }
 
 private:
     traffic::VehicleController& controller() const { return *vehicle_->controller; }
+    /// Makes push(token) this service's entry in a domain, replacing its previous one (pushed first,
+    /// so the vehicle's own value never shows in between).
+    void replace(std::optional<traffic::EffectStack::Token>& own,
+                 const std::function<void(traffic::EffectStack::Token)>& push);
 
     std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle_;
     traffic::VehicleRegistry& registry_;
-    std::optional<traffic::EffectStack::Token> cap_;  // this service's cap on the stack
+    std::optional<traffic::EffectStack::Token> cap_;    // this service's cap on the stack
+    std::optional<traffic::EffectStack::Token> route_;  // this service's route change on the stack
+    traffic::EffectStack::Route routeValue_;            // what it asked for so far
 };
 
 }  // namespace sbsim::services

@@ -36,6 +36,14 @@ struct Order {
     bool serviceEndsFirst;
 };
 
+const auto kEveryOrder =
+    testing::Values(Order{true, true}, Order{true, false}, Order{false, true}, Order{false, false});
+
+std::string orderName(const testing::TestParamInfo<Order>& info) {
+    return std::string(info.param.serviceFirst ? "ServiceFirst" : "StoryFirst") +
+           (info.param.serviceEndsFirst ? "ServiceEndsFirst" : "StoryEndsFirst");
+}
+
 class ServiceAndStoryCaps : public testing::TestWithParam<Order> {};
 
 TEST_P(ServiceAndStoryCaps, ComposeLikeTwoStories) {
@@ -68,13 +76,7 @@ TEST_P(ServiceAndStoryCaps, ComposeLikeTwoStories) {
     EXPECT_TRUE(vehicle->stack.empty());
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryOrder, ServiceAndStoryCaps,
-                         testing::Values(Order{true, true}, Order{true, false}, Order{false, true},
-                                         Order{false, false}),
-                         [](const testing::TestParamInfo<Order>& info) {
-                             return std::string(info.param.serviceFirst ? "ServiceFirst" : "StoryFirst") +
-                                    (info.param.serviceEndsFirst ? "ServiceEndsFirst" : "StoryEndsFirst");
-                         });
+INSTANTIATE_TEST_SUITE_P(EveryOrder, ServiceAndStoryCaps, kEveryOrder, orderName);
 
 TEST(ServiceVehicle, ASecondCapReplacesTheServicesFirst) {
     traffic::VehicleRegistry registry;
@@ -117,6 +119,64 @@ TEST(ServiceVehicle, TheBoardAndAServiceShareTheVehiclesStack) {
     service.endMaxSpeed();
     EXPECT_EQ(maxSpeedOf(*vehicle), kOwnMaxSpeed);
 }
+
+/// A vehicle with a destination and via edges, routed by changeTarget as SUMO would.
+class RouteModel : public traffic::VehicleController {
+public:
+    explicit RouteModel(const std::string& id) : VehicleController(id) {}
+    std::vector<std::string> route() const override { return {"here", destination_}; }
+    std::vector<std::string> via() const override { return via_; }
+    void setVia(const std::vector<std::string>& edges) override { via_ = edges; }
+    void changeTarget(const std::string& edge) override { destination_ = edge; }
+    std::string destination_ = "home";
+    std::vector<std::string> via_;
+};
+
+const RouteModel& routeOf(const traffic::VehicleRegistry::Vehicle& v) {
+    return static_cast<const RouteModel&>(*v.controller);
+}
+
+class ServiceAndStoryRoutes : public testing::TestWithParam<Order> {};
+
+TEST_P(ServiceAndStoryRoutes, ComposeLikeTwoStories) {
+    const Order order = GetParam();
+    traffic::VehicleRegistry registry;
+    registry.setControllerFactory([](const std::string& id) { return std::make_unique<RouteModel>(id); });
+    const auto vehicle = registry.of("a");
+    ServiceVehicle service(vehicle, registry);
+    const traffic::EffectStack::Token story = registry.newToken();
+    const auto storyRoute = [&] { vehicle->stack.pushRoute(story, {"bypass", {}}); };
+    const auto serviceRoute = [&] {
+        service.setVia({"bridge"});
+        service.changeTarget("depot");  // keeps the via edge it set
+    };
+    if (order.serviceFirst) {
+        serviceRoute();
+        storyRoute();
+        EXPECT_EQ(routeOf(*vehicle).destination_, "bypass");
+        EXPECT_TRUE(routeOf(*vehicle).via_.empty());
+    } else {
+        storyRoute();
+        serviceRoute();
+        EXPECT_EQ(routeOf(*vehicle).destination_, "depot");
+        EXPECT_EQ(routeOf(*vehicle).via_, std::vector<std::string>{"bridge"});
+    }
+    if (order.serviceEndsFirst) {
+        service.endRoute();
+        EXPECT_EQ(routeOf(*vehicle).destination_, "bypass") << "the story's route rules again";
+        vehicle->stack.remove(story);
+    } else {
+        vehicle->stack.remove(story);
+        EXPECT_EQ(routeOf(*vehicle).destination_, "depot") << "the story ending must not undo the service's route";
+        EXPECT_EQ(routeOf(*vehicle).via_, std::vector<std::string>{"bridge"});
+        service.endRoute();
+    }
+    EXPECT_EQ(routeOf(*vehicle).destination_, "home");
+    EXPECT_TRUE(routeOf(*vehicle).via_.empty());
+    EXPECT_TRUE(vehicle->stack.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryOrder, ServiceAndStoryRoutes, kEveryOrder, orderName);
 
 }  // namespace
 }  // namespace sbsim::services
