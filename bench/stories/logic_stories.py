@@ -6,6 +6,7 @@ the same script fits every bench grid.
 """
 
 import storyboard
+from six_stories import square  # the same districts (the script's folder is on sys.path)
 from storyboard import (
     AndCondition,
     Coord,
@@ -13,17 +14,12 @@ from storyboard import (
     HeadwayCondition,
     HoldCondition,
     NotCondition,
-    PolygonCondition,
     SignalEffect,
     SpeedConditionLess,
     SpeedFactorEffect,
     Story,
     TimeCondition,
 )
-
-
-def square(x: float, y: float, size: float) -> PolygonCondition:
-    return PolygonCondition([Coord(x, y), Coord(x + size, y), Coord(x + size, y + size), Coord(x, y + size)])
 
 
 def createStories(board: storyboard.Storyboard) -> None:

@@ -8,6 +8,7 @@ import json
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
+from typing import Any
 
 import pytest
 from sbsim_helpers import STORIES, StoryRun, read_fcd, run_story
@@ -198,17 +199,22 @@ def test_check_lists_world_stories(trips_cfg: Path, tmp_path: Path) -> None:
     assert [s["world"] for s in json.loads(as_json.stdout)["stories"]] == [True]
 
 
-def test_bridge_closure_story_runs_as_its_readme_says(tmp_path: Path) -> None:
-    folder = STORIES / "bridge-closure"
-    events = tmp_path / "bridge.jsonl"
-    fcd_path = tmp_path / "bridge.fcd.xml"
+def run_bundled(name: str, tmp_path: Path) -> tuple[Any, Path, Path]:
+    """Runs stories/<name> as it is, with its event log and SUMO's FCD output in tmp_path."""
+    folder = STORIES / name
+    events, fcd_path = tmp_path / f"{name}.jsonl", tmp_path / f"{name}.fcd.xml"
     result = run(
-        folder / "bridge-closure.sumocfg",
+        folder / f"{name}.sumocfg",
         story=folder / "story.py",
         events=events,
         sumo_options=[f"--fcd-output {fcd_path}"],
         timeout=120,
     )
+    return result, events, fcd_path
+
+
+def test_bridge_closure_story_runs_as_its_readme_says(tmp_path: Path) -> None:
+    result, events, fcd_path = run_bundled("bridge-closure", tmp_path)
     assert result.returncode == 0, result.stderr
     assert "activations bridge-closed: 1" in result.stdout
     lines = [e for e in read_events(events) if e["story"] == "bridge-closed"]
@@ -223,16 +229,7 @@ def test_bridge_closure_story_runs_as_its_readme_says(tmp_path: Path) -> None:
 
 
 def test_broken_down_truck_story_runs_as_its_readme_says(tmp_path: Path) -> None:
-    folder = STORIES / "broken-down-truck"
-    events = tmp_path / "truck.jsonl"
-    fcd_path = tmp_path / "truck.fcd.xml"
-    result = run(
-        folder / "broken-down-truck.sumocfg",
-        story=folder / "story.py",
-        events=events,
-        sumo_options=[f"--fcd-output {fcd_path}"],
-        timeout=120,
-    )
+    result, events, fcd_path = run_bundled("broken-down-truck", tmp_path)
     assert result.returncode == 0, result.stderr
     log = read_events(events)
     assert [e for e in log if e["story"] == "breakdown"] == [
