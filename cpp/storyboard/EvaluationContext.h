@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/ParallelFor.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/TrafficQueries.h"
@@ -17,8 +18,8 @@ namespace sbsim::storyboard {
 class SBSIM_API EvaluationContext {
 public:
     EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid& neighbours,
-                      traffic::TrafficQueries* queries = nullptr)
-        : snapshot_(snapshot), neighbours_(neighbours), queries_(queries) {}
+                      traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr)
+        : snapshot_(snapshot), neighbours_(neighbours), queries_(queries), parallel_(parallel) {}
 
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     kernel::SimTime now() const { return snapshot_.time(); }
@@ -31,10 +32,16 @@ public:
         return *queries_;
     }
 
+    /// The process's worker pool, for work a condition does once per step in prepare(); null when
+    /// evaluated without a simulation (then that work runs on the calling thread). Never used
+    /// from test(), which already runs on the pool.
+    kernel::ParallelFor* parallel() const { return parallel_; }
+
 private:
     const traffic::VehicleSnapshot& snapshot_;
     const traffic::NeighbourGrid& neighbours_;
     traffic::TrafficQueries* queries_;
+    kernel::ParallelFor* parallel_;
 };
 
 }  // namespace sbsim::storyboard

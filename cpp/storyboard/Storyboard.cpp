@@ -238,7 +238,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     }
 
     if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 5.0));
-    const EvaluationContext ctx(snapshot, grid_, queries_.get());
+    const EvaluationContext ctx(snapshot, grid_, queries_.get(), &simulation().parallel());
     for (Condition* c : conditions_) c->prepare(ctx);
     if (!worldStories_.empty()) updateWorld();
 

@@ -26,7 +26,55 @@ TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(d
     }
 }
 
-void TtcCondition::prepare(const EvaluationContext& ctx) { computeMovers(ctx.snapshot()); }
+void TtcCondition::prepare(const EvaluationContext& ctx) {
+    const std::size_t before = movers_.size();
+    computeMovers(ctx.snapshot());
+    // Pairs ahead only pay when test() will ask about most vehicles, as it did last step: a story
+    // whose other conditions fail first (a time window, an area) asks about few or none.
+    const std::size_t asked = tests_.exchange(0, std::memory_order_relaxed);
+    if (ctx.parallel() != nullptr && before > 0 && 2 * asked >= before) computePairs(ctx);
+}
+
+void TtcCondition::computePairs(const EvaluationContext& ctx) {
+    const std::size_t n = movers_.size();
+    laterConflicts_.resize(n);
+    ctx.parallel()->run(
+        n,
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t k = begin; k < end; ++k) {
+                const auto ego = static_cast<VehicleIndex>(k);
+                std::vector<VehicleIndex>& found = laterConflicts_[k];
+                found.clear();
+                ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
+                    const auto j = static_cast<std::size_t>(o);
+                    if (o > ego && mayConflict(circles_[k], circles_[j], ttc_) &&
+                        sampledConflict(movers_[k], movers_[j], ttc_))
+                        found.push_back(o);
+                });
+                std::sort(found.begin(), found.end());
+            }
+        },
+        128);
+    // Each pair counts for both vehicles. Walking the vehicles in ascending order appends to
+    // vehicle j first the smaller indices that found it, then its own larger ones: ascending.
+    pairStart_.assign(n + 1, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+        for (const VehicleIndex o : laterConflicts_[k]) {
+            ++pairStart_[k + 1];
+            ++pairStart_[static_cast<std::size_t>(o) + 1];
+        }
+    }
+    for (std::size_t k = 0; k < n; ++k) pairStart_[k + 1] += pairStart_[k];
+    pairOthers_.resize(static_cast<std::size_t>(pairStart_[n]));
+    std::vector<std::int32_t> next(pairStart_.begin(), pairStart_.end() - 1);
+    for (std::size_t k = 0; k < n; ++k) {
+        for (const VehicleIndex o : laterConflicts_[k]) {
+            pairOthers_[static_cast<std::size_t>(next[k]++)] = o;
+            pairOthers_[static_cast<std::size_t>(next[static_cast<std::size_t>(o)]++)] = static_cast<VehicleIndex>(k);
+        }
+    }
+    pairsReady_ = true;
+}
 
 void TtcCondition::Poses::erase(std::string_view id) {
     const auto it = std::lower_bound(ids.begin(), ids.end(), id);
@@ -49,6 +97,7 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
         std::swap(previous_, current_);
         currentTime_ = snapshot.time();
     }
+    pairsReady_ = false;
     const VehicleIndex n = snapshot.size();
     const auto count = static_cast<std::size_t>(n);
     current_.ids = snapshot.ids();  // reuses the strings' buffers
@@ -80,7 +129,13 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
 
 ConditionResult TtcCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
+    tests_.fetch_add(1, std::memory_order_relaxed);
     if (!(stamp_ == SnapshotStamp::of(snapshot))) computeMovers(snapshot);
+    if (pairsReady_) {
+        const auto k = static_cast<std::size_t>(ego);
+        return ConditionResult::ofOthers(
+            std::vector<VehicleIndex>(pairOthers_.begin() + pairStart_[k], pairOthers_.begin() + pairStart_[k + 1]));
+    }
     const MovingCircle& egoCircle = circles_[ego];
     std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -51,8 +53,13 @@ public:
     /// conflict() is false as well.
     static bool mayConflict(const geometry::MovingCircle& a, const geometry::MovingCircle& b, double ttc);
 
-    /// test() keeps no state; prepare() keeps the poses for the next step's curvatures.
+    /// test() keeps no state; prepare() keeps the poses for the next step's curvatures and, when
+    /// test() asked about most vehicles in the step before and a worker pool is at hand, tests
+    /// every pair once ahead (the pair test is symmetric), so test() only looks its answer up.
     bool pure() const override { return true; }
+
+    /// Whether the last prepare() tested the pairs ahead.
+    bool pairsTestedAhead() const { return pairsReady_; }
 
     /// The curvature (1/m) vehicle `i` of the last prepared snapshot is predicted to drive on.
     double curvature(VehicleIndex i) const { return movers_[static_cast<std::size_t>(i)].curvature; }
@@ -64,6 +71,8 @@ private:
     static bool sampledCurvedConflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b,
                                       double ttc);
     void computeMovers(const traffic::VehicleSnapshot& snapshot);
+    /// Every pair within distance_ tested once, on the pool; fills pairStart_ and pairOthers_.
+    void computePairs(const EvaluationContext& ctx);
 
     /// The front bumper poses of one snapshot, by vehicle id in ascending order.
     struct Poses {
@@ -78,6 +87,13 @@ private:
     SnapshotStamp stamp_;
     std::vector<geometry::MovingFootprint> movers_;  // per vehicle of the step
     std::vector<geometry::MovingCircle> circles_;    // the same, compact
+    // Pairs tested ahead: vehicle i's others are pairOthers_[pairStart_[i], pairStart_[i + 1]),
+    // ascending. laterConflicts_[i] holds those with a larger index (one writer per i).
+    bool pairsReady_ = false;
+    std::vector<std::int32_t> pairStart_;
+    std::vector<VehicleIndex> pairOthers_;
+    std::vector<std::vector<VehicleIndex>> laterConflicts_;
+    std::atomic<std::size_t> tests_{0};  // test() calls since the last prepare()
     // The poses of the last snapshot seen and of the one before it (an earlier time): a snapshot
     // seen again at the same time compares with the same previous poses.
     std::optional<kernel::SimTime> currentTime_;

@@ -51,6 +51,7 @@ public:
     }
 
     const EvaluationContext& ctx() const { return ctx_; }
+    const traffic::NeighbourGrid& grid() const { return grid_; }
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     VehicleIndex index(std::string_view id) const {
         const auto i = snapshot_.indexOf(id);

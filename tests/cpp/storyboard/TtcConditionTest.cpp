@@ -179,6 +179,9 @@ TEST(TtcCondition, ConflictEqualsSamplingEveryStep) {
         ASSERT_EQ(TtcCondition::conflict(a, va, b, vb, ttc), expected)
             << "pair " << k << ": a " << a.centre().transpose() << " h " << a.heading().transpose() << " v " << va
             << "; b " << b.centre().transpose() << " h " << b.heading().transpose() << " v " << vb << "; ttc " << ttc;
+        // prepare() tests each pair once for both vehicles: exact only if swapping them gives the
+        // same answer, bit for bit.
+        ASSERT_EQ(TtcCondition::conflict(b, vb, a, va, ttc), expected) << "swapped pair " << k;
         conflicts += expected;
     }
     EXPECT_GT(touchingCases, 0);
@@ -237,6 +240,7 @@ TEST(TtcCondition, CurvedConflictEqualsSamplingEveryStep) {
         const double ttc = std::vector<double>{0.5, 2, 4, 8}[k % 4];
         const bool expected = naiveConflict(a, b, ttc);
         ASSERT_EQ(TtcCondition::conflict(a, b, ttc), expected) << "pair " << k;
+        ASSERT_EQ(TtcCondition::conflict(b, a, ttc), expected) << "swapped pair " << k;
         conflicts += expected;
     }
     EXPECT_GT(conflicts, kPairs / 20);
@@ -311,6 +315,44 @@ TEST(TtcCondition, StraightDrivingMatchesTheStraightPrediction) {
         total += r.others().size();
     }
     EXPECT_GT(total, 20u);
+}
+
+TEST(TtcCondition, PairsTestedAheadGiveTheSameAnswers) {
+    // With a pool, prepare() tests the pairs ahead once test() asked about most vehicles in the
+    // step before; the answers equal testing vehicle by vehicle, on bends as well.
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> coordinate(0, 250);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<Vehicle> steps[3];
+    for (int k = 0; k < 600; ++k) {
+        Vehicle v = car("v" + std::to_string(k), coordinate(rng), coordinate(rng), unit(rng) < 0.2 ? 0 : 30 * unit(rng),
+                        360 * unit(rng), 4 + 3 * unit(rng), 1.6 + 0.8 * unit(rng));
+        const double turn = unit(rng) < 0.5 ? 0 : 40 * unit(rng) - 20;  // degrees per step
+        for (auto& step : steps) {
+            step.push_back(v);
+            const V ahead = 0.5 * v.speed * Footprint::headingOf(v.angle);
+            v.x += ahead.x();
+            v.y += ahead.y();
+            v.angle += turn;
+        }
+    }
+    kernel::ParallelFor pool(2);
+    TtcCondition ahead(3, 40);
+    TtcCondition oneByOne(3, 40);
+    std::size_t total = 0;
+    for (int t = 0; t < 3; ++t) {
+        Scene scene(steps[t], SimTime::fromSeconds(0.5 * t), 40);
+        const EvaluationContext pooled(scene.snapshot(), scene.grid(), nullptr, &pool);
+        ahead.prepare(pooled);
+        EXPECT_EQ(ahead.pairsTestedAhead(), t > 0) << "step " << t;  // the first step has no history
+        oneByOne.prepare(scene.ctx());
+        for (VehicleIndex ego = 0; ego < scene.snapshot().size(); ++ego) {
+            const ConditionResult r = ahead.test(pooled, ego);
+            ASSERT_EQ(r.others(), oneByOne.test(scene.ctx(), ego).others()) << "step " << t << " ego " << ego;
+            total += r.others().size();
+        }
+    }
+    EXPECT_GT(total, 100u);
 }
 
 TEST(TtcCondition, KeepsPosesOnlyOfRunningVehicles) {
