@@ -28,7 +28,7 @@ TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(d
 
 void TtcCondition::prepare(const EvaluationContext& ctx) {
     const std::size_t before = movers_.size();
-    computeMovers(ctx.snapshot());
+    computeMovers(ctx.snapshot(), ctx.parallel());
     // Pairs ahead only pay when test() will ask about most vehicles, as it did last step: a story
     // whose other conditions fail first (a time window, an area) asks about few or none.
     const std::size_t asked = tests_.exchange(0, std::memory_order_relaxed);
@@ -92,37 +92,47 @@ void TtcCondition::forget(std::string_view vehicleId) {
 
 std::size_t TtcCondition::heldVehicles() const { return std::max(current_.ids.size(), previous_.ids.size()); }
 
-void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
+void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot, kernel::ParallelFor* parallel) {
     if (currentTime_ != snapshot.time()) {
         std::swap(previous_, current_);
         currentTime_ = snapshot.time();
     }
     pairsReady_ = false;
-    const VehicleIndex n = snapshot.size();
-    const auto count = static_cast<std::size_t>(n);
-    current_.ids = snapshot.ids();  // reuses the strings' buffers
+    const auto count = static_cast<std::size_t>(snapshot.size());
+    const std::vector<std::string>& ids = snapshot.ids();
+    current_.ids.resize(count);
     current_.fronts.resize(count);
     current_.angles.resize(count);
-    movers_.clear();
-    movers_.reserve(count);
-    circles_.clear();
-    circles_.reserve(count);
-    std::size_t p = 0;  // both id lists ascend: one merge pass finds each vehicle's previous pose
-    for (VehicleIndex i = 0; i < n; ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        const Eigen::Vector2d front = snapshot.positions().col(i);
-        const double angle = snapshot.angles()[i];
-        const double speed = snapshot.speeds()[i];
-        current_.fronts[k] = front;
-        current_.angles[k] = angle;
-        while (p < previous_.ids.size() && previous_.ids[p] < current_.ids[k]) ++p;
-        const double curvature =
-            p < previous_.ids.size() && previous_.ids[p] == current_.ids[k]
-                ? geometry::PathCurvature::of(previous_.fronts[p], previous_.angles[p], front, angle, speed)
-                : 0.0;
-        movers_.emplace_back(Footprint::fromSumo(front, angle, snapshot.lengths()[i], snapshot.widths()[i]), speed,
-                             curvature);
-        circles_.push_back(movers_.back().circle);
+    const MovingFootprint standing(Footprint(Eigen::Vector2d::Zero(), Eigen::Vector2d::UnitX(), 0, 0), 0);
+    movers_.assign(count, standing);
+    circles_.resize(count);
+    const auto body = [&](std::size_t begin, std::size_t end) {
+        // Both id lists ascend: one merge pass per chunk finds each vehicle's previous pose.
+        if (begin == end) return;
+        const auto& before = previous_.ids;
+        auto p = static_cast<std::size_t>(std::lower_bound(before.begin(), before.end(), ids[begin]) - before.begin());
+        for (std::size_t k = begin; k < end; ++k) {
+            const auto i = static_cast<VehicleIndex>(k);
+            const Eigen::Vector2d front = snapshot.positions().col(i);
+            const double angle = snapshot.angles()[i];
+            const double speed = snapshot.speeds()[i];
+            if (current_.ids[k] != ids[k]) current_.ids[k] = ids[k];  // most ids keep their slot
+            current_.fronts[k] = front;
+            current_.angles[k] = angle;
+            while (p < before.size() && before[p] < ids[k]) ++p;
+            const double curvature =
+                p < before.size() && before[p] == ids[k]
+                    ? geometry::PathCurvature::of(previous_.fronts[p], previous_.angles[p], front, angle, speed)
+                    : 0.0;
+            movers_[k] = MovingFootprint(Footprint::fromSumo(front, angle, snapshot.lengths()[i], snapshot.widths()[i]),
+                                         speed, curvature);
+            circles_[k] = movers_[k].circle;
+        }
+    };
+    if (parallel != nullptr) {
+        parallel->run(count, body, 256);
+    } else {
+        body(0, count);
     }
     stamp_ = SnapshotStamp::of(snapshot);
 }
@@ -130,7 +140,7 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot) {
 ConditionResult TtcCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
     tests_.fetch_add(1, std::memory_order_relaxed);
-    if (!(stamp_ == SnapshotStamp::of(snapshot))) computeMovers(snapshot);
+    if (!(stamp_ == SnapshotStamp::of(snapshot))) computeMovers(snapshot, nullptr);
     if (pairsReady_) {
         const auto k = static_cast<std::size_t>(ego);
         return ConditionResult::ofOthers(
