@@ -245,7 +245,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     // All pure stories in one parallel loop: one hand-over to the workers per step, and each
     // vehicle's data is read while still in cache.
     const auto n = static_cast<std::size_t>(snapshot.size());
-    for (const std::size_t s : pureStories_) precomputed_[s].assign(n, ConditionResult(false));
+    // Every element is overwritten below: only the length changes, nothing is rebuilt.
+    for (const std::size_t s : pureStories_) precomputed_[s].resize(n, ConditionResult(false));
     if (!pureStories_.empty()) {
         simulation().parallel().run(
             n,
