@@ -46,10 +46,7 @@ void TtcCondition::computePairs(const EvaluationContext& ctx) {
                 std::vector<VehicleIndex>& found = laterConflicts_[k];
                 found.clear();
                 ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
-                    const auto j = static_cast<std::size_t>(o);
-                    if (o > ego && mayConflict(circles_[k], circles_[j], ttc_) &&
-                        sampledConflict(movers_[k], movers_[j], ttc_))
-                        found.push_back(o);
+                    if (o > ego && conflicts(ego, o)) found.push_back(o);
                 });
                 std::sort(found.begin(), found.end());
             }
@@ -104,7 +101,7 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot, kerne
     current_.fronts.resize(count);
     current_.angles.resize(count);
     const MovingFootprint standing(Footprint(Eigen::Vector2d::Zero(), Eigen::Vector2d::UnitX(), 0, 0), 0);
-    movers_.assign(count, standing);
+    movers_.resize(count, standing);  // every element is overwritten below
     circles_.resize(count);
     const auto body = [&](std::size_t begin, std::size_t end) {
         // Both id lists ascend: one merge pass per chunk finds each vehicle's previous pose.
@@ -146,15 +143,19 @@ ConditionResult TtcCondition::test(const EvaluationContext& ctx, VehicleIndex eg
         return ConditionResult::ofOthers(
             std::vector<VehicleIndex>(pairOthers_.begin() + pairStart_[k], pairOthers_.begin() + pairStart_[k + 1]));
     }
-    const MovingCircle& egoCircle = circles_[ego];
     std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
-        // The compact circles first: the full footprints are read for the few pairs that may meet.
-        if (mayConflict(egoCircle, circles_[o], ttc_) && sampledConflict(movers_[ego], movers_[o], ttc_))
-            others.push_back(o);
+        if (conflicts(ego, o)) others.push_back(o);
     });
     std::sort(others.begin(), others.end());
     return ConditionResult::ofOthers(std::move(others));
+}
+
+bool TtcCondition::conflicts(VehicleIndex a, VehicleIndex b) const {
+    // The compact circles first: the full footprints are read for the few pairs that may meet.
+    const auto i = static_cast<std::size_t>(a);
+    const auto j = static_cast<std::size_t>(b);
+    return mayConflict(circles_[i], circles_[j], ttc_) && sampledConflict(movers_[i], movers_[j], ttc_);
 }
 
 bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& b, double speedB, double ttc) {

@@ -70,6 +70,8 @@ private:
     /// sampledConflict() when one of the two is on a bend.
     static bool sampledCurvedConflict(const geometry::MovingFootprint& a, const geometry::MovingFootprint& b,
                                       double ttc);
+    /// conflict() for vehicles `a` and `b` of the prepared step.
+    bool conflicts(VehicleIndex a, VehicleIndex b) const;
     /// The step's movers and poses; on the pool when one is given.
     void computeMovers(const traffic::VehicleSnapshot& snapshot, kernel::ParallelFor* parallel);
     /// Every pair within distance_ tested once, on the pool; fills pairStart_ and pairOthers_.
