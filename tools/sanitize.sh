@@ -24,7 +24,7 @@ cmake --build build/asan -j"${CMAKE_BUILD_PARALLEL_LEVEL}" "${targets[@]}" >buil
 export ASAN_OPTIONS="detect_leaks=1:exitcode=23:abort_on_error=0:strict_init_order=1"
 export LSAN_OPTIONS="suppressions=$SBSIM_ROOT/tools/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:exitcode=23"
-export SBSIM_EXECUTABLE="$SBSIM_ROOT/build/asan/cpp/app/sbsim"
+export SBSIM_EXECUTABLE="$SBSIM_ROOT/build/asan/sbsim"
 export PYTHONPATH="$SBSIM_ROOT/python${PYTHONPATH:+:$PYTHONPATH}"  # the story package of this tree
 status=0
 if [ "$scope" = "all" ]; then

@@ -22,7 +22,7 @@ void BrakeLightService::trigger() {
     }
 }
 
-void BrakeLightService::indicate(const sbsim::services::V2xMessage& message) {
+void BrakeLightService::indicate(const sbsim::radio::V2xMessage& message) {
     if (dynamic_cast<const BrakeLightMessage*>(&message) == nullptr || cautionOver_.isScheduled()) return;
     const auto self = selfIndex();
     const auto sender = snapshot().indexOf(message.sender());

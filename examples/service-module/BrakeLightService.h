@@ -1,12 +1,12 @@
 #pragma once
 
+#include <sbsim/radio/V2xMessage.h>
 #include <sbsim/services/Service.h>
-#include <sbsim/services/V2xMessage.h>
 
 namespace example {
 
 /// "I am braking hard": sent by a vehicle decelerating harder than a threshold.
-class BrakeLightMessage : public sbsim::services::V2xMessage {
+class BrakeLightMessage : public sbsim::radio::V2xMessage {
 public:
     explicit BrakeLightMessage(double deceleration) : deceleration_(deceleration) {}
     std::string_view typeName() const override { return "BrakeLight"; }
@@ -25,7 +25,7 @@ class BrakeLightService : public sbsim::services::Service {
 public:
     void initialize() override;
     void trigger() override;
-    void indicate(const sbsim::services::V2xMessage& message) override;
+    void indicate(const sbsim::radio::V2xMessage& message) override;
     void handleMessage(sbsim::kernel::Message& msg) override;
 
 private:

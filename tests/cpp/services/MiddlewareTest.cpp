@@ -17,7 +17,7 @@
 #include "SumoTestSupport.h"
 #include "TestPrinters.h"
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/services/Medium.h"
+#include "sbsim/radio/DiscMedium.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/Storyboard.h"
@@ -49,12 +49,12 @@ struct VehicleWatch : kernel::Listener {
 /// SUMO bridge, service manager and medium wired as in app/Program.cpp, on the small scenario.
 class SumoRun {
 public:
-    explicit SumoRun(std::string_view servicesXml, MediumSettings radio = {}, std::optional<SimTime> end = {})
+    explicit SumoRun(std::string_view servicesXml, radio::DiscSettings disc = {}, std::optional<SimTime> end = {})
         : sumo(sim.emplaceModule<SumoBridge>(settings(end))),
           manager(sim.emplaceModule<ServiceManager>(ServicesConfig::parse(servicesXml, "test.xml"), secs(0.1),
                                                     sumo.snapshot())),
-          medium(sim.emplaceModule<Medium>(radio, sumo.snapshot(),
-                                           [this](const std::string& id) { return manager.middlewareOf(id); })) {
+          medium(sim.emplaceModule<radio::DiscMedium>(
+              disc, sumo.snapshot(), [this](const std::string& id) { return manager.middlewareOf(id); })) {
         manager.setMedium(medium);
         manager.attach(sumo);
         watch.run = this;
@@ -84,7 +84,7 @@ public:
     kernel::Simulation sim;
     SumoBridge& sumo;
     ServiceManager& manager;
-    Medium& medium;
+    radio::DiscMedium& medium;
     SimTime endTime;
     std::size_t eventsLeft = 0;
     std::size_t runningAtEnd = 0;
@@ -251,10 +251,10 @@ TEST(MiddlewareSumo, StoryboardSignalsReachTheEgoAtActivation) {
 /// each exactly `latency` after it was sent. Returns how many (beacon, receiver) pairs in range
 /// were dropped because the receiver had left.
 std::size_t checkBeacons(SimTime latency, SimTime end, double range) {
-    MediumSettings radio;
-    radio.range = range;
-    radio.latency = latency;
-    SumoRun s(R"(<services><service type="TestProbe" beacon="1"/></services>)", radio, end);
+    radio::DiscSettings disc;
+    disc.range = range;
+    disc.latency = latency;
+    SumoRun s(R"(<services><service type="TestProbe" beacon="1"/></services>)", disc, end);
     s.log.beaconRange = range;
     s.run();
 
@@ -297,7 +297,7 @@ std::size_t checkBeacons(SimTime latency, SimTime end, double range) {
     EXPECT_GT(sent, 1000u);
     EXPECT_GT(expectedTotal, 1000u);
     EXPECT_EQ(indications, expectedTotal);
-    const Medium::Counts counts = s.medium.counts().at("Beacon");
+    const radio::Medium::Counts counts = s.medium.counts().at("Beacon");
     EXPECT_EQ(counts.sent, sent);
     EXPECT_EQ(counts.delivered, indications);
     return dropped;

@@ -129,12 +129,12 @@ void ProbeService::handleMessage(kernel::Message& msg) {
     }
 }
 
-void ProbeService::receiveSignal(const storyboard::StoryboardSignal& signal) {
+void ProbeService::receiveSignal(const traffic::StoryboardSignal& signal) {
     called();
     record_->signals.emplace_back(simTime(), signal);
 }
 
-void ProbeService::indicate(const V2xMessage& message) {
+void ProbeService::indicate(const radio::V2xMessage& message) {
     called();
     const auto& m = dynamic_cast<const TestMessage&>(message);
     record_->indications.push_back({simTime(), std::string(m.typeName()), m.sender(), m.sentAt(), m.seq()});
@@ -169,12 +169,12 @@ void Script::at(SimTime t, std::function<void()> action, int priority) {
 
 void Script::handleMessage(kernel::Message& msg) { static_cast<Action&>(msg).run(); }
 
-Harness::Harness(std::string_view servicesXml, MediumSettings radio, SimTime interval, std::uint64_t seed)
+Harness::Harness(std::string_view servicesXml, radio::DiscSettings disc, SimTime interval, std::uint64_t seed)
     : sim(seed),
       sumo(sim.emplaceModule<FakeSumo>()),
       manager(sim.emplaceModule<ServiceManager>(ServicesConfig::parse(servicesXml, "test.xml"), interval, snapshot)),
-      medium(sim.emplaceModule<Medium>(radio, snapshot,
-                                       [this](const std::string& id) { return manager.middlewareOf(id); })),
+      medium(sim.emplaceModule<radio::DiscMedium>(disc, snapshot,
+                                                  [this](const std::string& id) { return manager.middlewareOf(id); })),
       script(sim.emplaceModule<Script>()) {
     manager.setMedium(medium);
     manager.attach(sumo);

@@ -14,12 +14,12 @@
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/services/Medium.h"
+#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/radio/V2xMessage.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceManager.h"
-#include "sbsim/services/V2xMessage.h"
 #include "sbsim/storyboard/Story.h"
-#include "sbsim/storyboard/StoryboardSignal.h"
+#include "sbsim/traffic/StoryboardSignal.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::services::test {
@@ -29,7 +29,7 @@ using traffic::VehicleSnapshot;
 
 inline SimTime secs(double s) { return SimTime::fromSeconds(s); }
 
-class TestMessage : public V2xMessage {
+class TestMessage : public radio::V2xMessage {
 public:
     TestMessage(std::string type, int seq) : type_(std::move(type)), seq_(seq) {}
     std::string_view typeName() const override { return type_; }
@@ -77,7 +77,7 @@ struct ProbeRecord {
     std::vector<SimTime> finishes;
     bool finishedBySimulationFinish = false;
     int callsAfterFinish = 0;
-    std::vector<std::pair<SimTime, storyboard::StoryboardSignal>> signals;
+    std::vector<std::pair<SimTime, traffic::StoryboardSignal>> signals;
     std::vector<Indication> indications;
     std::vector<Sent> sent;
     ProbeService* live = nullptr;  ///< the service while it exists
@@ -122,13 +122,13 @@ public:
 
     ProbeRecord& record() const { return *record_; }
     /// Service::send, from outside.
-    void sendNow(std::unique_ptr<V2xMessage> message) { send(std::move(message)); }
+    void sendNow(std::unique_ptr<radio::V2xMessage> message) { send(std::move(message)); }
 
     void initialize() override;
     void trigger() override;
     void handleMessage(kernel::Message& msg) override;
-    void receiveSignal(const storyboard::StoryboardSignal& signal) override;
-    void indicate(const V2xMessage& message) override;
+    void receiveSignal(const traffic::StoryboardSignal& signal) override;
+    void indicate(const radio::V2xMessage& message) override;
     void finish() override;
 
 private:
@@ -173,7 +173,7 @@ public:
 class Harness {
 public:
     /// `seed`: the simulation's, which seeds the medium's packet losses.
-    explicit Harness(std::string_view servicesXml, MediumSettings radio = {}, SimTime interval = secs(0.1),
+    explicit Harness(std::string_view servicesXml, radio::DiscSettings disc = {}, SimTime interval = secs(0.1),
                      std::uint64_t seed = 0);
 
     /// At `t`, as a SUMO step would (before other events due then): the snapshot becomes
@@ -188,7 +188,7 @@ public:
     kernel::Simulation sim;
     FakeSumo& sumo;
     ServiceManager& manager;
-    Medium& medium;
+    radio::DiscMedium& medium;
     Script& script;
 };
 

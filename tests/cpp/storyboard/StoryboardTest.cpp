@@ -16,7 +16,6 @@
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Storyboard.h"
-#include "sbsim/storyboard/StoryboardSignal.h"
 #include "sbsim/storyboard/VehicleHandle.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
@@ -30,6 +29,7 @@
 #include "sbsim/storyboard/effects/SignalEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
+#include "sbsim/traffic/StoryboardSignal.h"
 
 namespace sbsim::storyboard {
 namespace {

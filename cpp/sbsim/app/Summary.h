@@ -1,0 +1,37 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/radio/Medium.h"
+#include "sbsim/services/ServiceManager.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/traffic/SumoBridge.h"
+
+namespace sbsim::app {
+
+/// What the final summary reports on; the modules a run did not have are null.
+struct RunFigures {
+    const std::filesystem::path& sumocfg;
+    const kernel::Simulation& sim;
+    const traffic::SumoBridge& sumo;
+    const storyboard::Storyboard* board;
+    const services::ServiceManager* services;
+    const radio::Medium* medium;
+    double wall;                                ///< s
+    const std::vector<std::string>& arguments;  ///< the command line
+};
+
+/// `key: value` lines on stdout: first what the run did (identical for identical runs), then the
+/// timing lines.
+void printSummary(const RunFigures& figures);
+
+/// The same figures as one JSON document (--summary), plus what a table of runs needs: active
+/// vehicle-seconds per story, SUMO's version, the command line.
+nlohmann::ordered_json summaryJson(const RunFigures& figures);
+
+}  // namespace sbsim::app

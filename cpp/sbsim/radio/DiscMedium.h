@@ -1,0 +1,46 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/RandomStream.h"
+#include "sbsim/radio/Medium.h"
+#include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
+
+namespace sbsim::radio {
+
+/// The disc model's settings (`--v2x-range`, `--v2x-latency`, `--v2x-fade-start`).
+struct SBSIM_API DiscSettings {
+    double range = 500;  ///< m
+    kernel::SimTime latency = kernel::SimTime::fromMilliseconds(1);
+    /// Packet errors: reception is certain up to this distance, then falls linearly to 0 at
+    /// `range`. None (the default): no losses.
+    std::optional<double> fadeStart;
+};
+
+/// Single-hop broadcast on an ideal disc: a message reaches every other station within range
+/// (positions of the current step, found through a neighbour grid, not all pairs) after the
+/// latency, unless the packet-error model drops it.
+class SBSIM_API DiscMedium : public Medium {
+public:
+    DiscMedium(DiscSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory);
+
+    const DiscSettings& settings() const { return settings_; }
+    /// Probability that a message sent `distance` metres away is received.
+    double receptionProbability(double distance) const;
+
+    void initialize() override;
+    void broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) override;
+
+private:
+    DiscSettings settings_;
+    const traffic::VehicleSnapshot& snapshot_;
+    traffic::NeighbourGrid grid_;
+    std::optional<kernel::SimTime> gridTime_;
+    std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
+};
+
+}  // namespace sbsim::radio

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/radio/V2xMessage.h"
+
+namespace sbsim::radio {
+
+/// What carries V2X messages between stations: a model of the radio channel. A station sends
+/// with broadcast(); the medium decides who receives it and when, and sends each receiver's
+/// module (found through the Directory) a Delivery at that time. Counts messages per type.
+class SBSIM_API Medium : public kernel::Module {
+public:
+    struct Counts {
+        std::uint64_t sent = 0;
+        std::uint64_t delivered = 0;
+    };
+    /// The module a station's receptions go to (its middleware), or none for a vehicle that is
+    /// not a station.
+    using Directory = std::function<kernel::Module*(const std::string& stationId)>;
+
+    explicit Medium(Directory directory) : kernel::Module("medium"), directory_(std::move(directory)) {}
+
+    /// Sends `message` from `sender` (stamped with the sender and the current time).
+    virtual void broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) = 0;
+    /// The least time between two messages that the channel's congestion control (ETSI DCC)
+    /// allows `station` now; none when the medium models no congestion control.
+    virtual std::optional<kernel::SimTime> dccInterval(const std::string& /*station*/) const { return std::nullopt; }
+    /// The share of the last 100 ms `station` sensed the channel busy; none when the medium does
+    /// not model it.
+    virtual std::optional<double> channelBusyRatio(const std::string& /*station*/) const { return std::nullopt; }
+    /// Called by a receiving station when a message reaches it.
+    void delivered(const V2xMessage& message);
+
+    const std::map<std::string, Counts, std::less<>>& counts() const { return counts_; }
+
+protected:
+    /// Stamps `message` as sent by `sender` now and counts it.
+    void stamp(V2xMessage& message, const std::string& sender);
+    kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
+
+private:
+    Directory directory_;
+    std::map<std::string, Counts, std::less<>> counts_;
+};
+
+}  // namespace sbsim::radio

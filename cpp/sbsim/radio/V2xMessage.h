@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Object.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/radio/TraceField.h"
+
+namespace sbsim::radio {
+
+class Medium;
+
+/// A message one station broadcasts to the stations around it. Subclass it with the content of
+/// your application; give it a name (per-type counts in the summary) and a byte size (what it
+/// occupies on the channel).
+class SBSIM_API V2xMessage : public kernel::Object {
+public:
+    /// A short type name for statistics, e.g. "ClearLane".
+    virtual std::string_view typeName() const = 0;
+    virtual std::size_t byteSize() const = 0;
+    /// Fields of the message's own the message trace shows on its lines (none by default).
+    virtual std::vector<TraceField> traceFields() const { return {}; }
+
+    /// Filled in by the medium when the message is sent.
+    const std::string& sender() const { return sender_; }
+    kernel::SimTime sentAt() const { return sentAt_; }
+
+private:
+    friend class Medium;
+    std::string sender_;
+    kernel::SimTime sentAt_;
+};
+
+}  // namespace sbsim::radio

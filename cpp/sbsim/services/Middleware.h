@@ -1,0 +1,48 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/services/Service.h"
+#include "sbsim/services/ServiceVehicle.h"
+#include "sbsim/traffic/VehicleRegistry.h"
+
+namespace sbsim::services {
+
+class ServiceManager;
+
+/// One vehicle's middleware: created when the vehicle departs, it hosts the vehicle's services
+/// (which the simulation owns, as modules) and hands them triggers, storyboard signals and incoming
+/// V2X messages. Removed, services first, when the vehicle arrives.
+class SBSIM_API Middleware : public kernel::Module {
+public:
+    Middleware(ServiceManager& manager, std::string vehicleId);
+
+    const std::string& vehicleId() const { return vehicleId_; }
+    /// What `service` (hosted here) commands the vehicle through.
+    ServiceVehicle& vehicleOf(const Service& service);
+    ServiceManager& manager() const { return manager_; }
+    const std::vector<Service*>& services() const { return services_; }
+
+    /// Hosts `service` (already owned by the simulation) with its configuration.
+    void host(Service& service, const ServiceSpec& spec);
+    /// Triggers the services, from the first interval after the vehicle departed on.
+    void trigger();
+    void signal(const traffic::StoryboardSignal& signal);
+
+    void initialize() override { departedAt_ = simTime(); }
+    void handleMessage(kernel::Message& msg) override;
+
+private:
+    ServiceManager& manager_;
+    std::string vehicleId_;
+    std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle_;  // the storyboard's as well
+    std::vector<Service*> services_;
+    std::vector<std::unique_ptr<ServiceVehicle>> vehicles_;  // per service, as services_
+    kernel::SimTime departedAt_;
+};
+
+}  // namespace sbsim::services

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/StudyParameters.h"
+#include "sbsim/radio/V2xMessage.h"
+#include "sbsim/services/ServiceVehicle.h"
+#include "sbsim/traffic/StoryboardSignal.h"
+#include "sbsim/traffic/VehicleController.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
+
+namespace sbsim::services {
+
+class Middleware;
+struct ServiceSpec;
+
+/// Base of per-vehicle V2X applications, in OMNeT++'s style: a kernel module with
+/// initialize() when its vehicle departs, finish() when it arrives (or the run ends), its own
+/// timers (scheduleAt / cancelEvent / handleMessage), plus the middleware's calls below.
+///
+///     class Beacon : public sbsim::services::Service {
+///         void trigger() override { send(std::make_unique<BeaconMessage>()); }
+///     };
+///     SBSIM_REGISTER_SERVICE(Beacon);
+class SBSIM_API Service : public kernel::Module {
+public:
+    Service() : kernel::Module("service") {}
+
+    /// Every middleware update interval (default 0.1 s), on the interval's grid.
+    virtual void trigger() {}
+    /// A storyboard SignalEffect fired for this vehicle (or for any, after listenToAllSignals()).
+    virtual void receiveSignal(const traffic::StoryboardSignal& /*signal*/) {}
+    /// A message another vehicle's service broadcast, arriving here.
+    virtual void indicate(const radio::V2xMessage& /*message*/) {}
+
+    const std::string& vehicleId() const;
+
+protected:
+    /// Commands and live queries for this service's vehicle; a max speed set here composes with
+    /// the stories' caps (ServiceVehicle).
+    ServiceVehicle& vehicle();
+    /// The current step's snapshot of all vehicles (read-only).
+    const traffic::VehicleSnapshot& snapshot() const;
+    /// This vehicle's index in snapshot(), if it is running.
+    std::optional<traffic::VehicleSnapshot::Index> selfIndex() const;
+
+    /// Broadcasts `message` to the services of every other vehicle in range.
+    void send(std::unique_ptr<radio::V2xMessage> message);
+    /// From now on, also receive storyboard signals meant for other vehicles.
+    void listenToAllSignals();
+
+    /// A study parameter of the run (`--param NAME=VALUE`), or nothing; reading it counts as
+    /// used. Lets a sweep vary a service's threshold or range without editing the services file.
+    std::optional<kernel::StudyParameters::Value> studyParameter(const std::string& name) const;
+    /// A parameter from the services file (an attribute of the <service> element).
+    std::optional<std::string> parameter(const std::string& name) const;
+    /// A numeric parameter, or `fallback` when absent; a malformed value is a configuration error.
+    double numberParameter(const std::string& name, double fallback) const;
+
+private:
+    friend class Middleware;
+    Middleware* middleware_ = nullptr;
+    const ServiceSpec* spec_ = nullptr;
+};
+
+}  // namespace sbsim::services

@@ -1,0 +1,129 @@
+#include "sbsim/services/ServiceManager.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/services/ServiceRegistry.h"
+#include "sbsim/traffic/SumoBridge.h"
+
+namespace sbsim::services {
+
+ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval,
+                               const traffic::VehicleSnapshot& snapshot)
+    : kernel::Module("services"),
+      config_(std::move(config)),
+      interval_(interval),
+      snapshot_(snapshot),
+      ownRegistry_(std::make_unique<traffic::VehicleRegistry>()),
+      registry_(ownRegistry_.get()) {
+    if (interval_ <= kernel::SimTime::zero()) throw std::invalid_argument("the middleware interval must be > 0 s");
+    for (const ServiceSpec& spec : config_.services()) {
+        // Fail before the run, naming the line, rather than at the first matching departure.
+        if (!ServiceRegistry::instance().contains(spec.type)) (void)ServiceRegistry::instance().create(spec.type);
+    }
+}
+
+ServiceManager::~ServiceManager() = default;
+
+void ServiceManager::initialize() {
+    simulation().subscribe(traffic::StoryboardSignal::id, *this);
+    scheduleAt(interval_ * (simTime() / interval_ + 1), triggerTimer_);
+}
+
+void ServiceManager::handleMessage(kernel::Message& msg) {
+    if (&msg != &triggerTimer_) return kernel::Module::handleMessage(msg);
+    scheduleAfter(interval_, triggerTimer_);
+    // Index loop: services may not end vehicles, but the list must not be walked by iterator
+    // across anything that could grow it.
+    for (std::size_t i = 0; i < departureOrder_.size(); ++i) departureOrder_[i]->trigger();
+}
+
+void ServiceManager::listenToAllSignals(Service& service) {
+    if (std::find(allSignals_.begin(), allSignals_.end(), &service) == allSignals_.end())
+        allSignals_.push_back(&service);
+}
+
+void ServiceManager::attach(kernel::Module& sumo) {
+    sumo.subscribe(traffic::SumoBridge::departedSignal, *this);
+    sumo.subscribe(traffic::SumoBridge::arrivedSignal, *this);
+    // A service module may read any snapshot value (and the medium reads positions): all of them.
+    if (auto* bridge = dynamic_cast<traffic::SumoBridge*>(&sumo)) {
+        bridge->demandColumns(traffic::SnapshotColumns::all());
+        if (ownRegistry_) ownRegistry_->attach(*bridge);
+    }
+}
+
+void ServiceManager::useRegistry(traffic::VehicleRegistry& registry) {
+    if (!middlewares_.empty()) throw std::logic_error("ServiceManager::useRegistry after vehicles departed");
+    registry_ = &registry;
+    ownRegistry_.reset();
+}
+
+radio::Medium& ServiceManager::medium() const {
+    if (medium_ == nullptr) throw std::logic_error("no V2X medium in this simulation");
+    return *medium_;
+}
+
+Middleware* ServiceManager::middlewareOf(const std::string& vehicleId) const {
+    const auto it = middlewares_.find(vehicleId);
+    return it == middlewares_.end() ? nullptr : it->second;
+}
+
+void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, std::string_view value) {
+    if (id == traffic::SumoBridge::departedSignal) {
+        depart(std::string(value));
+    } else if (id == traffic::SumoBridge::arrivedSignal) {
+        arrive(std::string(value));
+    }
+}
+
+void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, const kernel::Object& value) {
+    if (id != traffic::StoryboardSignal::id) return;
+    const auto& signal = dynamic_cast<const traffic::StoryboardSignal&>(value);
+    Middleware* ego = middlewareOf(signal.ego);
+    if (ego != nullptr) ego->signal(signal);
+    // Index loop over the listeners present now: a listener may start listening to all meanwhile.
+    const std::size_t listeners = allSignals_.size();
+    for (std::size_t i = 0; i < listeners && i < allSignals_.size(); ++i) {
+        Service* s = allSignals_[i];
+        if (ego == nullptr || s->vehicleId() != signal.ego) s->receiveSignal(signal);
+    }
+}
+
+void ServiceManager::depart(const std::string& id) {
+    const auto index = snapshot_.indexOf(id);
+    const std::string type = index ? snapshot_.typeId(*index) : std::string();
+    const bool equipped = penetration_.equipped(id);
+    std::vector<const ServiceSpec*> selected;
+    for (const ServiceSpec& spec : config_.services()) {
+        if (spec.admits(equipped) && spec.matches(id, type)) selected.push_back(&spec);
+    }
+    if (selected.empty()) return;
+    auto& middleware = simulation().emplaceModule<Middleware>(*this, id);
+    middlewares_[id] = &middleware;
+    departureOrder_.push_back(&middleware);
+    for (const ServiceSpec* spec : selected) {
+        std::unique_ptr<Service> service = ServiceRegistry::instance().create(spec->type);
+        // Hosted before it joins the simulation: initialize() may already use vehicle() or send().
+        middleware.host(*service, *spec);
+        simulation().addModule(std::move(service));
+        ++servicesCreated_;
+    }
+}
+
+void ServiceManager::arrive(const std::string& id) {
+    const auto it = middlewares_.find(id);
+    if (it == middlewares_.end()) return;
+    Middleware& middleware = *it->second;
+    middlewares_.erase(it);
+    std::erase(departureOrder_, &middleware);
+    for (Service* s : middleware.services()) {
+        std::erase(allSignals_, s);
+        simulation().removeModule(*s);  // finish(), then its timers are dropped
+    }
+    simulation().removeModule(middleware);
+    registry_->drop(id);
+}
+
+}  // namespace sbsim::services

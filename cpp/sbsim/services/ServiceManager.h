@@ -1,0 +1,74 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Module.h"
+#include "sbsim/radio/Medium.h"
+#include "sbsim/services/Middleware.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/traffic/Penetration.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
+
+namespace sbsim::services {
+
+/// Gives each departing vehicle a middleware with the services its filters select, removes them
+/// when it arrives, triggers all services every interval — on the interval's grid, vehicles in
+/// departure order, one kernel event for all — and routes storyboard signals to the ego vehicle's
+/// services (and to services listening to all). Attach it to the SUMO bridge.
+class SBSIM_API ServiceManager : public kernel::Module, private kernel::Listener {
+public:
+    /// Throws std::out_of_range if the configuration names a service type nobody registered.
+    ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot);
+    ~ServiceManager() override;
+
+    /// Listen to vehicles departing and arriving (a SumoBridge); the manager's own registry, if it
+    /// has one, is attached to it.
+    void attach(kernel::Module& sumo);
+    /// Commands vehicles through `registry`, shared with the storyboard (default: a registry of
+    /// the manager's own). Call before the first vehicle departs.
+    void useRegistry(traffic::VehicleRegistry& registry);
+    traffic::VehicleRegistry& registry() const { return *registry_; }
+    void setMedium(radio::Medium& medium) { medium_ = &medium; }
+    /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
+    /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
+    void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
+
+    kernel::SimTime interval() const { return interval_; }
+    const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
+    radio::Medium& medium() const;
+    Middleware* middlewareOf(const std::string& vehicleId) const;
+    void listenToAllSignals(Service& service);
+    std::size_t servicesCreated() const { return servicesCreated_; }
+    /// Vehicles with a middleware now (each running vehicle its filters selected).
+    std::size_t middlewares() const { return middlewares_.size(); }
+
+    void initialize() override;
+    void handleMessage(kernel::Message& msg) override;
+
+private:
+    void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
+    void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
+    void depart(const std::string& id);
+    void arrive(const std::string& id);
+
+    ServicesConfig config_;
+    kernel::SimTime interval_;
+    const traffic::VehicleSnapshot& snapshot_;
+    radio::Medium* medium_ = nullptr;
+    traffic::Penetration penetration_;
+    std::unordered_map<std::string, Middleware*> middlewares_;
+    std::vector<Middleware*> departureOrder_;
+    kernel::Message triggerTimer_{"service trigger"};
+    std::vector<Service*> allSignals_;
+    std::size_t servicesCreated_ = 0;
+    std::unique_ptr<traffic::VehicleRegistry> ownRegistry_;  // unless given one (useRegistry)
+    traffic::VehicleRegistry* registry_;
+};
+
+}  // namespace sbsim::services

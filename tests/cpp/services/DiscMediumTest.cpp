@@ -1,0 +1,293 @@
+// The V2X medium on hand-made snapshots: range (inclusive), latency (exact, also below a
+// millisecond), no delivery to the sender or to vehicles without services, per-type counts, the
+// packet-error model (probability, statistics, seeding, no draws when reception is certain), and
+// messages to vehicles that left before the delivery time.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ServicesTestSupport.h"
+#include "TestPrinters.h"
+#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/services/Middleware.h"
+
+namespace sbsim::services::test {
+namespace {
+
+constexpr std::string_view kAllButBare = R"(<services>
+    <service type="TestProbe"><filters><name pattern="bare.*" match="inverse"/></filters></service>
+</services>)";
+
+radio::DiscSettings disc(double range, SimTime latency = SimTime::fromMilliseconds(1),
+                         std::optional<double> fadeStart = {}) {
+    radio::DiscSettings s;
+    s.range = range;
+    s.latency = latency;
+    s.fadeStart = fadeStart;
+    return s;
+}
+
+/// Sends a `type` message numbered `seq` from `sender`'s probe at `t` (after the step due then).
+void sendAt(Harness& h, SimTime t, const std::string& sender, const std::string& type = "Ping", int seq = 0) {
+    h.at(t, [&h, sender, type, seq] { h.log.probe(sender).sendNow(std::make_unique<TestMessage>(type, seq)); });
+}
+
+std::size_t received(const Harness& h, const std::string& vehicle) {
+    const ProbeRecord* r = h.log.find(vehicle);
+    return r == nullptr ? 0 : r->indications.size();
+}
+
+using Counts = std::map<std::string, std::pair<std::uint64_t, std::uint64_t>>;
+Counts countsOf(const radio::DiscMedium& m) {
+    Counts out;
+    for (const auto& [type, c] : m.counts()) out[type] = {c.sent, c.delivered};
+    return out;
+}
+
+TEST(DiscMedium, RangeBoundaryIsInclusive) {
+    Harness h(kAllButBare, disc(500));
+    h.step(secs(1), {vehicle("s", 0, 0), vehicle("edge", 500, 0), vehicle("diagonal", 300, -400),
+                     vehicle("beyond", std::nextafter(500.0, 1000.0), 0), vehicle("far", 0, 1200)});
+    sendAt(h, secs(1), "s");
+    h.sim.run(secs(2));
+    EXPECT_EQ(received(h, "edge"), 1u) << "exactly at the range";
+    EXPECT_EQ(received(h, "diagonal"), 1u) << "exactly at the range (3-4-5)";
+    EXPECT_EQ(received(h, "beyond"), 0u) << "one ulp beyond the range";
+    EXPECT_EQ(received(h, "far"), 0u);
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {1, 2}}}));
+}
+
+TEST(DiscMedium, NoDeliveryToTheSenderNorToVehiclesWithoutServices) {
+    Harness h(kAllButBare, disc(100));
+    h.step(secs(1), {vehicle("s"), vehicle("a"), vehicle("bare1"), vehicle("bare2", 10, 0)});
+    sendAt(h, secs(1), "s", "Ping", 1);
+    sendAt(h, secs(1), "a", "Ping", 2);
+    // A sender that is not on the road: counted as sent, heard by nobody.
+    h.at(secs(1), [&] { h.medium.broadcast("ghost", std::make_unique<TestMessage>("Ping", 3)); });
+    h.sim.run(secs(2));
+    ASSERT_EQ(received(h, "s"), 1u);
+    EXPECT_EQ(h.log.find("s")->indications[0].sender, "a");
+    ASSERT_EQ(received(h, "a"), 1u);
+    EXPECT_EQ(h.log.find("a")->indications[0].sender, "s");
+    EXPECT_TRUE(h.log.of("bare1").empty() && h.log.of("bare2").empty());
+    EXPECT_EQ(h.manager.middlewareOf("bare1"), nullptr);
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {3, 2}}})) << "vehicles without services are no receivers";
+}
+
+TEST(DiscMedium, DeliversExactlyAfterTheLatencyWithSenderAndSendTime) {
+    Harness h(kAllButBare, disc(100, SimTime::fromMilliseconds(250)));
+    h.step(secs(1), {vehicle("s"), vehicle("r", 30, 40)});
+    sendAt(h, secs(1), "s", "Ping", 1);
+    sendAt(h, secs(1.05), "s", "Ping", 2);
+    h.sim.run(secs(3));
+    const ProbeRecord* r = h.log.find("r");
+    ASSERT_EQ(r->indications.size(), 2u);
+    EXPECT_EQ(r->indications[0].at, secs(1.25));
+    EXPECT_EQ(r->indications[0].sentAt, secs(1));
+    EXPECT_EQ(r->indications[0].sender, "s");
+    EXPECT_EQ(r->indications[0].seq, 1);
+    EXPECT_EQ(r->indications[1].at, secs(1.3));
+    EXPECT_EQ(r->indications[1].sentAt, secs(1.05));
+    EXPECT_EQ(r->indications[1].seq, 2);
+}
+
+TEST(DiscMedium, LatenciesBelowAMillisecondAndZeroAreExact) {
+    for (const SimTime latency : {SimTime::zero(), SimTime::fromNanoseconds(1), SimTime::fromNanoseconds(300'000),
+                                  SimTime::fromNanoseconds(999'999), SimTime::fromMilliseconds(999)}) {
+        SCOPED_TRACE("latency " + latency.str() + " s");
+        Harness h(kAllButBare, disc(100, latency));
+        for (int t = 1; t <= 3; ++t) h.step(secs(t), {vehicle("s"), vehicle("r", 10, 0)});
+        sendAt(h, secs(2), "s", "Ping", 7);
+        h.sim.run(secs(4));
+        const ProbeRecord* r = h.log.find("r");
+        ASSERT_EQ(r->indications.size(), 1u);
+        EXPECT_EQ(r->indications[0].at, secs(2) + latency);
+        EXPECT_EQ(r->indications[0].at.raw(), 2'000'000'000 + latency.raw());
+        EXPECT_EQ(r->indications[0].sentAt, secs(2));
+    }
+}
+
+TEST(DiscMedium, CountsSentAndDeliveredPerType) {
+    Harness h(kAllButBare, disc(100));
+    h.step(secs(1),
+           {vehicle("s"), vehicle("r1", 50, 0), vehicle("r2", 0, 50), vehicle("r3", 0, 150), vehicle("bare", 1, 0)});
+    for (int i = 0; i < 3; ++i) sendAt(h, secs(1), "s", "Alpha", i);
+    for (int i = 0; i < 2; ++i) sendAt(h, secs(1.5), "s", "Beta", i);
+    h.at(secs(1), [&] { h.medium.broadcast("ghost", std::make_unique<TestMessage>("Gamma", 0)); });
+    h.sim.run(secs(2));
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Alpha", {3, 6}}, {"Beta", {2, 4}}, {"Gamma", {1, 0}}}));
+    EXPECT_EQ(received(h, "r1"), 5u);
+    EXPECT_EQ(received(h, "r2"), 5u);
+    EXPECT_EQ(received(h, "r3"), 0u);
+}
+
+TEST(DiscMedium, UsesTheCurrentStepsPositions) {
+    Harness h(kAllButBare, disc(100));
+    // r moves in and out of range from step to step; s sends once per step. Bystanders without
+    // services make the neighbour grid look up cells instead of scanning every vehicle.
+    const double xs[] = {150, 50, 150, 50, 99};
+    for (int t = 1; t <= 5; ++t) {
+        std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("s"), vehicle("r", xs[t - 1], 0)};
+        for (int k = 0; k < 30; ++k) vehicles.push_back(vehicle("bare" + std::to_string(k), 1000 + 300 * k, 1000));
+        h.step(secs(t), std::move(vehicles));
+        sendAt(h, secs(t), "s", "Ping", t);
+    }
+    h.sim.run(secs(6));
+    std::vector<int> heard;
+    for (const Indication& i : h.log.find("r")->indications) heard.push_back(i.seq);
+    EXPECT_EQ(heard, (std::vector<int>{2, 4, 5}));
+}
+
+TEST(DiscMedium, MessageToAVehicleThatLeftBeforeDeliveryIsDropped) {
+    Harness h(kAllButBare, disc(100, SimTime::fromMilliseconds(500)));
+    h.step(secs(1), {vehicle("s"), vehicle("b", 10, 0), vehicle("c", 20, 0)});
+    sendAt(h, secs(1), "s", "Ping", 1);
+    h.step(secs(1.2), {vehicle("s"), vehicle("c", 20, 0)});  // b leaves while message 1 is in the air
+    sendAt(h, secs(2), "s", "Ping", 2);
+    h.step(secs(2.5), {vehicle("s")});  // c leaves exactly at message 2's delivery time: the step comes first
+    h.sim.run(secs(4));
+    const ProbeRecord* b = h.log.find("b");
+    const ProbeRecord* c = h.log.find("c");
+    EXPECT_TRUE(b->indications.empty());
+    EXPECT_EQ(b->finishes, std::vector<SimTime>{secs(1.2)});
+    ASSERT_EQ(c->indications.size(), 1u);
+    EXPECT_EQ(c->indications[0].seq, 1);
+    EXPECT_EQ(c->indications[0].at, secs(1.5));
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {2, 1}}})) << "dropped messages are not counted as delivered";
+    EXPECT_EQ(b->callsAfterFinish + c->callsAfterFinish, 0);
+}
+
+// --- packet errors ---------------------------------------------------------------------------
+
+TEST(DiscSettings, InvalidSettingsAreRejected) {
+    VehicleSnapshot snapshot;
+    const auto make = [&](radio::DiscSettings s) {
+        radio::DiscMedium m(s, snapshot, [](const std::string&) { return nullptr; });
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_THROW(make(disc(0)), std::invalid_argument);
+    EXPECT_THROW(make(disc(-1)), std::invalid_argument);
+    EXPECT_THROW(make(disc(std::nan(""))), std::invalid_argument);
+    EXPECT_THROW(make(disc(inf)), std::invalid_argument);
+    EXPECT_THROW(make(disc(100, -SimTime::fromNanoseconds(1))), std::invalid_argument);
+    EXPECT_THROW(make(disc(100, SimTime::zero(), -1.0)), std::invalid_argument);
+    EXPECT_THROW(make(disc(100, SimTime::zero(), 100.5)), std::invalid_argument);
+    EXPECT_NO_THROW(make(disc(100, SimTime::zero(), 100.0)));
+    EXPECT_NO_THROW(make(disc(100, SimTime::zero(), 0.0)));
+}
+
+TEST(DiscSettings, ReceptionProbabilityFallsLinearlyFromFadeStartToRange) {
+    VehicleSnapshot snapshot;
+    const auto none = [](const std::string&) -> Middleware* { return nullptr; };
+    const radio::DiscMedium lossless(disc(200), snapshot, none);
+    EXPECT_EQ(lossless.receptionProbability(0), 1.0);
+    EXPECT_EQ(lossless.receptionProbability(200), 1.0);
+    EXPECT_EQ(lossless.receptionProbability(std::nextafter(200.0, 300.0)), 0.0);
+
+    const radio::DiscMedium fading(disc(200, SimTime::zero(), 100.0), snapshot, none);
+    EXPECT_EQ(fading.receptionProbability(0), 1.0);
+    EXPECT_EQ(fading.receptionProbability(100), 1.0);
+    EXPECT_DOUBLE_EQ(fading.receptionProbability(110), 0.9);
+    EXPECT_DOUBLE_EQ(fading.receptionProbability(125), 0.75);
+    EXPECT_DOUBLE_EQ(fading.receptionProbability(150), 0.5);
+    EXPECT_DOUBLE_EQ(fading.receptionProbability(190), 0.1);
+    EXPECT_EQ(fading.receptionProbability(200), 0.0);
+    EXPECT_EQ(fading.receptionProbability(250), 0.0);
+
+    const radio::DiscMedium fromZero(disc(50, SimTime::zero(), 0.0), snapshot, none);
+    EXPECT_EQ(fromZero.receptionProbability(0), 1.0);
+    EXPECT_DOUBLE_EQ(fromZero.receptionProbability(10), 0.8);
+
+    const radio::DiscMedium sharp(disc(50, SimTime::zero(), 50.0), snapshot, none);  // fade start = range: no fading
+    EXPECT_EQ(sharp.receptionProbability(50), 1.0);
+    EXPECT_EQ(sharp.receptionProbability(50.5), 0.0);
+}
+
+/// Receivers around a sender at the origin, for range 100 and fade start 50.
+const std::vector<std::pair<std::string, VehicleSnapshot::Vehicle>> kLossyReceivers = {
+    {"r25", vehicle("r25", 25, 0)},     // p = 1
+    {"r60", vehicle("r60", 0, 60)},     // p = 0.8
+    {"r75", vehicle("r75", -75, 0)},    // p = 0.5
+    {"r90", vehicle("r90", 0, -90)},    // p = 0.2
+    {"r100", vehicle("r100", 100, 0)},  // p = 0: at the range
+};
+
+/// Per receiver (kLossyReceivers order), which of `n` messages sent at 2 s arrived. With
+/// `warmUp` > 0, that many messages go out first at 1 s, when every receiver is within 10 m.
+std::vector<std::vector<bool>> lossyRun(std::uint64_t seed, int n, int warmUp = 0, Counts* counts = nullptr) {
+    Harness h(kAllButBare, disc(100, SimTime::fromMilliseconds(1), 50.0), secs(0.1), seed);
+    std::vector<VehicleSnapshot::Vehicle> near = {vehicle("s")};
+    std::vector<VehicleSnapshot::Vehicle> spread = {vehicle("s")};
+    for (const auto& [id, v] : kLossyReceivers) {
+        near.push_back(vehicle(id, 5, 5));
+        spread.push_back(v);
+    }
+    h.step(secs(1), near);
+    h.step(secs(2), spread);
+    h.at(secs(1), [&] {
+        for (int i = 0; i < warmUp; ++i) h.log.probe("s").sendNow(std::make_unique<TestMessage>("Warm", i));
+    });
+    h.at(secs(2), [&] {
+        for (int i = 0; i < n; ++i) h.log.probe("s").sendNow(std::make_unique<TestMessage>("Ping", i));
+    });
+    h.sim.run(secs(3));
+    std::vector<std::vector<bool>> out;
+    for (const auto& [id, v] : kLossyReceivers) {
+        std::vector<bool> got(n, false);
+        int warm = 0;
+        for (const Indication& i : h.log.find(id)->indications) {
+            if (i.type == "Warm") {
+                ++warm;
+            } else {
+                got.at(i.seq) = true;
+            }
+        }
+        EXPECT_EQ(warm, warmUp) << id << ": within the fade start every message arrives";
+        out.push_back(std::move(got));
+    }
+    if (counts != nullptr) *counts = countsOf(h.medium);
+    return out;
+}
+
+TEST(MediumLoss, DeliveredFractionMatchesTheReceptionProbability) {
+    constexpr int n = 4000;
+    Counts counts;
+    const auto got = lossyRun(11, n, 0, &counts);
+    const double p[] = {1.0, 0.8, 0.5, 0.2, 0.0};
+    std::uint64_t total = 0;
+    for (std::size_t k = 0; k < got.size(); ++k) {
+        const auto delivered = static_cast<double>(std::count(got[k].begin(), got[k].end(), true));
+        total += static_cast<std::uint64_t>(delivered);
+        const double tolerance = 4 * std::sqrt(p[k] * (1 - p[k]) / n);  // 4 standard deviations
+        EXPECT_NEAR(delivered / n, p[k], tolerance) << kLossyReceivers[k].first;
+    }
+    EXPECT_EQ(std::count(got[0].begin(), got[0].end(), true), n) << "before the fade start nothing is lost";
+    EXPECT_EQ(std::count(got[4].begin(), got[4].end(), true), 0) << "at the range nothing arrives";
+    EXPECT_EQ(counts.at("Ping"), std::make_pair(std::uint64_t{n}, total));
+}
+
+TEST(MediumLoss, SameSeedSameDeliveriesOtherSeedOthers) {
+    const auto a = lossyRun(5, 500);
+    const auto b = lossyRun(5, 500);
+    const auto c = lossyRun(6, 500);
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a[2], c[2]) << "p = 0.5: 500 identical draws from another seed are practically impossible";
+}
+
+TEST(MediumLoss, NoRandomDrawsWhenReceptionIsCertain) {
+    // 300 messages that every receiver gets for sure must not shift the later lossy draws.
+    const auto plain = lossyRun(9, 500);
+    const auto afterWarmUp = lossyRun(9, 500, 300);
+    EXPECT_EQ(plain, afterWarmUp);
+    EXPECT_NE(std::count(plain[2].begin(), plain[2].end(), true), 0);
+    EXPECT_NE(std::count(plain[2].begin(), plain[2].end(), true), 500);
+}
+
+}  // namespace
+}  // namespace sbsim::services::test
