@@ -10,13 +10,12 @@
 namespace sbsim::services {
 
 ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval,
-                               const traffic::VehicleSnapshot& snapshot)
+                               const traffic::VehicleSnapshot& snapshot, traffic::VehicleRegistry& registry)
     : kernel::Module("services"),
       config_(std::move(config)),
       interval_(interval),
       snapshot_(snapshot),
-      ownRegistry_(std::make_unique<traffic::VehicleRegistry>()),
-      registry_(ownRegistry_.get()) {
+      registry_(&registry) {
     if (interval_ <= kernel::SimTime::zero()) throw std::invalid_argument("the middleware interval must be > 0 s");
     for (const ServiceSpec& spec : config_.services()) {
         // Fail before the run, naming the line, rather than at the first matching departure.
@@ -47,17 +46,6 @@ void ServiceManager::listenToAllSignals(Service& service) {
 void ServiceManager::attach(kernel::Module& sumo) {
     sumo.subscribe(traffic::SumoBridge::departedSignal, *this);
     sumo.subscribe(traffic::SumoBridge::arrivedSignal, *this);
-    // A service module may read any snapshot value (and the medium reads positions): all of them.
-    if (auto* bridge = dynamic_cast<traffic::SumoBridge*>(&sumo)) {
-        bridge->demandColumns(traffic::SnapshotColumns::all());
-        if (ownRegistry_) ownRegistry_->attach(*bridge);
-    }
-}
-
-void ServiceManager::useRegistry(traffic::VehicleRegistry& registry) {
-    if (!middlewares_.empty()) throw std::logic_error("ServiceManager::useRegistry after vehicles departed");
-    registry_ = &registry;
-    ownRegistry_.reset();
 }
 
 radio::Medium& ServiceManager::medium() const {

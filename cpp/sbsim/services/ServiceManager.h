@@ -13,6 +13,7 @@
 #include "sbsim/services/Middleware.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/traffic/Penetration.h"
+#include "sbsim/traffic/SnapshotColumns.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::services {
@@ -23,16 +24,18 @@ namespace sbsim::services {
 /// services (and to services listening to all). Attach it to the SUMO bridge.
 class SBSIM_API ServiceManager : public kernel::Module, private kernel::Listener {
 public:
-    /// Throws std::out_of_range if the configuration names a service type nobody registered.
-    ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot);
+    /// Vehicles are commanded through `registry`, shared with the storyboard; `snapshot` is the
+    /// SUMO bridge's. Throws std::out_of_range if the configuration names a service type nobody
+    /// registered.
+    ServiceManager(ServicesConfig config, kernel::SimTime interval, const traffic::VehicleSnapshot& snapshot,
+                   traffic::VehicleRegistry& registry);
     ~ServiceManager() override;
 
-    /// Listen to vehicles departing and arriving (a SumoBridge); the manager's own registry, if it
-    /// has one, is attached to it.
+    /// Listen to vehicles departing and arriving: `sumo` emits traffic::SumoBridge's departed and
+    /// arrived signals (the bridge, or a stand-in).
     void attach(kernel::Module& sumo);
-    /// Commands vehicles through `registry`, shared with the storyboard (default: a registry of
-    /// the manager's own). Call before the first vehicle departs.
-    void useRegistry(traffic::VehicleRegistry& registry);
+    /// The snapshot values services may read: any (tell the SUMO bridge).
+    static traffic::SnapshotColumns columns() { return traffic::SnapshotColumns::all(); }
     traffic::VehicleRegistry& registry() const { return *registry_; }
     void setMedium(radio::Medium& medium) { medium_ = &medium; }
     /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
@@ -67,7 +70,6 @@ private:
     kernel::Message triggerTimer_{"service trigger"};
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;
-    std::unique_ptr<traffic::VehicleRegistry> ownRegistry_;  // unless given one (useRegistry)
     traffic::VehicleRegistry* registry_;
 };
 

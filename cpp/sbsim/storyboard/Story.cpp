@@ -17,4 +17,13 @@ Story::Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::option
     }
 }
 
+const std::vector<WorldEffectPtr>& Story::worldEffects() const {
+    static const std::vector<WorldEffectPtr> none;
+    return none;
+}
+
+void Story::setDefaultName(std::string name) {
+    if (!explicitName_) name_ = std::move(name);
+}
+
 }  // namespace sbsim::storyboard

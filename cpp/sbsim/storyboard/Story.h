@@ -9,6 +9,8 @@
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/storyboard/Condition.h"
 #include "sbsim/storyboard/Effect.h"
+#include "sbsim/storyboard/StoryCounters.h"
+#include "sbsim/storyboard/WorldEffect.h"
 
 namespace sbsim::storyboard {
 
@@ -30,24 +32,30 @@ public:
     /// How often the story may activate per vehicle (then never again for it); none: unlimited.
     std::optional<std::uint64_t> maxActivations() const { return maxActivations_; }
 
-    std::uint64_t activations() const { return activations_; }
-    /// Vehicles the story is active on now.
-    std::uint64_t activeVehicles() const { return activeVehicles_; }
-    /// The time vehicles spent under the story, summed over vehicles (a vehicle active from its
-    /// activation step to its deactivation step counts that difference): a measure of how much a
-    /// story did that, unlike activations, does not depend on how often it flickers.
-    double activeVehicleSeconds() const { return activeTime_.seconds(); }
+    /// A story about the network (a WorldStory) rather than its vehicles: evaluated once per step,
+    /// acting through worldEffects().
+    bool isWorld() const { return worldStory_; }
+    /// The effects on the network while the story holds (none for a story about vehicles).
+    virtual const std::vector<WorldEffectPtr>& worldEffects() const;
+
+    /// What the story did so far in the run (the board counts).
+    const StoryCounters& counters() const { return counters_; }
+    StoryCounters& counters() { return counters_; }
+    /// Names an unnamed story (the board: "story<N>"); a name the script gave stays.
+    void setDefaultName(std::string name);
+
+protected:
+    /// For WorldStory: a story about the network even with no world effects.
+    void markWorld() { worldStory_ = true; }
 
 private:
-    friend class Storyboard;
     ConditionPtr condition_;
     std::vector<EffectPtr> effects_;
     std::string name_;
     bool explicitName_ = false;
     std::optional<std::uint64_t> maxActivations_;
-    std::uint64_t activations_ = 0;
-    std::uint64_t activeVehicles_ = 0;
-    kernel::SimTime activeTime_;
+    StoryCounters counters_;
+    bool worldStory_ = false;
 };
 
 using StoryPtr = std::shared_ptr<Story>;

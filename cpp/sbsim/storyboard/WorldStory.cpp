@@ -38,6 +38,7 @@ WorldStory::WorldStory(ConditionPtr condition, std::vector<WorldEffectPtr> effec
         if (!e) throw std::invalid_argument("WorldStory effects must not contain None");
     }
     requireTimeOnly(this->condition());
+    markWorld();
 }
 
 }  // namespace sbsim::storyboard

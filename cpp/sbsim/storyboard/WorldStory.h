@@ -21,7 +21,7 @@ public:
     WorldStory(ConditionPtr condition, std::vector<WorldEffectPtr> effects,
                std::optional<std::string> name = std::nullopt);
 
-    const std::vector<WorldEffectPtr>& worldEffects() const { return worldEffects_; }
+    const std::vector<WorldEffectPtr>& worldEffects() const override { return worldEffects_; }
 
 private:
     std::vector<WorldEffectPtr> worldEffects_;

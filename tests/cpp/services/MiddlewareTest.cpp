@@ -20,6 +20,7 @@
 #include "sbsim/radio/DiscMedium.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/BoardFeed.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
@@ -52,11 +53,13 @@ public:
     explicit SumoRun(std::string_view servicesXml, radio::DiscSettings disc = {}, std::optional<SimTime> end = {})
         : sumo(sim.emplaceModule<SumoBridge>(settings(end))),
           manager(sim.emplaceModule<ServiceManager>(ServicesConfig::parse(servicesXml, "test.xml"), secs(0.1),
-                                                    sumo.snapshot())),
+                                                    sumo.snapshot(), registry)),
           medium(sim.emplaceModule<radio::DiscMedium>(
               disc, sumo.snapshot(), [this](const std::string& id) { return manager.middlewareOf(id); })) {
         manager.setMedium(medium);
         manager.attach(sumo);
+        registry.attach(sumo);
+        sumo.demandColumns(ServiceManager::columns());
         watch.run = this;
         sumo.subscribe(SumoBridge::departedSignal, watch);
         sumo.subscribe(SumoBridge::arrivedSignal, watch);
@@ -81,6 +84,7 @@ public:
 
     ProbeLog log;
     VehicleWatch watch;
+    traffic::VehicleRegistry registry;
     kernel::Simulation sim;
     SumoBridge& sumo;
     ServiceManager& manager;
@@ -226,8 +230,8 @@ TEST(MiddlewareSumo, StoryboardSignalsReachTheEgoAtActivation) {
         <service type="TestProbeB" listenAll="1"><filters><name pattern="veh2"/></filters></service>
     </services>)",
               {}, secs(25));
-    auto& board = s.sim.emplaceModule<storyboard::Storyboard>();
-    board.attach(s.sumo);
+    auto& board = s.sim.emplaceModule<storyboard::Storyboard>(s.registry);
+    const storyboard::BoardFeed feed(s.sumo, s.sumo.snapshot(), board);
     board.registerStory(signalStory("brake", "veh5", 20, "go"));
     board.registerStory(signalStory("hello", "veh3", 0, "hi"));  // true from veh3's first step on
     s.run();

@@ -16,6 +16,7 @@
 #include "sbsim/services/Middleware.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/BoardFeed.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
@@ -103,16 +104,17 @@ TEST(ServiceManagerFilters, VehicleWithoutMatchingServiceGetsNoMiddleware) {
 
 TEST(ServiceManager, RejectsUnknownServiceTypesAndBadIntervals) {
     VehicleSnapshot snapshot;
+    traffic::VehicleRegistry registry;
     const auto config = [] {
         return ServicesConfig::parse(R"(<services><service type="NoSuchService"/></services>)", "x.xml");
     };
-    EXPECT_THROW(ServiceManager(config(), secs(0.1), snapshot), std::out_of_range);
+    EXPECT_THROW(ServiceManager(config(), secs(0.1), snapshot, registry), std::out_of_range);
     const auto ok = [] {
         return ServicesConfig::parse(R"(<services><service type="TestProbe"/></services>)", "x.xml");
     };
-    EXPECT_THROW(ServiceManager(ok(), SimTime::zero(), snapshot), std::invalid_argument);
-    EXPECT_THROW(ServiceManager(ok(), secs(-0.1), snapshot), std::invalid_argument);
-    EXPECT_NO_THROW(ServiceManager(ok(), secs(0.1), snapshot));
+    EXPECT_THROW(ServiceManager(ok(), SimTime::zero(), snapshot, registry), std::invalid_argument);
+    EXPECT_THROW(ServiceManager(ok(), secs(-0.1), snapshot, registry), std::invalid_argument);
+    EXPECT_NO_THROW(ServiceManager(ok(), secs(0.1), snapshot, registry));
 }
 
 // --- lifecycle -------------------------------------------------------------------------------
@@ -218,9 +220,8 @@ TEST(ServiceSignals, EgoServicesGetTheSignalListenersGetAllOnce) {
         <service type="TestProbe"><filters><name pattern="d" match="inverse"/></filters></service>
         <service type="TestProbeB" listenAll="1"><filters><name pattern="a|b"/></filters></service>
     </services>)");
-    auto& board = h.sim.emplaceModule<storyboard::Storyboard>();
-    board.setControllerFactory([](const std::string& id) { return std::make_unique<traffic::VehicleController>(id); });
-    board.attach(h.sumo);
+    auto& board = h.sim.emplaceModule<storyboard::Storyboard>(h.registry);
+    const storyboard::BoardFeed feed(h.sumo, h.snapshot, board);
     board.registerStory(signalStory("toB", "b", 3, "hello"));
     board.registerStory(signalStory("toD", "d", 4, "nobody"));  // d has no services
     board.registerStory(signalStory("toC", "c", 5, "for c"));

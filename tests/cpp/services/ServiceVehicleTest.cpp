@@ -93,11 +93,10 @@ TEST(ServiceVehicle, ASecondCapReplacesTheServicesFirst) {
 
 TEST(ServiceVehicle, TheBoardAndAServiceShareTheVehiclesStack) {
     // A SpeedEffect story ending while a service's cap is set leaves the service's cap in force.
-    kernel::Simulation sim;
     traffic::VehicleRegistry registry;
+    kernel::Simulation sim;
     registry.setControllerFactory([](const std::string& id) { return std::make_unique<CapModel>(id); });
-    auto& board = sim.emplaceModule<storyboard::Storyboard>();
-    board.useRegistry(registry);
+    auto& board = sim.emplaceModule<storyboard::Storyboard>(registry);
     board.registerStory(std::make_shared<storyboard::Story>(
         std::make_shared<storyboard::TimeCondition>(kernel::SimTime::fromSeconds(1), kernel::SimTime::fromSeconds(2)),
         std::vector<storyboard::EffectPtr>{std::make_shared<storyboard::SpeedEffect>(10.0)}, "slow"));

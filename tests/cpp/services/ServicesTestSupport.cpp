@@ -172,7 +172,8 @@ void Script::handleMessage(kernel::Message& msg) { static_cast<Action&>(msg).run
 Harness::Harness(std::string_view servicesXml, radio::DiscSettings disc, SimTime interval, std::uint64_t seed)
     : sim(seed),
       sumo(sim.emplaceModule<FakeSumo>()),
-      manager(sim.emplaceModule<ServiceManager>(ServicesConfig::parse(servicesXml, "test.xml"), interval, snapshot)),
+      manager(sim.emplaceModule<ServiceManager>(ServicesConfig::parse(servicesXml, "test.xml"), interval, snapshot,
+                                                registry)),
       medium(sim.emplaceModule<radio::DiscMedium>(disc, snapshot,
                                                   [this](const std::string& id) { return manager.middlewareOf(id); })),
       script(sim.emplaceModule<Script>()) {

@@ -185,6 +185,7 @@ public:
 
     ProbeLog log;  // first: the services write into it until they are destroyed
     VehicleSnapshot snapshot;
+    traffic::VehicleRegistry registry;  // the services' and the board's, as in a run
     kernel::Simulation sim;
     FakeSumo& sumo;
     ServiceManager& manager;

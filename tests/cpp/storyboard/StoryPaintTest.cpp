@@ -1,5 +1,5 @@
 // What `sbsim --gui` shows of the stories without a display: the palette, the story colours
-// composed on each vehicle's effect stack (Storyboard::paintStories), and the areas drawn.
+// composed on each vehicle's effect stack (StoryPainter, watching the board's activations), and the areas drawn.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,7 @@
 #include "StoryboardTestSupport.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/StoryAreas.h"
+#include "sbsim/storyboard/StoryPainter.h"
 #include "sbsim/storyboard/StoryPalette.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
@@ -73,8 +74,8 @@ using test::car;
 
 class StoryPaintTest : public testing::Test {
 protected:
-    StoryPaintTest() : board(sim.emplaceModule<Storyboard>()) {
-        board.setControllerFactory(
+    StoryPaintTest() : board(sim.emplaceModule<Storyboard>(registry)) {
+        registry.setControllerFactory(
             [this](const std::string& id) { return std::make_unique<PaintedVehicle>(id, paintings); });
     }
     void story(ConditionPtr condition, std::vector<EffectPtr> effects = {}) {
@@ -86,6 +87,9 @@ protected:
     }
     Color colour(const std::string& id) const { return paintings.now.at(id); }
 
+    StoryPainter painter;
+    traffic::VehicleRegistry registry;
+
     kernel::Simulation sim{7};
     Storyboard& board;
     Paintings paintings;
@@ -93,7 +97,7 @@ protected:
 };
 
 TEST_F(StoryPaintTest, AVehicleTakesItsStorysColourWhileActiveThenItsOwnAgain) {
-    board.paintStories();
+    board.observeActivations(painter);
     story(std::make_shared<SpeedConditionLess>(100.0));  // always: never painted by it
     story(std::make_shared<SpeedConditionGreater>(5.0));
     step(1, {car("a", 1)});
@@ -106,7 +110,7 @@ TEST_F(StoryPaintTest, AVehicleTakesItsStorysColourWhileActiveThenItsOwnAgain) {
 }
 
 TEST_F(StoryPaintTest, TheOwnColourComesBackWhenNoStoryIsActive) {
-    board.paintStories();
+    board.observeActivations(painter);
     story(std::make_shared<SpeedConditionGreater>(5.0));
     step(1, {car("a", 10), car("b", 1)});
     EXPECT_EQ(rgba(colour("a")), rgba(storyColour(0)));
@@ -117,7 +121,7 @@ TEST_F(StoryPaintTest, TheOwnColourComesBackWhenNoStoryIsActive) {
 }
 
 TEST_F(StoryPaintTest, AColorEffectOfTheStoryWinsOverItsPaintAndBothGoAtTheEnd) {
-    board.paintStories();
+    board.observeActivations(painter);
     story(std::make_shared<SpeedConditionGreater>(5.0), {std::make_shared<ColorEffect>(kRed)});
     step(1, {car("a", 10)});
     EXPECT_EQ(rgba(colour("a")), rgba(kRed));
@@ -126,7 +130,7 @@ TEST_F(StoryPaintTest, AColorEffectOfTheStoryWinsOverItsPaintAndBothGoAtTheEnd) 
 }
 
 TEST_F(StoryPaintTest, AnOlderStorysColorEffectYieldsToANewerStorysPaint) {
-    board.paintStories();
+    board.observeActivations(painter);
     story(std::make_shared<SpeedConditionGreater>(5.0), {std::make_shared<ColorEffect>(kRed)});
     story(std::make_shared<SpeedConditionGreater>(8.0));
     step(1, {car("a", 6)});

@@ -35,6 +35,7 @@ namespace sbsim::storyboard {
 namespace {
 
 using kernel::SimTime;
+using traffic::StoryboardSignal;
 using traffic::VehicleSnapshot;
 
 /// Records every command per vehicle; max speed starts at 50.
@@ -76,10 +77,10 @@ public:
 
 class StoryboardTest : public testing::Test {
 protected:
-    StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(&log)) {
-        board.setControllerFactory(
+    StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(registry, &log)) {
+        registry.setControllerFactory(
             [this](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
-        sim.subscribe(Storyboard::signalEmitted, probe);
+        sim.subscribe(traffic::StoryboardSignal::id, probe);
     }
 
     void step(double t, std::vector<VehicleSnapshot::Vehicle> vehicles, std::vector<std::string> left = {}) {
@@ -97,6 +98,7 @@ protected:
 
     std::ostringstream out;
     EventLog log;
+    traffic::VehicleRegistry registry;
     kernel::Simulation sim{7};
     Storyboard& board;
     Commands commands;
@@ -117,7 +119,7 @@ TEST_F(StoryboardTest, ActivatesByVehicleIdThenStoryOrderAndNamesUnnamedStories)
                            R"({"t":1,"type":"activate","story":"story1","vehicle":"b"})",
                        }));
     EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 3.0);
-    EXPECT_EQ(board.stories()[0]->activations(), 2u);
+    EXPECT_EQ(board.stories()[0]->counters().activations(), 2u);
 }
 
 TEST_F(StoryboardTest, DeactivatesWhenTheConditionTurnsFalseAndRestores) {
@@ -277,8 +279,8 @@ TEST_F(StoryboardTest, MaxActivationsLimitsEachVehicleUntilItLeaves) {
         std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{}, "unlimited"));
     // a flips fast/slow every step; b is fast throughout.
     for (int t = 1; t <= 8; ++t) step(t, {car("a", t % 2 == 1 ? 10 : 1), car("b", 10)});
-    EXPECT_EQ(board.stories()[0]->activations(), 3u) << "a twice, b once";
-    EXPECT_EQ(board.stories()[1]->activations(), 5u) << "a at t = 1, 3, 5, 7; b once";
+    EXPECT_EQ(board.stories()[0]->counters().activations(), 3u) << "a twice, b once";
+    EXPECT_EQ(board.stories()[1]->counters().activations(), 5u) << "a at t = 1, 3, 5, 7; b once";
     EXPECT_FALSE(board.isActive("a", *board.stories()[0]));
     EXPECT_DOUBLE_EQ(commands.maxSpeed.at("a"), 50.0) << "the last activation ended and was not renewed";
     lines();
@@ -303,10 +305,12 @@ TEST(StoryboardPurity, TreesArePureOnlyWithoutStatefulNodes) {
 std::string runWithThreads(unsigned threads) {
     std::ostringstream out;
     EventLog log(out);
+    traffic::VehicleRegistry registry;
     kernel::Simulation sim(7, threads);
-    auto& board = sim.emplaceModule<Storyboard>(&log);
+    auto& board = sim.emplaceModule<Storyboard>(registry, &log);
     Commands commands;
-    board.setControllerFactory([&](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
+    registry.setControllerFactory(
+        [&](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
     // Pure stories (evaluated in parallel) between impure ones (a Limit shared by two stories).
     const auto limit = std::make_shared<LimitCondition>(40);
     board.registerStory(
@@ -389,18 +393,18 @@ TEST_F(StoryboardTest, ActiveVehicleSecondsSumTheTimeVehiclesSpendUnderAStory) {
         std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0), std::vector<EffectPtr>{}, "fast"));
     const Story& fast = *board.stories()[0];
     step(1, {car("a", 10), car("b", 1)});
-    EXPECT_EQ(fast.activeVehicles(), 1u);
+    EXPECT_EQ(fast.counters().activeVehicles(), 1u);
     step(2, {car("a", 10), car("b", 10)});  // a: 1 s so far; b joins
-    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 1.0);
+    EXPECT_DOUBLE_EQ(fast.counters().activeVehicleSeconds(), 1.0);
     step(2.5, {car("a", 1), car("b", 10)});  // both active for 0.5 s, then a stops being fast
-    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 2.0);
-    EXPECT_EQ(fast.activeVehicles(), 1u);
+    EXPECT_DOUBLE_EQ(fast.counters().activeVehicleSeconds(), 2.0);
+    EXPECT_EQ(fast.counters().activeVehicles(), 1u);
     step(4, {car("a", 1)}, {"b"});  // b was active until it left
-    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 3.5);
-    EXPECT_EQ(fast.activeVehicles(), 0u);
+    EXPECT_DOUBLE_EQ(fast.counters().activeVehicleSeconds(), 3.5);
+    EXPECT_EQ(fast.counters().activeVehicles(), 0u);
     step(9, {car("a", 1)});
-    EXPECT_DOUBLE_EQ(fast.activeVehicleSeconds(), 3.5);
-    EXPECT_EQ(fast.activations(), 2u);
+    EXPECT_DOUBLE_EQ(fast.counters().activeVehicleSeconds(), 3.5);
+    EXPECT_EQ(fast.counters().activations(), 2u);
 }
 
 // What the snapshot must read is what the trees' nodes declare (plus speed for the stacks that

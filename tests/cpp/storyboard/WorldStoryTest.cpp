@@ -157,7 +157,7 @@ WorldEffectPtr closure(std::vector<std::string> edges) { return std::make_shared
 
 class WorldStoryTest : public testing::Test {
 protected:
-    WorldStoryTest() : log(out), board(sim.emplaceModule<Storyboard>(&log)) {
+    WorldStoryTest() : log(out), board(sim.emplaceModule<Storyboard>(registry, &log)) {
         auto model = std::make_unique<ModelNetwork>();
         network = model.get();
         board.setNetworkController(std::move(model));
@@ -182,6 +182,7 @@ protected:
 
     std::ostringstream out;
     EventLog log;
+    traffic::VehicleRegistry registry;
     kernel::Simulation sim{7};
     Storyboard& board;
     ModelNetwork* network = nullptr;
@@ -195,8 +196,8 @@ TEST_F(WorldStoryTest, LogsActivationAndDeactivationWithVehicleNull) {
                            R"({"t":2,"type":"activate","story":"close","vehicle":null})",
                            R"({"t":4,"type":"deactivate","story":"close","vehicle":null,"reason":"condition"})",
                        }));
-    EXPECT_EQ(board.stories()[0]->activations(), 1u);
-    EXPECT_DOUBLE_EQ(board.stories()[0]->activeVehicleSeconds(), 2.0);
+    EXPECT_EQ(board.stories()[0]->counters().activations(), 1u);
+    EXPECT_DOUBLE_EQ(board.stories()[0]->counters().activeVehicleSeconds(), 2.0);
 }
 
 TEST_F(WorldStoryTest, ClosureRestoresThePermissionsRecordedAtApply) {

@@ -126,7 +126,7 @@ void bindBoard(py::module_& m) {
              py::arg("max_activations") = py::none())
         .def_property_readonly("max_activations", &Story::maxActivations)
         .def_property_readonly("name", &Story::name)
-        .def_property_readonly("activations", &Story::activations);
+        .def_property_readonly("activations", [](const Story& s) { return s.counters().activations(); });
 
     const auto registerStory = [](const BoardHandle& h, StoryPtr story) {
         if (!story) throw py::type_error("registerStory needs a Story, got None");

@@ -1,0 +1,92 @@
+#include "sbsim/app/inputs/ScenarioInputs.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <fstream>
+#include <optional>
+
+#include "sbsim/app/cli/BadInput.h"
+#include "sbsim/app/inputs/BundledScenario.h"
+#include "sbsim/app/inputs/ElfFile.h"
+#include "sbsim/app/inputs/SumoOptions.h"
+#include "sbsim/app/inputs/SumoStateFile.h"
+#include "sbsim/services/ServiceRegistry.h"
+
+namespace sbsim::app {
+
+namespace fs = std::filesystem;
+
+std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<fs::path>& paths, FileLedger& files) {
+    std::vector<std::unique_ptr<PluginLibrary>> plugins;
+    services::ServiceRegistry& registry = services::ServiceRegistry::instance();
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        const fs::path& plugin = paths[i];
+        files.requireInput("--plugin", plugin);
+        for (std::size_t j = 0; j < i; ++j) {
+            std::error_code ec;
+            if (fs::equivalent(plugin, paths[j], ec)) {
+                throw UsageError(
+                    fmt::format("--plugin: '{}' is given twice (also as '{}')", plugin.string(), paths[j].string()));
+            }
+        }
+        requireLoadableElf("--plugin", plugin);
+        const std::size_t known = registry.names().size();
+        try {
+            plugins.push_back(std::make_unique<PluginLibrary>(plugin));
+        } catch (const std::exception& e) {
+            throw InputError(fmt::format("--plugin: cannot load '{}': {}", plugin.string(), e.what()));
+        }
+        if (const auto name = registry.takeConflict()) {
+            throw InputError(fmt::format("--plugin: '{}' registers service type '{}', which is already registered",
+                                         plugin.string(), *name));
+        }
+        if (registry.names().size() == known) {
+            throw InputError(
+                fmt::format("--plugin: '{}' registers no service (a service module registers its types with "
+                            "SBSIM_REGISTER_SERVICE)",
+                            plugin.string()));
+        }
+    }
+    return plugins;
+}
+
+services::ServicesConfig loadServicesConfig(const fs::path& path, FileLedger& files) {
+    files.requireInput("--services", path);
+    std::optional<services::ServicesConfig> config;
+    try {
+        config = services::ServicesConfig::load(path);
+    } catch (const std::exception& e) {
+        throw InputError(fmt::format("--services: {}", e.what()));
+    }
+    const services::ServiceRegistry& registry = services::ServiceRegistry::instance();
+    for (const services::ServiceSpec& spec : config->services()) {
+        if (registry.contains(spec.type)) continue;
+        throw InputError(fmt::format("--services: {}:{}: unknown service type '{}' (known: {})", path.string(),
+                                     spec.line, spec.type, fmt::join(registry.names(), ", ")));
+    }
+    return std::move(*config);
+}
+
+void checkSumoInputs(const std::filesystem::path& sumocfg, const std::vector<std::string>& words, FileLedger& files) {
+    files.requireInput("--sumocfg", sumocfg);
+    const SumoOptions options(sumocfg, words);
+    options.rejectUnrunnable();
+    options.addInputs(files);
+    for (const std::filesystem::path& state : options.files("load-state")) {
+        checkSumoState(fmt::format("--load-state in {}", options.sourceOf("load-state")), state,
+                       options.files("net-file"));
+    }
+}
+
+ScenarioFiles scenarioFiles(const CommandLine& options, bool withBundledStory) {
+    ScenarioFiles files{options.sumocfg.value_or(std::filesystem::path()), options.story};
+    if (!options.sumocfg) {
+        const BundledScenario bundled = BundledScenario::locate();
+        files.sumocfg = bundled.sumocfg;
+        if (!files.story && withBundledStory) files.story = bundled.story;
+    }
+    return files;
+}
+
+}  // namespace sbsim::app

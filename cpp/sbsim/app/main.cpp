@@ -1,6 +1,0 @@
-#include <string>
-#include <vector>
-
-#include "sbsim/app/Program.h"
-
-int main(int argc, char** argv) { return sbsim::app::runProgram(std::vector<std::string>(argv + 1, argv + argc)); }

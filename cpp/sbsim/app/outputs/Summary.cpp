@@ -1,0 +1,122 @@
+#include "sbsim/app/outputs/Summary.h"
+
+#include <fmt/format.h>
+
+#include "sbsim/app/run/Interruption.h"
+#include "sbsim/kernel/StudyParameters.h"
+
+#include <variant>
+
+namespace sbsim::app {
+
+namespace {
+
+const char* endReasonText(traffic::SumoBridge::EndReason r) {
+    switch (r) {
+        case traffic::SumoBridge::EndReason::EndTime:
+            return "end time reached";
+        case traffic::SumoBridge::EndReason::NoMoreVehicles:
+            return "no more vehicles expected";
+        case traffic::SumoBridge::EndReason::Running:
+            break;
+    }
+    return "stopped";
+}
+
+}  // namespace
+
+void printSummary(const RunFigures& f) {
+    fmt::print("sbsim {}: {}\n", SBSIM_VERSION, f.sumocfg.filename().string());
+    fmt::print("end: {} s ({})\n", f.sim.now().str(),
+               Interruption::requested() ? "interrupted" : endReasonText(f.sumo.endReason()));
+    fmt::print("steps: {}\n", f.sumo.steps());
+    fmt::print("vehicles seen: {}\n", f.sumo.vehiclesSeen());
+    fmt::print("peak running: {}\n", f.sumo.peakRunning());
+    fmt::print("seed: {}\n", f.sim.seed());
+    for (const auto& [name, value] : f.sim.parameters().all()) {
+        fmt::print("parameter {}: {}\n", name, kernel::StudyParameters::format(value));
+    }
+    if (f.board != nullptr) {
+        for (const auto& story : f.board->stories()) {
+            fmt::print("activations {}: {}\n", story->name(), story->counters().activations());
+        }
+    }
+    if (f.services != nullptr) {
+        fmt::print("services created: {}\n", f.services->servicesCreated());
+        for (const auto& [type, counts] : f.medium->counts()) {
+            fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
+        }
+    }
+    if (const std::size_t warnings = f.sumo.warnings().total(); warnings > 0) {
+        const auto kinds = f.sumo.warnings().kinds();
+        fmt::print("sumo warnings: {} of {} kind{}, most: {} × {}\n", warnings, kinds.size(),
+                   kinds.size() == 1 ? "" : "s", kinds.front().count, kinds.front().pattern);
+    }
+    const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
+    fmt::print("wall time: {:.3f} s\n", f.wall);
+    fmt::print("time in sumo: {:.3f} s\n", f.sumo.sumoSeconds());
+    fmt::print("time reading vehicles: {:.3f} s\n", f.sumo.snapshotSeconds());
+    if (f.board != nullptr) fmt::print("time in storyboard: {:.3f} s\n", f.board->updateSeconds());
+    fmt::print("real-time factor: {:.1f}\n", f.wall > 0 ? simulated / f.wall : 0.0);
+}
+
+nlohmann::ordered_json summaryJson(const RunFigures& f) {
+    using nlohmann::ordered_json;
+    ordered_json out;
+    out["sbsim"] = SBSIM_VERSION;
+    out["sumo"] = f.sumo.sumoVersion();
+    out["command"] = f.arguments;
+    out["sumocfg"] = f.sumocfg.string();
+    out["seed"] = f.sim.seed();
+    ordered_json parameters = ordered_json::object();
+    for (const auto& [name, value] : f.sim.parameters().all()) {
+        std::visit([&](const auto& v) { parameters[name] = v; }, value);
+    }
+    out["parameters"] = std::move(parameters);
+    out["end"] = {{"time", f.sim.now().seconds()},
+                  {"reason", Interruption::requested() ? "interrupted" : endReasonText(f.sumo.endReason())}};
+    out["steps"] = f.sumo.steps();
+    out["vehicles_seen"] = f.sumo.vehiclesSeen();
+    out["peak_running"] = f.sumo.peakRunning();
+    ordered_json stories = ordered_json::array();
+    if (f.board != nullptr) {
+        for (const auto& story : f.board->stories()) {
+            stories.push_back({{"name", story->name()},
+                               {"activations", story->counters().activations()},
+                               {"active_vehicle_seconds", story->counters().activeVehicleSeconds()}});
+        }
+    }
+    out["stories"] = std::move(stories);
+    ordered_json signals = ordered_json::object();
+    if (f.board != nullptr) {
+        for (const auto& [cause, count] : f.board->signalsByCause()) signals[cause] = count;
+    }
+    out["signals"] = std::move(signals);
+    ordered_json messages = ordered_json::object();
+    if (f.services != nullptr) {
+        out["services_created"] = f.services->servicesCreated();
+        for (const auto& [type, counts] : f.medium->counts()) {
+            messages[type] = {{"sent", counts.sent}, {"delivered", counts.delivered}};
+        }
+    }
+    out["messages"] = std::move(messages);
+    ordered_json warningKinds = ordered_json::array();
+    for (const auto& kind : f.sumo.warnings().kinds()) {
+        warningKinds.push_back({{"kind", kind.pattern}, {"count", kind.count}});
+    }
+    out["sumo_warnings"] = {{"total", f.sumo.warnings().total()}, {"kinds", std::move(warningKinds)}};
+    // Per-vehicle state still held when the run ended: a leak shows as more than are running.
+    out["held_at_end"] = {{"running", f.sumo.snapshot().size()},
+                          {"storyboard_vehicles", f.board != nullptr ? f.board->vehicleStates() : 0},
+                          {"condition_vehicles_max", f.board != nullptr ? f.board->maxConditionStates() : 0},
+                          {"middlewares", f.services != nullptr ? f.services->middlewares() : 0}};
+    const double simulated = (f.sim.now() - f.sumo.beginTime()).seconds();
+    out["timing"] = {{"wall_s", f.wall},
+                     {"sumo_s", f.sumo.sumoSeconds()},
+                     {"reading_vehicles_s", f.sumo.snapshotSeconds()},
+                     {"storyboard_s", f.board != nullptr ? f.board->updateSeconds() : 0.0},
+                     {"real_time_factor", f.wall > 0 ? simulated / f.wall : 0.0}};
+    return out;
+}
+
+}  // namespace sbsim::app

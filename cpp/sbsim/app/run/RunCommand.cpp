@@ -1,0 +1,204 @@
+#include "sbsim/app/run/RunCommand.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <libsumo/TraCIDefs.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "sbsim/app/cli/BadInput.h"
+#include "sbsim/app/inputs/BundledScenario.h"
+#include "sbsim/app/inputs/FileLedger.h"
+#include "sbsim/app/inputs/ScenarioInputs.h"
+#include "sbsim/app/inputs/SumoOptions.h"
+#include "sbsim/app/inputs/SumoStateFile.h"
+#include "sbsim/app/outputs/OutputFile.h"
+#include "sbsim/app/outputs/Summary.h"
+#include "sbsim/app/run/AfterEachStep.h"
+#include "sbsim/app/run/GuiWatch.h"
+#include "sbsim/app/run/Interruption.h"
+#include "sbsim/app/run/ProgressDisplay.h"
+#include "sbsim/app/run/Scenario.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/StoryError.h"
+#include "sbsim/storyboard/StoryPainter.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/python/StoryScript.h"
+#include "sbsim/traffic/Penetration.h"
+#include "sbsim/traffic/SumoBridge.h"
+
+namespace sbsim::app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Runs one phase of the run. A story error while an interruption is pending is the story's
+/// Python code getting KeyboardInterrupt: the phase ends there, as the interruption asked.
+template <typename F>
+void untilInterrupted(F phase) {
+    try {
+        phase();
+    } catch (const storyboard::StoryError&) {
+        if (!Interruption::requested()) throw;
+    }
+}
+
+}  // namespace
+
+/// SUMO warnings of one kind shown on stderr before they are only counted (--verbose: all).
+constexpr std::size_t kWarningsShown = 3;
+
+int RunCommand::run(const CommandLine& cl) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point started = Clock::now();
+
+    const auto [sumocfg, story] = scenarioFiles(cl, !cl.noSnapshot);
+    FileLedger files;
+    checkSumoInputs(sumocfg, cl.sumoOptions, files);
+    if (story) files.requireInput("--story", *story);
+    // Plugins first: their services must be registered before the services file is checked.
+    const std::vector<std::unique_ptr<PluginLibrary>> plugins = loadPlugins(cl.plugins, files);
+    std::optional<services::ServicesConfig> servicesConfig;
+    if (cl.services) servicesConfig = loadServicesConfig(*cl.services, files);
+    // Opened once every input is known, so it can be none of them; before SUMO loads, so a path
+    // it cannot write fails at once.
+    std::optional<OutputFile> events;
+    if (cl.events) events.emplace("--events", *cl.events, files);
+    std::optional<OutputFile> summary;
+    if (cl.summary) summary.emplace("--summary", *cl.summary, files);
+    std::optional<OutputFile> sumoLog;
+    if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
+    std::optional<GuiWatch> gui;
+    if (cl.gui) {
+        GuiWatch::requireDisplay();
+        gui.emplace(cl.guiScreenshots, files);
+    }
+    Interruption::checkpoint("before SUMO loaded");
+
+    traffic::SumoSettings settings;
+    settings.sumocfg = sumocfg;
+    settings.extraOptions = cl.sumoOptions;
+    settings.seed = cl.seed;
+    if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
+    settings.quiet = cl.quiet;
+    settings.warningsShown = cl.verbose ? SIZE_MAX : kWarningsShown;
+    settings.readVehicles = !cl.noSnapshot;
+    settings.gui = cl.gui;
+    if (cl.gui) settings.beforeClose = &GuiWatch::wakeBeforeClose;
+    if (cl.guiDelay)
+        settings.extraOptions.insert(settings.extraOptions.end(), {"--delay", fmt::format("{:g}", *cl.guiDelay)});
+
+    Scenario scenario(cl, settings, cl.threads);
+    kernel::Simulation& sim = scenario.simulation();
+    traffic::SumoBridge& sumo = scenario.sumo();
+    const traffic::Penetration penetration(cl.penetration, sim.seed());
+    if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
+    scenario.loadSumo();
+    Interruption::checkpoint("while SUMO was loading");
+    if (settings.end && *settings.end < sumo.beginTime()) {
+        throw UsageError(
+            fmt::format("--end: {} s is before SUMO's begin time ({} s)", settings.end->str(), sumo.beginTime().str()));
+    }
+
+    std::optional<storyboard::EventLog> log;
+    if (events) log.emplace(events->stream());
+    if (story) {
+        storyboard::StoryScript& script = scenario.addStoryboard(
+            *story, log ? &*log : nullptr,
+            cl.storyboardEquippedOnly ? std::optional<traffic::Penetration>(penetration) : std::nullopt);
+        scenario.board()->setWarmupEndTime(kernel::SimTime::fromSeconds(cl.warmup));
+        std::size_t created = 0;
+        untilInterrupted([&] { created = script.createStories(); });
+        Interruption::reassert();  // the script may have set handlers of its own
+        Interruption::checkpoint("while the story was being created");
+        if (created == 0) fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
+    }
+    storyboard::Storyboard* board = scenario.board();
+    storyboard::StoryPainter painter;
+    if (gui) {
+        if (board != nullptr) {
+            board->observeActivations(painter);
+            gui->drawAreas(board->stories());
+        }
+        gui->attach(sumo);
+    }
+
+    if (servicesConfig) {
+        radio::DiscSettings disc;
+        disc.range = cl.v2xRange;
+        disc.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
+        disc.fadeStart = cl.v2xFadeStart;
+        scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval), disc,
+                             penetration);
+    }
+
+    std::unique_ptr<ProgressDisplay> progress;
+    if (!cl.quiet && isatty(STDERR_FILENO)) {
+        progress = std::make_unique<ProgressDisplay>(stderr, sumo.endTime(), sumo.snapshot());
+        sumo.subscribe(traffic::SumoBridge::stepSignal, *progress);
+    }
+    AfterEachStep checks([&] {
+        Interruption::reassert();
+        if (Interruption::requested()) sim.stop();
+        if (events) events->check();  // a full disk ends the run now, not at its end
+    });
+    sim.subscribe(traffic::SumoBridge::stepSignal, checks);
+    try {
+        untilInterrupted([&] { sim.run(); });
+        untilInterrupted([&] { sim.finish(); });
+    } catch (const traffic::SumoError& e) {
+        throw InputError(fmt::format("SUMO error in '{}' at t={} s: {}", sumocfg.string(), sim.now().str(), e.what()));
+    } catch (const libsumo::TraCIException& e) {
+        throw InputError(fmt::format("SUMO error at t={} s: {}", sim.now().str(), e.what()));
+    } catch (const services::ServicesConfigError& e) {
+        // A service reads its parameters when its first vehicle departs: still bad input.
+        throw InputError(fmt::format("--services: {}", e.what()));
+    }
+    if (progress) progress->clear();
+    if (gui && !Interruption::requested()) gui->finish(sim.now());
+    // Only a run that ended as it should gives outputs their names; others stay .incomplete.
+    if (events && !Interruption::requested()) events->commit();
+    if (sumoLog && !Interruption::requested()) sumoLog->commit();
+
+    const RunFigures figures{sumocfg,
+                             sim,
+                             sumo,
+                             board,
+                             scenario.services(),
+                             scenario.medium(),
+                             std::chrono::duration<double>(Clock::now() - started).count(),
+                             cl.arguments};
+    if (summary) {
+        summary->stream() << summaryJson(figures).dump(2) << '\n';
+        if (!Interruption::requested()) summary->commit();
+    }
+    if (!cl.quiet) {
+        printSummary(figures);
+        std::fflush(stdout);
+    }
+    if (story) {
+        const std::vector<std::string> lingering = scenario.abandonLingeringThreads();
+        if (!lingering.empty()) {
+            fmt::print(stderr, "sbsim: warning: the story left threads running ({}); sbsim exits without them\n",
+                       fmt::join(lingering, ", "));
+        }
+    }
+    // Only after a whole run: a story may read a parameter late, or only in some branch.
+    for (const std::string& name : sim.parameters().unread()) {
+        if (Interruption::requested()) break;
+        fmt::print(stderr, "sbsim: warning: --param {} was never read by the story or a service\n", name);
+    }
+    const int exitCode = Interruption::requested() ? 130 : 0;  // 130: the shell's convention for SIGINT
+    if (Interruption::requested()) fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());
+    if (gui) GuiWatch::closeWithin(sumo, std::chrono::seconds(10), exitCode);
+    return exitCode;
+}
+
+}  // namespace sbsim::app

@@ -1,0 +1,65 @@
+#include "sbsim/app/run/Scenario.h"
+
+#include <fmt/format.h>
+
+#include "sbsim/app/cli/BadInput.h"
+#include "sbsim/storyboard/CanvasFrame.h"
+#include "sbsim/traffic/EquippedView.h"
+
+namespace sbsim::app {
+
+Scenario::Scenario(const CommandLine& options, traffic::SumoSettings settings, unsigned threads)
+    : sumocfg_(settings.sumocfg),
+      sim_(static_cast<std::uint64_t>(options.seed.value_or(CommandLine::kDefaultSeed)), threads),
+      sumo_(sim_.emplaceModule<traffic::SumoBridge>(std::move(settings))) {
+    for (const std::string& param : options.params) {
+        try {
+            sim_.parameters().add(param);
+        } catch (const kernel::StudyParameterError& e) {
+            throw UsageError(fmt::format("--param: {}", e.what()));
+        }
+    }
+    // The parameters that set options (CommandLine::complete applied them) count as read.
+    for (const auto& [name, option] : CommandLine::optionParameters()) (void)sim_.parameters().get(name);
+    vehicles_.attach(sumo_);
+}
+
+void Scenario::loadSumo() {
+    try {
+        sumo_.load();
+    } catch (const traffic::SumoLoadError& e) {
+        throw InputError(fmt::format("SUMO cannot load '{}': {}", sumocfg_.string(), e.what()));
+    }
+}
+
+storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& story, storyboard::EventLog* log,
+                                                 std::optional<traffic::Penetration> equippedOnly) {
+    if (!python_) python_.emplace();
+    board_ = &sim_.emplaceModule<storyboard::Storyboard>(vehicles_, log);
+    std::optional<traffic::EquippedView> view;
+    if (equippedOnly) view.emplace(*equippedOnly);
+    feed_ = std::make_unique<storyboard::BoardFeed>(sumo_, sumo_.snapshot(), *board_, std::move(view));
+    board_->onColumnsChanged([this](traffic::SnapshotColumns columns) { sumo_.demandColumns(columns); });
+    script_ = std::make_unique<storyboard::StoryScript>(*python_, story, *board_,
+                                                        storyboard::CanvasFrame(sumo_.netBoundary()));
+    return *script_;
+}
+
+void Scenario::addServices(services::ServicesConfig config, kernel::SimTime interval, const radio::DiscSettings& disc,
+                           const traffic::Penetration& penetration) {
+    services_ = &sim_.emplaceModule<services::ServiceManager>(std::move(config), interval, sumo_.snapshot(), vehicles_);
+    services::ServiceManager* manager = services_;
+    medium_ = &sim_.emplaceModule<radio::DiscMedium>(
+        disc, sumo_.snapshot(), [manager](const std::string& id) { return manager->middlewareOf(id); });
+    services_->setMedium(*medium_);
+    services_->setPenetration(penetration);
+    services_->attach(sumo_);
+    sumo_.demandColumns(services::ServiceManager::columns());
+}
+
+std::vector<std::string> Scenario::abandonLingeringThreads() {
+    if (!python_) return {};
+    return python_->abandonLingeringThreads(storyboard::PythonRuntime::kThreadGrace);
+}
+
+}  // namespace sbsim::app

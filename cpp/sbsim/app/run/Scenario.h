@@ -1,0 +1,71 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sbsim/app/cli/CommandLine.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/services/ServiceManager.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/BoardFeed.h"
+#include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/python/PythonRuntime.h"
+#include "sbsim/storyboard/python/StoryScript.h"
+#include "sbsim/traffic/Penetration.h"
+#include "sbsim/traffic/SumoBridge.h"
+#include "sbsim/traffic/VehicleRegistry.h"
+
+namespace sbsim::app {
+
+/// One scenario assembled as the command line says, the one way `sbsim run` and `sbsim check`
+/// both build it: the simulation (seeded, its threads, the --param study parameters), the SUMO
+/// bridge, the vehicle registry that the stories and the services both command through, and on
+/// demand the storyboard with its script and the services with their medium. Parts are added in
+/// that order; each is wired to the bridge as it is added.
+class Scenario {
+public:
+    /// Makes the simulation and the (not yet loaded) SUMO bridge. Throws UsageError for a bad --param.
+    Scenario(const CommandLine& options, traffic::SumoSettings settings, unsigned threads);
+    Scenario(const Scenario&) = delete;
+    Scenario& operator=(const Scenario&) = delete;
+
+    /// Loads SUMO; throws InputError naming the sumocfg when SUMO cannot.
+    void loadSumo();
+    /// Adds the storyboard (events to `log`, if given; with `equippedOnly`, the stories see only
+    /// those vehicles) and loads the story script, whose createStories() is still to run.
+    storyboard::StoryScript& addStoryboard(const std::filesystem::path& story, storyboard::EventLog* log,
+                                           std::optional<traffic::Penetration> equippedOnly = std::nullopt);
+    /// Adds the services with the disc medium.
+    void addServices(services::ServicesConfig config, kernel::SimTime interval, const radio::DiscSettings& disc,
+                     const traffic::Penetration& penetration);
+
+    kernel::Simulation& simulation() { return sim_; }
+    traffic::SumoBridge& sumo() { return sumo_; }
+    /// Null until added.
+    storyboard::Storyboard* board() { return board_; }
+    services::ServiceManager* services() { return services_; }
+    radio::Medium* medium() { return medium_; }
+    /// Threads the story script left running, abandoned after a grace period (their names).
+    std::vector<std::string> abandonLingeringThreads();
+
+private:
+    std::filesystem::path sumocfg_;
+    // Destroyed bottom up: the script's Python objects before the board, the simulation before
+    // the registry its modules hold entries of, the interpreter last.
+    std::optional<storyboard::PythonRuntime> python_;  // outlives the stories' Python objects
+    traffic::VehicleRegistry vehicles_;                // outlives the simulation, whose modules hold its entries
+    kernel::Simulation sim_;
+    traffic::SumoBridge& sumo_;
+    storyboard::Storyboard* board_ = nullptr;
+    std::unique_ptr<storyboard::StoryScript> script_;
+    std::unique_ptr<storyboard::BoardFeed> feed_;
+    services::ServiceManager* services_ = nullptr;
+    radio::Medium* medium_ = nullptr;
+};
+
+}  // namespace sbsim::app
