@@ -47,7 +47,7 @@ struct VehicleWatch : kernel::Listener {
     void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
 };
 
-/// SUMO bridge, service manager and medium wired as in app/Program.cpp, on the small scenario.
+/// SUMO bridge, service manager and medium wired as app/run/Scenario.cpp wires them, on the small scenario.
 class SumoRun {
 public:
     explicit SumoRun(std::string_view servicesXml, radio::DiscSettings disc = {}, std::optional<SimTime> end = {})

@@ -169,7 +169,7 @@ public:
 };
 
 /// A simulation with a fake SUMO, a hand-made snapshot, a service manager and a medium, wired as
-/// in app/Program.cpp. step() plays the part of a SUMO step.
+/// in app/run/Scenario.cpp. step() plays the part of a SUMO step.
 class Harness {
 public:
     /// `seed`: the simulation's, which seeds the medium's packet losses.
