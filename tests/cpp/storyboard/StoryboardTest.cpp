@@ -69,9 +69,9 @@ using test::car;
 class SignalProbe : public kernel::Listener {
 public:
     void receiveSignal(kernel::Module&, kernel::SignalId, const kernel::Object& value) override {
-        signals.push_back(dynamic_cast<const StoryboardSignal&>(value));
+        signals.push_back(dynamic_cast<const traffic::StoryboardSignal&>(value));
     }
-    std::vector<StoryboardSignal> signals;
+    std::vector<traffic::StoryboardSignal> signals;
 };
 
 class StoryboardTest : public testing::Test {
@@ -79,7 +79,7 @@ protected:
     StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(&log)) {
         board.setControllerFactory(
             [this](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
-        sim.subscribe(Storyboard::signalEmitted, probe);
+        sim.subscribe(traffic::StoryboardSignal::id, probe);
     }
 
     void step(double t, std::vector<VehicleSnapshot::Vehicle> vehicles, std::vector<std::string> left = {}) {
