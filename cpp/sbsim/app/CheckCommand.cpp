@@ -23,6 +23,7 @@
 #include "sbsim/storyboard/WorldStory.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 #include "sbsim/storyboard/python/StoryScript.h"
+#include "sbsim/traffic/NetworkIds.h"
 #include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::app {
@@ -46,6 +47,7 @@ public:
                 const std::string_view tag = e->Name();
                 if (tag == "vehicle" || tag == "trip") ids_.insert(id);
                 if (tag == "flow") flows_.insert(id);
+                if (tag == "vType" || tag == "vTypeDistribution") types_.insert(id);
             }
         }
     }
@@ -55,8 +57,13 @@ public:
         return dot != std::string_view::npos && flows_.count(std::string(id.substr(0, dot))) != 0;
     }
 
+    /// Whether a route file defines this vehicle type (SUMO reads a route file's types only as it
+    /// reaches them).
+    bool definesType(std::string_view id) const { return types_.count(std::string(id)) != 0; }
+
 private:
     std::set<std::string> ids_;
+    std::set<std::string> types_;
     std::set<std::string> flows_;
 };
 
@@ -100,6 +107,13 @@ int CheckCommand::run(const CommandLine& cl) {
     scenario.begin = sumo.beginTime();
     scenario.end = sumo.endTime();
     scenario.vehicleDefined = [&](std::string_view id) { return routes.defines(id); };
+    const traffic::NetworkIds network = traffic::NetworkIds::ofLoadedSumo();
+    scenario.edgeExists = [&](std::string_view id) { return network.hasEdge(id); };
+    scenario.laneExists = [&](std::string_view id) { return network.hasLane(id); };
+    scenario.trafficLightExists = [&](std::string_view id) { return network.hasTrafficLight(id); };
+    scenario.vehicleTypeExists = [&](std::string_view id) {
+        return network.hasVehicleType(id) || routes.definesType(id);
+    };
     const auto warnings = storyboard::checkStories(board.stories(), scenario);
 
     if (json_) {
@@ -120,7 +134,7 @@ int CheckCommand::run(const CommandLine& cl) {
                 if (area.radius) entry["radius"] = *area.radius;
                 areas.push_back(std::move(entry));
             }
-            const bool world = dynamic_cast<const storyboard::WorldStory*>(s.get()) != nullptr;
+            const bool world = s->isWorldStory();
             out["stories"].push_back(
                 {{"name", s->name()}, {"world", world}, {"tree", std::move(nodes)}, {"areas", std::move(areas)}});
         }

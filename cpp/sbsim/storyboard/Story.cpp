@@ -17,4 +17,9 @@ Story::Story(ConditionPtr condition, std::vector<EffectPtr> effects, std::option
     }
 }
 
+const std::vector<WorldEffectPtr>& Story::worldEffects() const {
+    static const std::vector<WorldEffectPtr> none;
+    return none;
+}
+
 }  // namespace sbsim::storyboard

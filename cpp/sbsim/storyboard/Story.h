@@ -9,6 +9,7 @@
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/storyboard/Condition.h"
 #include "sbsim/storyboard/Effect.h"
+#include "sbsim/storyboard/WorldEffect.h"
 
 namespace sbsim::storyboard {
 
@@ -29,6 +30,10 @@ public:
     bool hasExplicitName() const { return explicitName_; }
     /// How often the story may activate per vehicle (then never again for it); none: unlimited.
     std::optional<std::uint64_t> maxActivations() const { return maxActivations_; }
+    /// Whether the story acts on the network (a WorldStory) rather than on each vehicle.
+    virtual bool isWorldStory() const { return false; }
+    /// The effects on the network a WorldStory applies; none for a story on vehicles.
+    virtual const std::vector<WorldEffectPtr>& worldEffects() const;
 
     std::uint64_t activations() const { return activations_; }
     /// Vehicles the story is active on now.

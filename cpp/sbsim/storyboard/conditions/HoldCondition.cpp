@@ -1,5 +1,9 @@
 #include "sbsim/storyboard/conditions/HoldCondition.h"
 
+#include <fmt/format.h>
+
+#include "sbsim/storyboard/DescribeText.h"
+
 #include <stdexcept>
 
 namespace sbsim::storyboard {
@@ -18,5 +22,7 @@ ConditionResult HoldCondition::test(const EvaluationContext& ctx, VehicleIndex e
     if (!since || ctx.now() - *since < duration_) return false;
     return result;
 }
+
+std::string HoldCondition::describe() const { return fmt::format("HoldCondition({})", describeTime(duration_)); }
 
 }  // namespace sbsim::storyboard

@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/LimitCondition.h"
 
+#include "sbsim/storyboard/CheckContext.h"
+
 #include <fmt/format.h>
 
 #include <stdexcept>
@@ -22,6 +24,12 @@ ConditionResult LimitCondition::test(const EvaluationContext& ctx, VehicleIndex 
 
 void LimitCondition::forget(std::string_view vehicleId) {
     if (const auto it = admitted_.find(vehicleId); it != admitted_.end()) admitted_.erase(it);
+}
+
+std::string LimitCondition::describe() const { return fmt::format("LimitCondition({})", limit_); }
+
+void LimitCondition::check(CheckContext& ctx) const {
+    if (limit_ == 0) ctx.warn("LimitCondition(0) admits no vehicle: the story never activates");
 }
 
 }  // namespace sbsim::storyboard
