@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "sbsim/storyboard/DescribeText.h"
 #include "sbsim/storyboard/StoryAreas.h"
@@ -36,18 +37,24 @@ bool overlapsBoundary(const std::vector<Eigen::Vector2d>& points, const Eigen::M
     return xmax >= b(0, 0) && xmin <= b(0, 1) && ymax >= b(1, 0) && ymin <= b(1, 1);
 }
 
-const char* plural(NetworkObject kind) {
+/// The scenario's question about one kind of id, and how a warning says an id failed it.
+struct IdQuestion {
+    std::function<bool(std::string_view)> CheckScenario::*exists;
+    const char* missing;
+};
+
+IdQuestion questionFor(NetworkObject kind) {
     switch (kind) {
         case NetworkObject::Edge:
-            return "edges the network does not have";
+            return {&CheckScenario::edgeExists, "edges the network does not have"};
         case NetworkObject::Lane:
-            return "lanes the network does not have";
+            return {&CheckScenario::laneExists, "lanes the network does not have"};
         case NetworkObject::TrafficLight:
-            return "traffic lights the network does not have";
+            return {&CheckScenario::trafficLightExists, "traffic lights the network does not have"};
         case NetworkObject::VehicleType:
-            return "vehicle types SUMO did not load";
+            return {&CheckScenario::vehicleTypeExists, "vehicle types SUMO did not load"};
     }
-    return "ids";
+    throw std::logic_error("unknown NetworkObject");
 }
 
 }  // namespace
@@ -60,22 +67,8 @@ bool CheckContext::vehicleDefined(std::string_view id) const {
 }
 
 bool CheckContext::exists(NetworkObject kind, std::string_view id) const {
-    const std::function<bool(std::string_view)>* question = nullptr;
-    switch (kind) {
-        case NetworkObject::Edge:
-            question = &scenario_.edgeExists;
-            break;
-        case NetworkObject::Lane:
-            question = &scenario_.laneExists;
-            break;
-        case NetworkObject::TrafficLight:
-            question = &scenario_.trafficLightExists;
-            break;
-        case NetworkObject::VehicleType:
-            question = &scenario_.vehicleTypeExists;
-            break;
-    }
-    return question == nullptr || !*question || (*question)(id);
+    const std::function<bool(std::string_view)>& exists = scenario_.*questionFor(kind).exists;
+    return !exists || exists(id);
 }
 
 void CheckContext::warnUnknown(std::string_view who, NetworkObject kind, const std::vector<std::string>& ids) {
@@ -83,7 +76,7 @@ void CheckContext::warnUnknown(std::string_view who, NetworkObject kind, const s
     for (const std::string& id : ids) {
         if (!exists(kind, id)) unknown.insert(id);
     }
-    if (!unknown.empty()) warn(fmt::format("{} names {}: {}", who, plural(kind), describeIds(unknown)));
+    if (!unknown.empty()) warn(fmt::format("{} names {}: {}", who, questionFor(kind).missing, describeIds(unknown)));
 }
 
 void CheckContext::warnNeverHolds(std::string_view who, const std::optional<TimeWindow>& window) {
