@@ -189,6 +189,34 @@ def test_ids_the_network_has_pass_and_are_printed(trips_cfg: Path, tmp_path: Pat
     assert "  → RouteEffect(to C1C2)" in result.stdout.splitlines()
 
 
+def test_python_conditions_and_effects_are_printed_by_their_class_name(trips_cfg: Path, tmp_path: Path) -> None:
+    story = write_story(
+        tmp_path,
+        """
+        import storyboard
+        from storyboard import AndCondition, Story, TimeCondition
+
+        class IsTruck(storyboard.Condition):
+            def test(self, vehicle):
+                return vehicle.type == "truck"
+
+        class Honk(storyboard.Effect):
+            def apply(self, vehicle):
+                pass
+            def remove(self, vehicle):
+                pass
+
+        def createStories(board):
+            board.registerStory(Story(AndCondition(IsTruck(), TimeCondition(10)), [Honk()], name="py"))
+        """,
+    )
+    result = check(trips_cfg, story, "--strict")
+    assert result.returncode == 0, result.stdout + result.stderr
+    lines = result.stdout.splitlines()
+    at = lines.index("story 'py'")
+    assert lines[at + 1 : at + 5] == ["  AndCondition", "    IsTruck", "    TimeCondition(10 s, end)", "  → Honk"]
+
+
 BROKEN = {
     "syntax": ("x = = 1", "x = = 1", "SyntaxError"),
     "name": ("    board.registerStory(Story(Nope(), []))", "Nope()", "NameError"),
