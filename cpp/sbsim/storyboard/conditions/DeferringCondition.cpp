@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
-#include "sbsim/storyboard/DescribeText.h"
-
 #include <cmath>
 #include <stdexcept>
+
+#include "sbsim/storyboard/DescribeText.h"
 
 namespace sbsim::storyboard {
 

@@ -1,11 +1,11 @@
 #include "sbsim/storyboard/conditions/LimitCondition.h"
 
-#include "sbsim/storyboard/CheckContext.h"
-
 #include <fmt/format.h>
 
 #include <stdexcept>
 #include <string>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 

@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "sbsim/storyboard/DescribeText.h"
-
 #include <stdexcept>
+
+#include "sbsim/storyboard/DescribeText.h"
 
 namespace sbsim::storyboard {
 

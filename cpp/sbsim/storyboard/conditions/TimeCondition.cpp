@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <stdexcept>
+
 #include "sbsim/storyboard/CheckContext.h"
 #include "sbsim/storyboard/DescribeText.h"
-
-#include <stdexcept>
 
 namespace sbsim::storyboard {
 

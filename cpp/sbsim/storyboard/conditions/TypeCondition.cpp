@@ -1,7 +1,6 @@
 #include "sbsim/storyboard/conditions/TypeCondition.h"
 
 #include <fmt/format.h>
-
 #include <re2/re2.h>
 
 #include <stdexcept>

@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "sbsim/storyboard/CheckContext.h"
-
 #include <algorithm>
 #include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 

@@ -1,12 +1,11 @@
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 
+#include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include "sbsim/storyboard/CheckContext.h"
-
-#include <fmt/format.h>
-
 #include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 

@@ -1,11 +1,11 @@
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
 
-#include "sbsim/storyboard/CheckContext.h"
-
 #include <fmt/format.h>
 
 #include <stdexcept>
 #include <string_view>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 

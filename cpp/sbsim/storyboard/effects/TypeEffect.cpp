@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "sbsim/storyboard/CheckContext.h"
-
 #include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 
