@@ -140,6 +140,83 @@ def test_json_gives_each_story_its_areas_in_sumo_frame(offset_cfg: Path, tmp_pat
     }
 
 
+UNKNOWN_IDS = {
+    "edge": ('Story(RoadCondition({"B1C1", "nowhere"}), [SpeedEffect(5)], name="s")', "RoadCondition", "nowhere"),
+    "traffic light": (
+        'WorldStory(TimeCondition(10), [TrafficLightEffect("Z9", "r")], name="s")',
+        "TrafficLightEffect",
+        "Z9",
+    ),
+    "type": ('Story(TimeCondition(10), [TypeEffect("bus9")], name="s")', "TypeEffect", "bus9"),
+}
+ID_IMPORTS = (
+    "from storyboard import RoadCondition, SpeedEffect, Story, TimeCondition, TrafficLightEffect, TypeEffect, "
+    "WorldStory"
+)
+
+
+@pytest.mark.parametrize("case", sorted(UNKNOWN_IDS))
+def test_ids_the_network_lacks_are_warned_naming_them(trips_cfg: Path, tmp_path: Path, case: str) -> None:
+    story_text, who, unknown = UNKNOWN_IDS[case]
+    story = tmp_path / "story.py"
+    story.write_text(f"{ID_IMPORTS}\n\ndef createStories(board):\n    board.registerStory({story_text})\n")
+    assert check(trips_cfg, story).returncode == 0
+    result = check(trips_cfg, story, "--strict")
+    assert result.returncode == 1, result.stdout + result.stderr
+    (warning,) = [line for line in result.stderr.splitlines() if "warning" in line]
+    assert "story 's'" in warning and who in warning and unknown in warning, warning
+    assert "B1C1" not in warning, warning
+
+
+def test_ids_the_network_has_pass_and_are_printed(trips_cfg: Path, tmp_path: Path) -> None:
+    # An internal edge is a road too; "truck" is a type of the route file; B1 a traffic light.
+    story = write_story(
+        tmp_path,
+        """
+        from storyboard import (LaneCondition, RoadCondition, RouteEffect, Story, TimeCondition, TrafficLightEffect,
+                                TypeEffect, WorldStory)
+
+        def createStories(board):
+            board.registerStory(Story(RoadCondition({"B1C1", ":B1_0"}), [TypeEffect("truck")], name="road"))
+            board.registerStory(Story(LaneCondition({"B1C1_0"}), [RouteEffect(target_edge="C1C2")], name="lane"))
+            board.registerStory(WorldStory(TimeCondition(10), [TrafficLightEffect("B1", "r")], name="light"))
+        """,
+    )
+    result = check(trips_cfg, story, "--strict")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "  RoadCondition(:B1_0, B1C1)" in result.stdout.splitlines()
+    assert "  LaneCondition(B1C1_0)" in result.stdout.splitlines()
+    assert "  → RouteEffect(to C1C2)" in result.stdout.splitlines()
+
+
+def test_python_conditions_and_effects_are_printed_by_their_class_name(trips_cfg: Path, tmp_path: Path) -> None:
+    story = write_story(
+        tmp_path,
+        """
+        import storyboard
+        from storyboard import AndCondition, Story, TimeCondition
+
+        class IsTruck(storyboard.Condition):
+            def test(self, vehicle):
+                return vehicle.type == "truck"
+
+        class Honk(storyboard.Effect):
+            def apply(self, vehicle):
+                pass
+            def remove(self, vehicle):
+                pass
+
+        def createStories(board):
+            board.registerStory(Story(AndCondition(IsTruck(), TimeCondition(10)), [Honk()], name="py"))
+        """,
+    )
+    result = check(trips_cfg, story, "--strict")
+    assert result.returncode == 0, result.stdout + result.stderr
+    lines = result.stdout.splitlines()
+    at = lines.index("story 'py'")
+    assert lines[at + 1 : at + 5] == ["  AndCondition", "    IsTruck", "    TimeCondition(10 s, end)", "  → Honk"]
+
+
 BROKEN = {
     "syntax": ("x = = 1", "x = = 1", "SyntaxError"),
     "name": ("    board.registerStory(Story(Nope(), []))", "Nope()", "NameError"),

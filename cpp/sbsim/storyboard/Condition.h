@@ -8,11 +8,15 @@
 #include <string_view>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/storyboard/ConditionArea.h"
 #include "sbsim/storyboard/ConditionResult.h"
 #include "sbsim/storyboard/EvaluationContext.h"
+#include "sbsim/storyboard/TimeWindow.h"
 #include "sbsim/storyboard/TypeName.h"
 
 namespace sbsim::storyboard {
+
+class CheckContext;
 
 /// A node of a story's condition tree. A condition object may be shared by several stories (and
 /// several places of one tree); it then shares its state, as in Artery. Per-vehicle state is keyed
@@ -41,9 +45,25 @@ public:
     /// one) reads everything, hence the default.
     virtual traffic::SnapshotColumns columns() const { return traffic::SnapshotColumns::all(); }
     /// Calls `visit` on each direct child (And/Or), so the board can reach every node of a tree.
-    virtual void forEachChild(const std::function<void(Condition&)>& /*visit*/) {}
+    /// Const: children are shared objects of their own, not parts of this node.
+    virtual void forEachChild(const std::function<void(Condition&)>& /*visit*/) const {}
     /// The class name messages show (a Python condition: its Python class's).
     virtual std::string typeName() const { return typeNameOf(typeid(*this)); }
+
+    /// This node in one line, as `sbsim check` prints it: its class name and arguments, e.g.
+    /// "TimeCondition(120 s, 420 s)" (children are printed below it, not in it).
+    virtual std::string describe() const { return typeName(); }
+    /// The place this node ties its story to (what the GUI, the report's map and `check --json`
+    /// draw), if any.
+    virtual std::optional<ConditionArea> area() const { return std::nullopt; }
+    /// Whether test() depends on the time alone, never on the ego: what a WorldStory's tree may
+    /// hold. Logic nodes answer from their children.
+    virtual bool timeOnly() const { return false; }
+    /// The times outside which this node is false for every vehicle, if it bounds them (a
+    /// TimeCondition; a conjunction: the intersection of its operands' windows).
+    virtual std::optional<TimeWindow> timeWindow() const { return std::nullopt; }
+    /// Reports to `sbsim check` what looks wrong in this node itself (its children report their own).
+    virtual void check(CheckContext& /*ctx*/) const {}
 };
 
 using ConditionPtr = std::shared_ptr<Condition>;

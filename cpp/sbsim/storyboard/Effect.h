@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 
 namespace sbsim::storyboard {
 
+class CheckContext;
 class Story;
 
 /// What an effect may act on when its story activates or deactivates for one vehicle.
@@ -44,6 +46,13 @@ public:
     virtual void remove(EffectScope& scope) = 0;
     /// The class name messages show (a Python effect: its Python class's).
     virtual std::string typeName() const { return typeNameOf(typeid(*this)); }
+    /// This effect in one line, as `sbsim check` prints it: its class name and arguments.
+    virtual std::string describe() const { return typeName(); }
+    /// What the effect commands, if another effect of the same story could fight it over that
+    /// ("speed"): `sbsim check` warns about two in one story.
+    virtual std::optional<std::string> domain() const { return std::nullopt; }
+    /// Reports to `sbsim check` what looks wrong in this effect (an id the network lacks).
+    virtual void check(CheckContext& /*ctx*/) const {}
 };
 
 using EffectPtr = std::shared_ptr<Effect>;

@@ -31,11 +31,9 @@ public:
     bool hasExplicitName() const { return explicitName_; }
     /// How often the story may activate per vehicle (then never again for it); none: unlimited.
     std::optional<std::uint64_t> maxActivations() const { return maxActivations_; }
-
-    /// A story about the network (a WorldStory) rather than its vehicles: evaluated once per step,
-    /// acting through worldEffects().
-    bool isWorld() const { return worldStory_; }
-    /// The effects on the network while the story holds (none for a story about vehicles).
+    /// Whether the story acts on the network (a WorldStory) rather than on each vehicle.
+    virtual bool isWorldStory() const { return false; }
+    /// The effects on the network a WorldStory applies; none for a story on vehicles.
     virtual const std::vector<WorldEffectPtr>& worldEffects() const;
 
     /// What the story did so far in the run (the board counts).
@@ -44,10 +42,6 @@ public:
     /// Names an unnamed story (the board: "story<N>"); a name the script gave stays.
     void setDefaultName(std::string name);
 
-protected:
-    /// For WorldStory: a story about the network even with no world effects.
-    void markWorld() { worldStory_ = true; }
-
 private:
     ConditionPtr condition_;
     std::vector<EffectPtr> effects_;
@@ -55,7 +49,6 @@ private:
     bool explicitName_ = false;
     std::optional<std::uint64_t> maxActivations_;
     StoryCounters counters_;
-    bool worldStory_ = false;
 };
 
 using StoryPtr = std::shared_ptr<Story>;

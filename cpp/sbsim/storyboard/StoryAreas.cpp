@@ -5,9 +5,6 @@
 #include <numbers>
 #include <set>
 
-#include "sbsim/storyboard/conditions/DistanceCondition.h"
-#include "sbsim/storyboard/conditions/PolygonCondition.h"
-
 namespace sbsim::storyboard {
 
 std::vector<StoryArea> conditionAreas(const Condition& root) {
@@ -15,13 +12,13 @@ std::vector<StoryArea> conditionAreas(const Condition& root) {
     std::set<const Condition*> seen;
     const std::function<void(const Condition&)> visit = [&](const Condition& c) {
         if (!seen.insert(&c).second) return;
-        if (const auto* p = dynamic_cast<const PolygonCondition*>(&c)) {
-            out.push_back({&c, p->polygon().vertices(), std::nullopt});
-        } else if (const auto* d = dynamic_cast<const DistanceCondition*>(&c); d != nullptr && d->point()) {
-            out.push_back({&c, {*d->point()}, d->distance()});
+        if (std::optional<ConditionArea> area = c.area()) {
+            StoryArea found;
+            static_cast<ConditionArea&>(found) = std::move(*area);
+            found.condition = &c;
+            out.push_back(std::move(found));
         }
-        // forEachChild is non-const only because the board visits to mutate; this walk only reads.
-        const_cast<Condition&>(c).forEachChild([&](Condition& child) { visit(child); });
+        c.forEachChild(visit);
     };
     visit(root);
     return out;
@@ -29,7 +26,7 @@ std::vector<StoryArea> conditionAreas(const Condition& root) {
 
 std::vector<StoryArea> storyAreas(const Story& story) { return conditionAreas(story.condition()); }
 
-std::vector<Eigen::Vector2d> outline(const StoryArea& area, int circleVertices) {
+std::vector<Eigen::Vector2d> outline(const ConditionArea& area, int circleVertices) {
     if (!area.radius) return area.points;
     std::vector<Eigen::Vector2d> out;
     out.reserve(static_cast<std::size_t>(circleVertices));

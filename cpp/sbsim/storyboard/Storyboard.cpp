@@ -48,7 +48,7 @@ void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
     story->setDefaultName(fmt::format("story{}", stories_.size()));
     collectConditions(story->condition());
-    if (story->isWorld()) {
+    if (story->isWorldStory()) {
         world_.addStory(*story);
     } else {
         vehicles_.addStory(*story, stories_.size());

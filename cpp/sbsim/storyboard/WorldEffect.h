@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
@@ -12,6 +13,7 @@
 
 namespace sbsim::storyboard {
 
+class CheckContext;
 class Story;
 
 /// What a world effect may act on when its WorldStory activates or deactivates.
@@ -37,6 +39,12 @@ public:
     virtual void remove(WorldScope& scope) = 0;
     /// The class name messages show.
     virtual std::string typeName() const { return typeNameOf(typeid(*this)); }
+    /// This effect in one line, as `sbsim check` prints it: its class name and arguments.
+    virtual std::string describe() const { return typeName(); }
+    /// The vehicle ids this effect adds to the simulation (as defined as the route files' ones).
+    virtual std::vector<std::string> definedVehicles() const { return {}; }
+    /// Reports to `sbsim check` what looks wrong in this effect (an id the network lacks).
+    virtual void check(CheckContext& /*ctx*/) const {}
 };
 
 using WorldEffectPtr = std::shared_ptr<WorldEffect>;

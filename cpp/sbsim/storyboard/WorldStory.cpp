@@ -2,32 +2,23 @@
 
 #include <stdexcept>
 
-#include "sbsim/storyboard/conditions/AllCondition.h"
-#include "sbsim/storyboard/conditions/AndCondition.h"
-#include "sbsim/storyboard/conditions/AnyCondition.h"
-#include "sbsim/storyboard/conditions/HoldCondition.h"
-#include "sbsim/storyboard/conditions/NotCondition.h"
-#include "sbsim/storyboard/conditions/OrCondition.h"
-#include "sbsim/storyboard/conditions/RisingCondition.h"
-#include "sbsim/storyboard/conditions/TimeCondition.h"
-
 namespace sbsim::storyboard {
 
 namespace {
 
-/// Only nodes whose value depends on time alone: the world has no ego to look at.
-void requireTimeOnly(Condition& c) {
-    const bool timeOnly = dynamic_cast<TimeCondition*>(&c) || dynamic_cast<NotCondition*>(&c) ||
-                          dynamic_cast<AllCondition*>(&c) || dynamic_cast<AnyCondition*>(&c) ||
-                          dynamic_cast<HoldCondition*>(&c) || dynamic_cast<RisingCondition*>(&c) ||
-                          dynamic_cast<AndCondition*>(&c) || dynamic_cast<OrCondition*>(&c);
-    if (!timeOnly) {
-        throw std::invalid_argument(
-            "WorldStory conditions look at time only (TimeCondition, and Not/All/Any/Hold/"
-            "Rising/And/Or over it), got " +
-            c.typeName());
-    }
-    c.forEachChild(requireTimeOnly);
+/// The world has no ego to look at: every node must depend on time alone. Names the first leaf
+/// (depth first) that does not, since a logic node is time-only exactly when its children are.
+void requireTimeOnly(const Condition& c) {
+    if (c.timeOnly()) return;
+    const Condition* culprit = nullptr;
+    c.forEachChild([&](const Condition& child) {
+        if (culprit == nullptr && !child.timeOnly()) culprit = &child;
+    });
+    if (culprit != nullptr) return requireTimeOnly(*culprit);
+    throw std::invalid_argument(
+        "WorldStory conditions look at time only (TimeCondition, and Not/All/Any/Hold/"
+        "Rising/And/Or over it), got " +
+        c.typeName());
 }
 
 }  // namespace
@@ -38,7 +29,6 @@ WorldStory::WorldStory(ConditionPtr condition, std::vector<WorldEffectPtr> effec
         if (!e) throw std::invalid_argument("WorldStory effects must not contain None");
     }
     requireTimeOnly(this->condition());
-    markWorld();
 }
 
 }  // namespace sbsim::storyboard

@@ -16,11 +16,12 @@ namespace sbsim::storyboard {
 /// "vehicle" while it is active, so activations and active seconds read as for other stories.
 class SBSIM_API WorldStory : public Story {
 public:
-    /// Throws std::invalid_argument for a null condition or effect, or a condition tree with a node
-    /// other than TimeCondition and Not/All/Any/Hold/Rising/And/Or (naming the node's type).
+    /// Throws std::invalid_argument for a null condition or effect, or a condition tree that does not
+    /// look at time only (Condition::timeOnly), naming the first node that looks at more.
     WorldStory(ConditionPtr condition, std::vector<WorldEffectPtr> effects,
                std::optional<std::string> name = std::nullopt);
 
+    bool isWorldStory() const override { return true; }
     const std::vector<WorldEffectPtr>& worldEffects() const override { return worldEffects_; }
 
 private:

@@ -73,6 +73,31 @@ TEST(StoryAreas, CanvasPointsAreReportedInSumoFrame) {
     EXPECT_EQ(areas[0].points, (Points{{-100, 650}, {100, 650}, {100, 550}}));
 }
 
+TEST(StoryAreas, APolygonRemembersTheFrameItWasWrittenIn) {
+    PolygonCondition polygon(kTriangle);
+    EXPECT_EQ(polygon.area()->given, GivenFrame::Sumo);
+    polygon.setGivenFrame(GivenFrame::Canvas);
+    EXPECT_EQ(polygon.area()->given, GivenFrame::Canvas);
+    EXPECT_EQ(polygon.area()->points, kTriangle);
+    EXPECT_FALSE(polygon.area()->radius);
+}
+
+/// A condition the storyboard does not know: its area is found because it reports one.
+class RingCondition : public Condition {
+public:
+    ConditionResult test(const EvaluationContext&, VehicleIndex) override { return false; }
+    std::optional<ConditionArea> area() const override { return ConditionArea{{{5, 5}}, 2.0}; }
+};
+
+TEST(StoryAreas, AnyConditionThatReportsAnAreaIsDrawn) {
+    const auto ring = std::make_shared<RingCondition>();
+    const auto areas = conditionAreas(AndCondition(window(), std::make_shared<NotCondition>(ring)));
+    ASSERT_EQ(areas.size(), 1U);
+    EXPECT_EQ(areas[0].condition, ring.get());
+    EXPECT_EQ(areas[0].radius, 2.0);
+    EXPECT_EQ(outline(areas[0], 4).size(), 4U);
+}
+
 TEST(StoryAreas, TheCheckWarnsOnceAboutASharedPolygonOutsideTheNet) {
     const auto outside = std::make_shared<PolygonCondition>(Points{{2000, 2000}, {2100, 2000}, {2100, 2100}});
     const auto story = std::make_shared<Story>(std::make_shared<OrCondition>(outside, outside),

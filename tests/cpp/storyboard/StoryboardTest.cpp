@@ -70,9 +70,9 @@ using test::car;
 class SignalProbe : public kernel::Listener {
 public:
     void receiveSignal(kernel::Module&, kernel::SignalId, const kernel::Object& value) override {
-        signals.push_back(dynamic_cast<const StoryboardSignal&>(value));
+        signals.push_back(dynamic_cast<const traffic::StoryboardSignal&>(value));
     }
-    std::vector<StoryboardSignal> signals;
+    std::vector<traffic::StoryboardSignal> signals;
 };
 
 class StoryboardTest : public testing::Test {

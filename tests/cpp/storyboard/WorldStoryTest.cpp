@@ -21,6 +21,7 @@
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
+#include "sbsim/storyboard/conditions/LimitCondition.h"
 #include "sbsim/storyboard/conditions/NotCondition.h"
 #include "sbsim/storyboard/conditions/OrCondition.h"
 #include "sbsim/storyboard/conditions/RisingCondition.h"
@@ -386,6 +387,29 @@ TEST_F(WorldStoryTest, AcceptsTimeOnlyConditionsAndRefusesOthersNamingThem) {
     }
     EXPECT_THROW(world(std::make_shared<CarSetCondition>(std::set<std::string>{"a"}), {}, "bad"),
                  std::invalid_argument);
+}
+
+/// A condition the storyboard does not know that looks at the time only (every other minute).
+class OddMinutes : public Condition {
+public:
+    ConditionResult test(const EvaluationContext& ctx, VehicleIndex) override {
+        return static_cast<long>(ctx.now().seconds() / 60) % 2 == 1;
+    }
+    bool timeOnly() const override { return true; }
+};
+
+TEST_F(WorldStoryTest, AConditionThatSaysItIsTimeOnlyIsAccepted) {
+    EXPECT_NO_THROW(world(std::make_shared<NotCondition>(std::make_shared<OddMinutes>()), {}, "odd"));
+    // The first leaf that looks at more is named, however deep.
+    try {
+        world(std::make_shared<OrCondition>(std::make_shared<OddMinutes>(),
+                                            std::make_shared<NotCondition>(std::make_shared<HoldCondition>(
+                                                std::make_shared<LimitCondition>(1), SimTime::fromSeconds(1)))),
+              {}, "bad");
+        FAIL() << "no error";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("got LimitCondition"), std::string::npos) << e.what();
+    }
 }
 
 TEST_F(WorldStoryTest, HoldAndRisingKeepTheWorldsStateOnce) {

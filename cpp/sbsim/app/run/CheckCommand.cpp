@@ -19,6 +19,7 @@
 #include "sbsim/storyboard/StoryAreas.h"
 #include "sbsim/storyboard/StoryCheck.h"
 #include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/traffic/NetworkIds.h"
 #include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::app {
@@ -42,6 +43,7 @@ public:
                 const std::string_view tag = e->Name();
                 if (tag == "vehicle" || tag == "trip") ids_.insert(id);
                 if (tag == "flow") flows_.insert(id);
+                if (tag == "vType" || tag == "vTypeDistribution") types_.insert(id);
             }
         }
     }
@@ -51,8 +53,13 @@ public:
         return dot != std::string_view::npos && flows_.count(std::string(id.substr(0, dot))) != 0;
     }
 
+    /// Whether a route file defines this vehicle type (SUMO reads a route file's types only as it
+    /// reaches them).
+    bool definesType(std::string_view id) const { return types_.count(std::string(id)) != 0; }
+
 private:
     std::set<std::string> ids_;
+    std::set<std::string> types_;
     std::set<std::string> flows_;
 };
 
@@ -88,6 +95,13 @@ int CheckCommand::run(const CommandLine& cl) {
     checked.begin = sumo.beginTime();
     checked.end = sumo.endTime();
     checked.vehicleDefined = [&](std::string_view id) { return routes.defines(id); };
+    const traffic::NetworkIds network = traffic::NetworkIds::ofLoadedSumo();
+    checked.edgeExists = [&](std::string_view id) { return network.hasEdge(id); };
+    checked.laneExists = [&](std::string_view id) { return network.hasLane(id); };
+    checked.trafficLightExists = [&](std::string_view id) { return network.hasTrafficLight(id); };
+    checked.vehicleTypeExists = [&](std::string_view id) {
+        return network.hasVehicleType(id) || routes.definesType(id);
+    };
     const auto warnings = storyboard::checkStories(board.stories(), checked);
 
     if (json_) {
@@ -108,7 +122,7 @@ int CheckCommand::run(const CommandLine& cl) {
                 if (area.radius) entry["radius"] = *area.radius;
                 areas.push_back(std::move(entry));
             }
-            const bool world = s->isWorld();
+            const bool world = s->isWorldStory();
             out["stories"].push_back(
                 {{"name", s->name()}, {"world", world}, {"tree", std::move(nodes)}, {"areas", std::move(areas)}});
         }

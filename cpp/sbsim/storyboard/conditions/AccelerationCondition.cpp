@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/AccelerationCondition.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -18,5 +20,13 @@ AccelerationConditionGreater::AccelerationConditionGreater(double threshold)
 
 AccelerationConditionLess::AccelerationConditionLess(double threshold)
     : threshold_(checkedThreshold(threshold, "AccelerationConditionLess")) {}
+
+std::string AccelerationConditionGreater::describe() const {
+    return fmt::format("AccelerationConditionGreater({:g} m/s²)", threshold_);
+}
+
+std::string AccelerationConditionLess::describe() const {
+    return fmt::format("AccelerationConditionLess({:g} m/s²)", threshold_);
+}
 
 }  // namespace sbsim::storyboard

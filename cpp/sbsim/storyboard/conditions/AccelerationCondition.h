@@ -14,6 +14,7 @@ public:
         return ctx.snapshot().accelerations()[ego] > threshold_;
     }
     bool pure() const override { return true; }
+    std::string describe() const override;
     double threshold() const { return threshold_; }
 
 private:
@@ -30,6 +31,7 @@ public:
         return ctx.snapshot().accelerations()[ego] < threshold_;
     }
     bool pure() const override { return true; }
+    std::string describe() const override;
     double threshold() const { return threshold_; }
 
 private:

@@ -1,6 +1,9 @@
 #include "sbsim/storyboard/conditions/AllCondition.h"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 
@@ -19,8 +22,20 @@ ConditionResult AllCondition::test(const EvaluationContext& ctx, VehicleIndex eg
     return result;
 }
 
-void AllCondition::forEachChild(const std::function<void(Condition&)>& visit) {
+void AllCondition::forEachChild(const std::function<void(Condition&)>& visit) const {
     for (const ConditionPtr& c : operands_) visit(*c);
 }
+
+bool AllCondition::timeOnly() const {
+    return std::all_of(operands_.begin(), operands_.end(), [](const ConditionPtr& c) { return c->timeOnly(); });
+}
+
+std::optional<TimeWindow> AllCondition::timeWindow() const {
+    std::optional<TimeWindow> window;
+    for (const ConditionPtr& c : operands_) window = intersect(window, c->timeWindow());
+    return window;
+}
+
+void AllCondition::check(CheckContext& ctx) const { ctx.warnNeverHolds(typeName(), timeWindow()); }
 
 }  // namespace sbsim::storyboard

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "sbsim/storyboard/CheckContext.h"
+
 namespace sbsim::storyboard {
 
 AndCondition::AndCondition(ConditionPtr a, ConditionPtr b) : a_(std::move(a)), b_(std::move(b)) {
@@ -14,9 +16,11 @@ ConditionResult AndCondition::test(const EvaluationContext& ctx, VehicleIndex eg
     return ConditionResult::conjunction(left, b_->test(ctx, ego));
 }
 
-void AndCondition::forEachChild(const std::function<void(Condition&)>& visit) {
+void AndCondition::forEachChild(const std::function<void(Condition&)>& visit) const {
     visit(*a_);
     visit(*b_);
 }
+
+void AndCondition::check(CheckContext& ctx) const { ctx.warnNeverHolds(typeName(), timeWindow()); }
 
 }  // namespace sbsim::storyboard

@@ -14,7 +14,11 @@ public:
 
     traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
-    void forEachChild(const std::function<void(Condition&)>& visit) override;
+    void forEachChild(const std::function<void(Condition&)>& visit) const override;
+    bool timeOnly() const override { return a_->timeOnly() && b_->timeOnly(); }
+    std::optional<TimeWindow> timeWindow() const override { return intersect(a_->timeWindow(), b_->timeWindow()); }
+    /// Warns when its operands' time windows do not overlap.
+    void check(CheckContext& ctx) const override;
 
     const ConditionPtr& left() const { return a_; }
     const ConditionPtr& right() const { return b_; }

@@ -1,5 +1,6 @@
 #include "sbsim/storyboard/conditions/AnyCondition.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sbsim::storyboard {
@@ -19,8 +20,12 @@ ConditionResult AnyCondition::test(const EvaluationContext& ctx, VehicleIndex eg
     return result;
 }
 
-void AnyCondition::forEachChild(const std::function<void(Condition&)>& visit) {
+void AnyCondition::forEachChild(const std::function<void(Condition&)>& visit) const {
     for (const ConditionPtr& c : operands_) visit(*c);
+}
+
+bool AnyCondition::timeOnly() const {
+    return std::all_of(operands_.begin(), operands_.end(), [](const ConditionPtr& c) { return c->timeOnly(); });
 }
 
 }  // namespace sbsim::storyboard

@@ -16,7 +16,8 @@ public:
 
     traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
-    void forEachChild(const std::function<void(Condition&)>& visit) override;
+    void forEachChild(const std::function<void(Condition&)>& visit) const override;
+    bool timeOnly() const override;
     bool pure() const override { return pure_; }
 
     const std::vector<ConditionPtr>& operands() const { return operands_; }

@@ -14,6 +14,9 @@ public:
     explicit CarSetCondition(std::set<std::string> ids);
     traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    std::string describe() const override;
+    /// Warns about ids no route file (and no story) defines.
+    void check(CheckContext& ctx) const override;
     const std::set<std::string>& ids() const { return ids_; }
 
     bool pure() const override { return true; }

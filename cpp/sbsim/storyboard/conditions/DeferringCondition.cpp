@@ -1,7 +1,11 @@
 #include "sbsim/storyboard/conditions/DeferringCondition.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
+
+#include "sbsim/storyboard/DescribeText.h"
 
 namespace sbsim::storyboard {
 
@@ -34,6 +38,10 @@ ConditionResult DeferringCondition::test(const EvaluationContext& ctx, VehicleIn
 
 void DeferringCondition::forget(std::string_view vehicleId) {
     if (const auto it = due_.find(vehicleId); it != due_.end()) due_.erase(it);
+}
+
+std::string DeferringCondition::describe() const {
+    return fmt::format("DeferringCondition({} to {})", describeTime(min_), describeTime(max_));
 }
 
 }  // namespace sbsim::storyboard

@@ -24,6 +24,7 @@ public:
     void forget(std::string_view vehicleId) override;
     std::size_t heldVehicles() const override { return due_.size(); }
 
+    std::string describe() const override;
     kernel::SimTime minDeferral() const { return min_; }
     kernel::SimTime maxDeferral() const { return max_; }
 

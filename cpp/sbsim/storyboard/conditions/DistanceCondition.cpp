@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/DistanceCondition.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -42,6 +44,17 @@ ConditionResult DistanceCondition::test(const EvaluationContext& ctx, VehicleInd
     if ((positions.col(ego) - positions.col(*target)).squaredNorm() > distanceSquared_)
         return ConditionResult::ofOthers({});
     return ConditionResult::ofOthers({*target});
+}
+
+std::string DistanceCondition::describe() const {
+    const std::string target =
+        vehicle_ ? fmt::format("vehicle {}", *vehicle_) : fmt::format("({:g}, {:g})", point_->x(), point_->y());
+    return fmt::format("DistanceCondition({}, {:g} m)", target, distance_);
+}
+
+std::optional<ConditionArea> DistanceCondition::area() const {
+    if (!point_) return std::nullopt;
+    return ConditionArea{{*point_}, distance_};
 }
 
 }  // namespace sbsim::storyboard

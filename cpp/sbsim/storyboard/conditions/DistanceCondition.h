@@ -26,6 +26,9 @@ public:
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }
 
+    std::string describe() const override;
+    /// A circle around a fixed point; none around a vehicle.
+    std::optional<ConditionArea> area() const override;
     double distance() const { return distance_; }
     const std::optional<Eigen::Vector2d>& point() const { return point_; }
     const std::optional<std::string>& vehicle() const { return vehicle_; }

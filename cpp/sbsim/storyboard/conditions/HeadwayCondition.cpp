@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/HeadwayCondition.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -22,5 +24,7 @@ ConditionResult HeadwayCondition::test(const EvaluationContext& ctx, VehicleInde
     if (!index) return ConditionResult::ofOthers({});  // not in this step's snapshot (just inserted)
     return ConditionResult::ofOthers({*index});
 }
+
+std::string HeadwayCondition::describe() const { return fmt::format("HeadwayCondition({:g} s)", seconds_); }
 
 }  // namespace sbsim::storyboard

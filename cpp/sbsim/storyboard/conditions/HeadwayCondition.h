@@ -18,6 +18,7 @@ public:
     explicit HeadwayCondition(double seconds);
     traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Speed}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    std::string describe() const override;
     double seconds() const { return seconds_; }
 
 private:

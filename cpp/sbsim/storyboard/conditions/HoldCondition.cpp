@@ -1,6 +1,10 @@
 #include "sbsim/storyboard/conditions/HoldCondition.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+
+#include "sbsim/storyboard/DescribeText.h"
 
 namespace sbsim::storyboard {
 
@@ -18,5 +22,7 @@ ConditionResult HoldCondition::test(const EvaluationContext& ctx, VehicleIndex e
     if (!since || ctx.now() - *since < duration_) return false;
     return result;
 }
+
+std::string HoldCondition::describe() const { return fmt::format("HoldCondition({})", describeTime(duration_)); }
 
 }  // namespace sbsim::storyboard

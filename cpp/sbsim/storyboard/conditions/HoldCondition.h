@@ -21,8 +21,10 @@ public:
     void prepare(const EvaluationContext& ctx) override { runs_.step(ctx.now()); }
     void forget(std::string_view vehicleId) override { runs_.forget(vehicleId); }
     std::size_t heldVehicles() const override { return runs_.size(); }
-    void forEachChild(const std::function<void(Condition&)>& visit) override { visit(*operand_); }
+    void forEachChild(const std::function<void(Condition&)>& visit) const override { visit(*operand_); }
+    bool timeOnly() const override { return operand_->timeOnly(); }
 
+    std::string describe() const override;
     const ConditionPtr& operand() const { return operand_; }
     kernel::SimTime duration() const { return duration_; }
     /// Vehicles currently in a run of true steps (state kept).

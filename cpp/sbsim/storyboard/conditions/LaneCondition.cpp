@@ -1,5 +1,10 @@
 #include "sbsim/storyboard/conditions/LaneCondition.h"
 
+#include <fmt/format.h>
+
+#include "sbsim/storyboard/CheckContext.h"
+#include "sbsim/storyboard/DescribeText.h"
+
 namespace sbsim::storyboard {
 
 ConditionResult LaneCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
@@ -9,6 +14,12 @@ ConditionResult LaneCondition::test(const EvaluationContext& ctx, VehicleIndex e
 
 void LaneCondition::prepare(const EvaluationContext& ctx) {
     verdicts_.update(ctx.snapshot(), [this](const std::string& lane) { return ids_.contains(lane); });
+}
+
+std::string LaneCondition::describe() const { return fmt::format("LaneCondition({})", describeIds(ids_)); }
+
+void LaneCondition::check(CheckContext& ctx) const {
+    ctx.warnUnknown(typeName(), NetworkObject::Lane, {ids_.begin(), ids_.end()});
 }
 
 }  // namespace sbsim::storyboard

@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/LikelihoodCondition.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -24,5 +26,7 @@ ConditionResult LikelihoodCondition::test(const EvaluationContext& ctx, VehicleI
 void LikelihoodCondition::forget(std::string_view vehicleId) {
     if (const auto it = decisions_.find(vehicleId); it != decisions_.end()) decisions_.erase(it);
 }
+
+std::string LikelihoodCondition::describe() const { return fmt::format("LikelihoodCondition({:g})", p_); }
 
 }  // namespace sbsim::storyboard

@@ -21,6 +21,7 @@ public:
     void forget(std::string_view vehicleId) override;
     std::size_t heldVehicles() const override { return decisions_.size(); }
 
+    std::string describe() const override;
     double probability() const { return p_; }
 
 private:

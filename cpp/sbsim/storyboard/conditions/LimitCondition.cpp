@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sbsim/storyboard/CheckContext.h"
+
 namespace sbsim::storyboard {
 
 LimitCondition::LimitCondition(std::int64_t limit) : limit_(static_cast<std::uint64_t>(limit)) {
@@ -22,6 +24,12 @@ ConditionResult LimitCondition::test(const EvaluationContext& ctx, VehicleIndex 
 
 void LimitCondition::forget(std::string_view vehicleId) {
     if (const auto it = admitted_.find(vehicleId); it != admitted_.end()) admitted_.erase(it);
+}
+
+std::string LimitCondition::describe() const { return fmt::format("LimitCondition({})", limit_); }
+
+void LimitCondition::check(CheckContext& ctx) const {
+    if (limit_ == 0) ctx.warn("LimitCondition(0) admits no vehicle: the story never activates");
 }
 
 }  // namespace sbsim::storyboard

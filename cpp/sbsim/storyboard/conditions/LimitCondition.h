@@ -20,6 +20,9 @@ public:
     void forget(std::string_view vehicleId) override;
     std::size_t heldVehicles() const override { return admitted_.size(); }
 
+    std::string describe() const override;
+    /// Warns about a limit of 0: the story never activates.
+    void check(CheckContext& ctx) const override;
     std::uint64_t limit() const { return limit_; }
     /// How many vehicles were ever admitted (never decreases).
     std::uint64_t admittedCount() const { return admittedCount_; }

@@ -13,7 +13,8 @@ public:
 
     traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
-    void forEachChild(const std::function<void(Condition&)>& visit) override { visit(*operand_); }
+    void forEachChild(const std::function<void(Condition&)>& visit) const override { visit(*operand_); }
+    bool timeOnly() const override { return operand_->timeOnly(); }
     bool pure() const override { return operand_->pure(); }
 
     const ConditionPtr& operand() const { return operand_; }

@@ -14,7 +14,7 @@ ConditionResult OrCondition::test(const EvaluationContext& ctx, VehicleIndex ego
     return ConditionResult::disjunction(left, b_->test(ctx, ego));
 }
 
-void OrCondition::forEachChild(const std::function<void(Condition&)>& visit) {
+void OrCondition::forEachChild(const std::function<void(Condition&)>& visit) const {
     visit(*a_);
     visit(*b_);
 }

@@ -13,7 +13,8 @@ public:
 
     traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
-    void forEachChild(const std::function<void(Condition&)>& visit) override;
+    void forEachChild(const std::function<void(Condition&)>& visit) const override;
+    bool timeOnly() const override { return a_->timeOnly() && b_->timeOnly(); }
 
     const ConditionPtr& left() const { return a_; }
     const ConditionPtr& right() const { return b_; }

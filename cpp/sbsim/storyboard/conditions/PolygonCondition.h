@@ -17,12 +17,16 @@ public:
     traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Position}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     const geometry::Polygon& polygon() const { return polygon_; }
+    std::string describe() const override;
+    std::optional<ConditionArea> area() const override;
+    /// Warns when the polygon misses the network, naming the frame it would fit in.
+    void check(CheckContext& ctx) const override;
 
     bool pure() const override { return true; }
 
     /// The frame the script wrote the points in (they are stored in SUMO's), so that `sbsim check`
     /// can say which frame would have fitted a polygon that misses the network.
-    enum class GivenFrame { Sumo, Canvas };
+    using GivenFrame = storyboard::GivenFrame;
     GivenFrame givenFrame() const { return givenFrame_; }
     void setGivenFrame(GivenFrame frame) { givenFrame_ = frame; }
 

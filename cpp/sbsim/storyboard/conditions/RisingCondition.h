@@ -21,7 +21,8 @@ public:
     void prepare(const EvaluationContext& ctx) override { runs_.step(ctx.now()); }
     void forget(std::string_view vehicleId) override { runs_.forget(vehicleId); }
     std::size_t heldVehicles() const override { return runs_.size(); }
-    void forEachChild(const std::function<void(Condition&)>& visit) override { visit(*operand_); }
+    void forEachChild(const std::function<void(Condition&)>& visit) const override { visit(*operand_); }
+    bool timeOnly() const override { return operand_->timeOnly(); }
 
     const ConditionPtr& operand() const { return operand_; }
     std::size_t tracked() const { return runs_.size(); }

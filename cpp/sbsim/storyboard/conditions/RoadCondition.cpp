@@ -1,5 +1,10 @@
 #include "sbsim/storyboard/conditions/RoadCondition.h"
 
+#include <fmt/format.h>
+
+#include "sbsim/storyboard/CheckContext.h"
+#include "sbsim/storyboard/DescribeText.h"
+
 namespace sbsim::storyboard {
 
 ConditionResult RoadCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
@@ -9,6 +14,12 @@ ConditionResult RoadCondition::test(const EvaluationContext& ctx, VehicleIndex e
 
 void RoadCondition::prepare(const EvaluationContext& ctx) {
     verdicts_.update(ctx.snapshot(), [this](const std::string& road) { return ids_.contains(road); });
+}
+
+std::string RoadCondition::describe() const { return fmt::format("RoadCondition({})", describeIds(ids_)); }
+
+void RoadCondition::check(CheckContext& ctx) const {
+    ctx.warnUnknown(typeName(), NetworkObject::Edge, {ids_.begin(), ids_.end()});
 }
 
 }  // namespace sbsim::storyboard

@@ -17,6 +17,9 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }
+    std::string describe() const override;
+    /// Warns about ids the network has no edge of.
+    void check(CheckContext& ctx) const override;
     const std::set<std::string>& ids() const { return ids_; }
 
 private:

@@ -1,5 +1,7 @@
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -24,5 +26,11 @@ SpeedConditionLess::SpeedConditionLess(double mps) : threshold_(checkedThreshold
 ConditionResult SpeedConditionLess::test(const EvaluationContext& ctx, VehicleIndex ego) {
     return ctx.snapshot().speeds()[ego] < threshold_;
 }
+
+std::string SpeedConditionGreater::describe() const {
+    return fmt::format("SpeedConditionGreater({:g} m/s)", threshold_);
+}
+
+std::string SpeedConditionLess::describe() const { return fmt::format("SpeedConditionLess({:g} m/s)", threshold_); }
 
 }  // namespace sbsim::storyboard

@@ -10,6 +10,7 @@ public:
     explicit SpeedConditionGreater(double mps);
     traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Speed}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    std::string describe() const override;
     double threshold() const { return threshold_; }
 
     bool pure() const override { return true; }
@@ -24,6 +25,7 @@ public:
     explicit SpeedConditionLess(double mps);
     traffic::SnapshotColumns columns() const override { return {traffic::SnapshotColumns::Speed}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
+    std::string describe() const override;
     double threshold() const { return threshold_; }
 
     bool pure() const override { return true; }

@@ -80,4 +80,10 @@ ConditionResult SpeedDifferenceCondition::testAll(const traffic::VehicleSnapshot
     return ConditionResult::ofOthers(std::move(others));
 }
 
+std::string SpeedDifferenceCondition::describe() const {
+    return fmt::format("SpeedDifferenceCondition{}({:g} m/s{})",
+                       direction_ == Direction::EgoFaster ? "Faster" : "Slower", delta_,
+                       distance_ ? fmt::format(", within {:g} m", *distance_) : "");
+}
+
 }  // namespace sbsim::storyboard

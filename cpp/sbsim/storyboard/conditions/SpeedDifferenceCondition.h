@@ -20,6 +20,7 @@ public:
     void prepare(const EvaluationContext& ctx) override;
     std::optional<double> neighbourRadius() const override { return distance_; }
 
+    std::string describe() const override;
     double delta() const { return delta_; }
     std::optional<double> distance() const { return distance_; }
 

@@ -1,6 +1,10 @@
 #include "sbsim/storyboard/conditions/StandstillCondition.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+
+#include "sbsim/storyboard/DescribeText.h"
 
 namespace sbsim::storyboard {
 
@@ -37,6 +41,10 @@ ConditionResult StandstillCondition::test(const EvaluationContext& ctx, VehicleI
         return duration_ == SimTime::zero() && ctx.snapshot().speeds()[ego] < standingSpeed;
     const SimTime since = since_[static_cast<std::size_t>(ego)];
     return since != SimTime::max() && ctx.now() - since >= duration_;
+}
+
+std::string StandstillCondition::describe() const {
+    return fmt::format("StandstillCondition({})", describeTime(duration_));
 }
 
 }  // namespace sbsim::storyboard

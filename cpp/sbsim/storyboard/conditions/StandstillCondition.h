@@ -26,6 +26,7 @@ public:
     bool pure() const override { return true; }
     std::size_t heldVehicles() const override { return ids_.size(); }
 
+    std::string describe() const override;
     kernel::SimTime duration() const { return duration_; }
 
 private:

@@ -1,6 +1,11 @@
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
+#include "sbsim/storyboard/DescribeText.h"
 
 namespace sbsim::storyboard {
 
@@ -14,6 +19,17 @@ TimeCondition::TimeCondition(kernel::SimTime begin, std::optional<kernel::SimTim
 ConditionResult TimeCondition::test(const EvaluationContext& ctx, VehicleIndex /*ego*/) {
     const kernel::SimTime now = ctx.now();
     return begin_ <= now && now <= end_;
+}
+
+std::string TimeCondition::describe() const {
+    return fmt::format("TimeCondition({}, {})", describeTime(begin_), describeTime(end_));
+}
+
+void TimeCondition::check(CheckContext& ctx) const {
+    if (begin_ >= ctx.runEnd() || end_ <= ctx.runBegin()) {
+        ctx.warn(fmt::format("{} lies outside the run ({} to {})", describe(), describeTime(ctx.runBegin()),
+                             describeTime(ctx.runEnd())));
+    }
 }
 
 }  // namespace sbsim::storyboard

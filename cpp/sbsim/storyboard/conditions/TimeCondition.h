@@ -16,6 +16,11 @@ public:
     traffic::SnapshotColumns columns() const override { return {}; }
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
 
+    std::string describe() const override;
+    bool timeOnly() const override { return true; }
+    std::optional<TimeWindow> timeWindow() const override { return TimeWindow{begin_, end_}; }
+    /// Warns about a window outside the run.
+    void check(CheckContext& ctx) const override;
     kernel::SimTime begin() const { return begin_; }
     kernel::SimTime end() const { return end_; }
 

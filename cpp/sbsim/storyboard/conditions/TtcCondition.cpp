@@ -246,4 +246,8 @@ bool TtcCondition::sampledCurvedConflict(const MovingFootprint& ma, const Moving
     return false;
 }
 
+std::string TtcCondition::describe() const {
+    return fmt::format("TtcCondition({:g} s, within {:g} m)", ttc_, distance_);
+}
+
 }  // namespace sbsim::storyboard

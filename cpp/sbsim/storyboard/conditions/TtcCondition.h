@@ -39,6 +39,7 @@ public:
     std::size_t heldVehicles() const override;
     std::optional<double> neighbourRadius() const override { return distance_; }
 
+    std::string describe() const override;
     double ttc() const { return ttc_; }
     double distance() const { return distance_; }
 

@@ -1,5 +1,6 @@
 #include "sbsim/storyboard/conditions/TypeCondition.h"
 
+#include <fmt/format.h>
 #include <re2/re2.h>
 
 #include <stdexcept>
@@ -21,5 +22,7 @@ ConditionResult TypeCondition::test(const EvaluationContext& ctx, VehicleIndex e
 void TypeCondition::prepare(const EvaluationContext& ctx) {
     verdicts_.update(ctx.snapshot(), [this](const std::string& type) { return re2::RE2::FullMatch(type, *regex_); });
 }
+
+std::string TypeCondition::describe() const { return fmt::format("TypeCondition('{}')", pattern_); }
 
 }  // namespace sbsim::storyboard

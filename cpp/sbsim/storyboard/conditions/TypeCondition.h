@@ -24,6 +24,7 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override;
     bool pure() const override { return true; }
+    std::string describe() const override;
     const std::string& pattern() const { return pattern_; }
 
 private:

@@ -1,6 +1,11 @@
 #include "sbsim/storyboard/effects/CloseRoadEffect.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 
@@ -10,5 +15,9 @@ CloseRoadEffect::CloseRoadEffect(std::vector<std::string> edges) : edges_(std::m
         if (e.empty()) throw std::invalid_argument("CloseRoadEffect: an edge id is empty");
     }
 }
+
+std::string CloseRoadEffect::describe() const { return fmt::format("CloseRoadEffect({})", fmt::join(edges_, ", ")); }
+
+void CloseRoadEffect::check(CheckContext& ctx) const { ctx.warnUnknown(typeName(), NetworkObject::Edge, edges_); }
 
 }  // namespace sbsim::storyboard

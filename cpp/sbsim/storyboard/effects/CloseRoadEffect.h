@@ -14,6 +14,9 @@ class CloseRoadEffect : public WorldEffect {
 public:
     /// Throws std::invalid_argument for no edges or an empty edge id.
     explicit CloseRoadEffect(std::vector<std::string> edges);
+    std::string describe() const override;
+    /// Warns about edges the network does not have.
+    void check(CheckContext& ctx) const override;
     const std::vector<std::string>& edges() const { return edges_; }
     void apply(WorldScope& scope) override { scope.stack().pushClosure(scope.token(), edges_); }
     void remove(WorldScope& scope) override { scope.stack().remove(scope.token()); }

@@ -11,6 +11,7 @@ class LaneEffect : public Effect {
 public:
     /// Throws std::invalid_argument for a negative index.
     explicit LaneEffect(int laneIndex);
+    std::string describe() const override;
     int laneIndex() const { return laneIndex_; }
     void apply(EffectScope& scope) override { scope.stack().pushLane(scope.token(), laneIndex_); }
     void remove(EffectScope& scope) override { scope.stack().remove(scope.token()); }

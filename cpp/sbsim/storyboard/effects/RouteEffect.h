@@ -17,6 +17,9 @@ public:
     /// Throws std::invalid_argument unless exactly one of a target edge and a non-empty via list is
     /// given, or for an empty edge id.
     RouteEffect(std::optional<std::string> targetEdge, std::vector<std::string> via);
+    std::string describe() const override;
+    /// Warns about edges the network does not have.
+    void check(CheckContext& ctx) const override;
     const traffic::EffectStack::Route& route() const { return route_; }
     void apply(EffectScope& scope) override { scope.stack().pushRoute(scope.token(), route_); }
     void remove(EffectScope& scope) override { scope.stack().remove(scope.token()); }

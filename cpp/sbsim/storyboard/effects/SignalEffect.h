@@ -15,6 +15,9 @@ public:
     explicit SignalEffect(std::string cause, std::optional<std::string> onExit = std::nullopt)
         : cause_(std::move(cause)), onExit_(std::move(onExit)) {}
     const std::string& cause() const { return cause_; }
+    std::string describe() const override {
+        return "SignalEffect('" + cause_ + "'" + (onExit_ ? ", on exit '" + *onExit_ + "'" : "") + ")";
+    }
     const std::optional<std::string>& onExit() const { return onExit_; }
     void apply(EffectScope& scope) override { scope.emitSignal(cause_); }
     void remove(EffectScope& scope) override {

@@ -1,8 +1,11 @@
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
 
 namespace sbsim::storyboard {
 
@@ -39,6 +42,18 @@ void SpawnEffect::apply(WorldScope& scope) {
     if (spec_.speed) spawn.departSpeed = *spec_.speed;
     network.addRoute(spawn.routeId, edges);
     network.addVehicle(spawn);
+}
+
+std::string SpawnEffect::describe() const {
+    const std::string way = spec_.route.empty() ? fmt::format("{} to {}", spec_.from, spec_.to)
+                                                : fmt::format("route {}", fmt::join(spec_.route, " "));
+    return fmt::format("SpawnEffect('{}', {}{})", spec_.id, way, spec_.type ? ", type " + *spec_.type : "");
+}
+
+void SpawnEffect::check(CheckContext& ctx) const {
+    ctx.warnUnknown(typeName(), NetworkObject::Edge,
+                    spec_.route.empty() ? std::vector{spec_.from, spec_.to} : spec_.route);
+    if (spec_.type) ctx.warnUnknown(typeName(), NetworkObject::VehicleType, {*spec_.type});
 }
 
 }  // namespace sbsim::storyboard

@@ -22,6 +22,10 @@ public:
     };
     /// Throws std::invalid_argument for an empty id, or neither a route nor both from and to (or both).
     explicit SpawnEffect(Spec spec);
+    std::string describe() const override;
+    std::vector<std::string> definedVehicles() const override { return {spec_.id}; }
+    /// Warns about edges and a type SUMO does not know.
+    void check(CheckContext& ctx) const override;
     const Spec& spec() const { return spec_; }
     /// Throws std::invalid_argument if the vehicle exists, an edge is unknown or no route is found.
     void apply(WorldScope& scope) override;

@@ -14,4 +14,6 @@ SpeedEffect::SpeedEffect(double mps) : mps_(mps) {
     }
 }
 
+std::string SpeedEffect::describe() const { return fmt::format("SpeedEffect({:g} m/s)", mps_); }
+
 }  // namespace sbsim::storyboard

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "sbsim/storyboard/CheckContext.h"
+
 namespace sbsim::storyboard {
 
 TrafficLightEffect::TrafficLightEffect(std::string tls, std::string state)
@@ -16,6 +18,12 @@ TrafficLightEffect::TrafficLightEffect(std::string tls, std::string state)
         throw std::invalid_argument(fmt::format("TrafficLightEffect state '{}': '{}' is not a signal letter ({})",
                                                 state_, state_[bad], kLetters));
     }
+}
+
+std::string TrafficLightEffect::describe() const { return fmt::format("TrafficLightEffect('{}', '{}')", tls_, state_); }
+
+void TrafficLightEffect::check(CheckContext& ctx) const {
+    ctx.warnUnknown(typeName(), NetworkObject::TrafficLight, {tls_});
 }
 
 }  // namespace sbsim::storyboard

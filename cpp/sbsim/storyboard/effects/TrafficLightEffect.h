@@ -14,6 +14,9 @@ public:
     /// Throws std::invalid_argument for an empty id, or a state that is empty or has a letter
     /// SUMO does not know (GgrsuyYoO).
     TrafficLightEffect(std::string tls, std::string state);
+    std::string describe() const override;
+    /// Warns about a traffic light the network does not have.
+    void check(CheckContext& ctx) const override;
     const std::string& tls() const { return tls_; }
     const std::string& state() const { return state_; }
     /// An unknown light or a state of the wrong length fails here (the network is known only now).

@@ -12,6 +12,10 @@ class TypeEffect : public Effect {
 public:
     /// Throws std::invalid_argument for an empty id.
     explicit TypeEffect(std::string typeId);
+    std::string describe() const override;
+    std::optional<std::string> domain() const override { return "type"; }
+    /// Warns about a type SUMO does not know.
+    void check(CheckContext& ctx) const override;
     const std::string& typeId() const { return typeId_; }
     void apply(EffectScope& scope) override { scope.stack().pushType(scope.token(), typeId_); }
     void remove(EffectScope& scope) override { scope.stack().remove(scope.token()); }
