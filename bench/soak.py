@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import argparse
 import hashlib
-import json
 import subprocess
 import sys
 import tempfile
@@ -31,6 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from benchlib import ROOT, sbsim, scenario
+from sbsim.summary import read_summary
 
 STORIES = ROOT / "bench" / "stories"
 GROWTH_TARGET = 0.02
@@ -70,7 +70,7 @@ def run_soak(out: Path, *, seed: int, threads: int, warmup: float, end: float, e
     proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
     if proc.returncode != 0:
         sys.exit(f"sbsim failed ({proc.returncode}): {' '.join(cmd)}\n{proc.stderr[-2000:]}")
-    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    summary = read_summary(out / "summary.json")
     summary["wall"] = time.perf_counter() - started
     summary["rss"] = [tuple(int(float(v)) for v in line.split()) for line in rss_log.read_text().splitlines()]
     summary["events_sha256"] = hashlib.sha256((out / "events.jsonl").read_bytes()).hexdigest()
