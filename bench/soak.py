@@ -1,6 +1,6 @@
 """Soak: one simulated hour with heavy churn, memory every 5 minutes, logs identical across runs.
 
-The `soak` grid (tools/make_grid.py preset: random trips, ~4 vehicles entering and leaving every
+The `soak` grid (`sbsim.scenarios.grid` preset: random trips, ~4 vehicles entering and leaving every
 second) fills for a 20-minute warm-up (`--warmup`), then one simulated hour is measured with about
 2,200 vehicles running. It runs with
 bench/stories/soak_stories.py (overlapping caps, short stops, Likelihood and Deferring, sirens
