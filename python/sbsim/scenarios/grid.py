@@ -204,7 +204,7 @@ class GridConfig:
         for f in dataclasses.fields(cls):
             kind, help_text = hints[f.name], f"{f.metadata['help']} (default: {f.default})"
             if kind is bool:
-                help_text = f"{f.name} = {not f.default}; {f.name}: {help_text}"
+                help_text = f"set {f.name} to {not f.default}; {f.name}: {help_text}"
                 parser.add_argument(
                     f.metadata["flag"], dest=f.name, action="store_const", const=not f.default, help=help_text
                 )
