@@ -9,8 +9,7 @@ from __future__ import annotations
 
 import os
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -22,9 +21,9 @@ class FcdError(ValueError):
     """A file that is not usable FCD output: ``path[:line]: what is wrong``."""
 
 
-@dataclass(frozen=True)
-class VehicleState:
-    """One vehicle in one time step (``lane`` and ``type`` None where the FCD leaves them out)."""
+class VehicleState(NamedTuple):
+    """One vehicle in one time step (``lane`` and ``type`` None where the FCD leaves them out; a tuple,
+    not a dataclass, because an FCD holds millions of them)."""
 
     vehicle: str
     x: float
@@ -34,8 +33,7 @@ class VehicleState:
     type: str | None
 
 
-@dataclass(frozen=True)
-class Timestep:
+class Timestep(NamedTuple):
     """The vehicles SUMO reported after one step, at sbsim time ``t`` (rounded to 1 ms, as sbsim's log)."""
 
     t: float
@@ -81,25 +79,20 @@ def read_fcd(path: str | os.PathLike[str], step: float | None = None, fallback_s
 
 
 def _state(path: str | os.PathLike[str], vehicle: ET.Element) -> VehicleState:
-    name = vehicle.get("id")
-    if name is None:
-        raise FcdError(f"{os.fspath(path)}: a <vehicle> has no id")
-    return VehicleState(
-        name,
-        _number(path, vehicle, "x"),
-        _number(path, vehicle, "y"),
-        _number(path, vehicle, "speed"),
-        vehicle.get("lane"),
-        vehicle.get("type"),
-    )
+    a = vehicle.attrib
+    try:
+        return VehicleState(a["id"], float(a["x"]), float(a["y"]), float(a["speed"]), a.get("lane"), a.get("type"))
+    except (KeyError, ValueError):
+        for key in ("x", "y", "speed"):
+            _number(path, vehicle, key)  # raises, naming the attribute
+        raise FcdError(f"{os.fspath(path)}: a <vehicle> has no id") from None
 
 
 def _number(path: str | os.PathLike[str], element: ET.Element, key: str) -> float:
     text = element.get(key)
-    what = f"<{element.tag}{' ' + element.get('id', '') if element.tag == 'vehicle' else ''}>"
-    if text is None:
-        raise FcdError(f"{os.fspath(path)}: {what} has no '{key}'")
     try:
-        return float(text)
-    except ValueError as e:
-        raise FcdError(f"{os.fspath(path)}: {what} '{key}' is not numeric ({text!r})") from e
+        return float(text)  # type: ignore[arg-type]  # None: a TypeError, reported below
+    except (TypeError, ValueError) as e:
+        what = f"<{element.tag}{' ' + element.get('id', '') if element.tag == 'vehicle' else ''}>"
+        problem = f"has no '{key}'" if text is None else f"'{key}' is not numeric ({text!r})"
+        raise FcdError(f"{os.fspath(path)}: {what} {problem}") from e
