@@ -12,11 +12,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from sbsim.scenarios.grid import make_preset
+from sbsim.sumo import sumo_binary
+
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "bench" / "out"
-sys.path.insert(0, str(ROOT / "tools"))
-
-from make_grid import make_preset, sumo_binary  # noqa: E402
 
 
 def scenario(preset: str) -> Path:

@@ -1,6 +1,6 @@
 """Soak: one simulated hour with heavy churn, memory every 5 minutes, logs identical across runs.
 
-The `soak` grid (tools/make_grid.py preset: random trips, ~4 vehicles entering and leaving every
+The `soak` grid (`sbsim.scenarios.grid` preset: random trips, ~4 vehicles entering and leaving every
 second) fills for a 20-minute warm-up (`--warmup`), then one simulated hour is measured with about
 2,200 vehicles running. It runs with
 bench/stories/soak_stories.py (overlapping caps, short stops, Likelihood and Deferring, sirens
@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import argparse
 import hashlib
-import json
 import subprocess
 import sys
 import tempfile
@@ -31,6 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from benchlib import ROOT, sbsim, scenario
+from sbsim.summary import read_summary
 
 STORIES = ROOT / "bench" / "stories"
 GROWTH_TARGET = 0.02
@@ -70,7 +70,7 @@ def run_soak(out: Path, *, seed: int, threads: int, warmup: float, end: float, e
     proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
     if proc.returncode != 0:
         sys.exit(f"sbsim failed ({proc.returncode}): {' '.join(cmd)}\n{proc.stderr[-2000:]}")
-    summary = json.loads((out / "summary.json").read_text(encoding="utf-8"))
+    summary = read_summary(out / "summary.json")
     summary["wall"] = time.perf_counter() - started
     summary["rss"] = [tuple(int(float(v)) for v in line.split()) for line in rss_log.read_text().splitlines()]
     summary["events_sha256"] = hashlib.sha256((out / "events.jsonl").read_bytes()).hexdigest()

@@ -8,14 +8,11 @@ from __future__ import annotations
 
 import argparse
 import shutil
-import sys
 import tempfile
 import time
 from pathlib import Path
 
-# This folder's storyboard.py (the storyboard benchmark) would shadow the story package.
-sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != Path(__file__).resolve().parent]
-from storyboard import study  # noqa: E402
+from sbsim import study
 
 ROOT = Path(__file__).resolve().parents[1]
 

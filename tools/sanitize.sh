@@ -25,7 +25,7 @@ export ASAN_OPTIONS="detect_leaks=1:exitcode=23:abort_on_error=0:strict_init_ord
 export LSAN_OPTIONS="suppressions=$SBSIM_ROOT/tools/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:exitcode=23"
 export SBSIM_EXECUTABLE="$SBSIM_ROOT/build/asan/sbsim"
-export PYTHONPATH="$SBSIM_ROOT/python${PYTHONPATH:+:$PYTHONPATH}"  # the story package of this tree
+export PYTHONPATH="$SBSIM_ROOT/python${PYTHONPATH:+:$PYTHONPATH}"  # this tree's storyboard and sbsim packages
 status=0
 if [ "$scope" = "all" ]; then
   # The layer probes only compile; every other C++ test runs instrumented.

@@ -10,8 +10,8 @@ VENV="$SBSIM_ROOT/.venv"
 # formatting, regular expressions, allocator, gzip); tests: clang-format and a virtual X server for sumo-gui.
 DEBIAN_PACKAGES=(cmake g++ python3-dev libeigen3-dev libgtest-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev
   libfmt-dev libre2-dev libjemalloc-dev zlib1g-dev clang-format xvfb xauth)
-# Studies (python -m storyboard.study): Dask runs the sweep, pandas and pyarrow write the tables; reports
-# (python -m storyboard.report): sumolib reads the net and the FCD, at SUMO's own version.
+# Studies (python -m sbsim.study): Dask runs the sweep, pandas and pyarrow write the tables; reports
+# (python -m sbsim.report): sumolib reads the net and the FCD, at SUMO's own version.
 STUDY_DEPENDENCIES=("dask>=2024" "distributed>=2024" "pandas>=2" "pyarrow>=14" "tqdm>=4" "matplotlib>=3.7" "sumolib==1.28.*")
 PYTHON_DEPENDENCIES=(pip "scikit-build-core>=0.10" "pybind11>=2.12" "numpy>=1.24" "eclipse-sumo==1.28.*")
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"

@@ -2,8 +2,9 @@
 
 Inside a story run by ``sbsim --story``, ``import storyboard`` gives Artery's story API
 (conditions, effects, ``Story``, ``Coord``, ``SimTime``), implemented in C++, plus Pythonic helpers
-(:func:`all_of`, :func:`any_of`, :func:`seconds`, ...). Everywhere, :mod:`storyboard.runner` runs the
-``sbsim`` program and reads its outputs.
+(:func:`all_of`, :func:`any_of`, :func:`seconds`, ...). The host tools (running the program, reading
+its outputs, reports, studies, scenario generation) are the :mod:`sbsim` package; ``storyboard.runner``,
+``storyboard.report`` and ``storyboard.study`` are their older names, kept working.
 """
 
 from __future__ import annotations

@@ -7,7 +7,7 @@ import shutil
 from pathlib import Path
 
 import pytest
-from make_grid import make_grid
+from sbsim.scenarios.grid import make_grid
 from sbsim_helpers import OFFSET_BOUNDARY
 
 

@@ -5,13 +5,13 @@ from __future__ import annotations
 import os
 import re
 import textwrap
-import xml.etree.ElementTree as ET
 from collections import defaultdict
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from storyboard.runner import RunResult, read_events, run
+from sbsim.fcd import read_timesteps
+from sbsim.runner import RunResult, read_events, run
 
 #: The repository's root and its ready scenarios.
 REPO = Path(__file__).resolve().parents[2]
@@ -77,20 +77,20 @@ class FcdTrace:
 
 
 def read_fcd(path: Path, step: float = 1.0) -> FcdTrace:
+    """The FCD (:func:`sbsim.fcd.read_timesteps`) indexed the way the tests ask it."""
     trace = FcdTrace()
-    for timestep in ET.parse(path).getroot().iter("timestep"):
-        t = round(float(timestep.attrib["time"]) + step, 3)
+    for timestep in read_timesteps(path, step=step):
+        t = timestep.t
         trace.times.append(t)
         trace.running[t] = set()
-        for v in timestep.iter("vehicle"):
-            vid = v.attrib["id"]
-            trace.running[t].add(vid)
-            trace.speed[vid][t] = float(v.attrib["speed"])
-            trace.pos[vid][t] = (float(v.attrib["x"]), float(v.attrib["y"]))
-            if "lane" in v.attrib:
-                trace.lane[vid][t] = v.attrib["lane"]
-            if "type" in v.attrib:
-                trace.type[vid][t] = v.attrib["type"]
+        for v in timestep.vehicles:
+            trace.running[t].add(v.vehicle)
+            trace.speed[v.vehicle][t] = v.speed
+            trace.pos[v.vehicle][t] = (v.x, v.y)
+            if v.lane is not None:
+                trace.lane[v.vehicle][t] = v.lane
+            if v.type is not None:
+                trace.type[v.vehicle][t] = v.type
     return trace
 
 

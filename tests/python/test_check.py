@@ -6,8 +6,8 @@ import json
 from pathlib import Path
 
 import pytest
+from sbsim.runner import RunResult, run
 from sbsim_helpers import STORIES, assert_no_crash, write_story
-from storyboard.runner import RunResult, run
 
 
 def check(cfg: Path, story: Path, *flags: str) -> RunResult:

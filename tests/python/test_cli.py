@@ -10,8 +10,8 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from sbsim.runner import executable, run
 from sbsim_helpers import REPO, assert_bad_input, assert_no_crash, env_without, stable_stdout, write_story
-from storyboard.runner import executable, run
 
 SUMMARY_KEYS = ("end", "steps", "vehicles seen", "peak running", "wall time", "real-time factor")
 

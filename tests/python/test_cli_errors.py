@@ -7,8 +7,8 @@ import shutil
 from pathlib import Path
 
 import pytest
+from sbsim.runner import run
 from sbsim_helpers import assert_bad_input, write_story
-from storyboard.runner import run
 
 OK_STORY = """
     import storyboard

@@ -29,8 +29,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from sbsim.runner import executable
 from sbsim_helpers import CRASH_MARKERS, REPO
-from storyboard.runner import executable
 
 CORPUS = REPO / "tests" / "corpus"
 CASES = sorted(p.parent.name for p in CORPUS.glob("*/case.json"))

@@ -11,8 +11,8 @@ from pathlib import Path
 
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
+from sbsim.runner import executable
 from sbsim_helpers import CRASH_MARKERS
-from storyboard.runner import executable
 from test_corpus import message_lines
 
 FUZZ = settings(

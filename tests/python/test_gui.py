@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 from matplotlib.image import imread
+from sbsim.runner import executable
 from sbsim_helpers import OFFSET_BOUNDARY, write_story
-from storyboard.runner import executable
 
 XVFB_RUN = shutil.which("xvfb-run")
 needs_xvfb = pytest.mark.skipif(

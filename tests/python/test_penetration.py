@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from sbsim.runner import read_events, read_summary, run
 from sbsim_helpers import assert_bad_input, write_story
-from storyboard.runner import read_events, read_summary, run
 
 EVERYONE = """
     import storyboard

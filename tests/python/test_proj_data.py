@@ -8,7 +8,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from storyboard.runner import executable
+from sbsim.runner import executable
 
 UTM = "+proj=utm +zone=32 +ellps=WGS84 +datum=WGS84 +units=m +no_defs"
 

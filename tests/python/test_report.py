@@ -1,4 +1,4 @@
-"""storyboard.report: figures and page drawn from a real grid-rain run, checked against its event log."""
+"""sbsim.report: figures and page drawn from a real grid-rain run, checked against its event log."""
 
 from __future__ import annotations
 
@@ -21,9 +21,9 @@ from matplotlib.collections import PathCollection
 from matplotlib.colors import to_rgb
 from matplotlib.image import imread
 from matplotlib.patches import Polygon, StepPatch
+from sbsim import report
+from sbsim.runner import read_events, read_summary, run
 from sbsim_helpers import REPO, STORIES, FcdTrace, active_timeline, assert_no_crash, read_fcd
-from storyboard import report
-from storyboard.runner import read_events, read_summary, run
 
 SCENARIO = STORIES / "grid-rain"
 SUMOCFG = SCENARIO / "grid-rain.sumocfg"
@@ -263,7 +263,7 @@ def test_without_fcd_the_map_is_the_network_alone(rain: RainRun) -> None:
 def cli(*args: str | os.PathLike[str]) -> subprocess.CompletedProcess[str]:
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO / "python"), os.environ.get("PYTHONPATH", "")])}
     return subprocess.run(
-        [sys.executable, "-m", "storyboard.report", *map(str, args)],
+        [sys.executable, "-m", "sbsim.report", *map(str, args)],
         capture_output=True,
         text=True,
         env=env,

@@ -10,8 +10,8 @@ import textwrap
 from pathlib import Path
 
 import pytest
+from sbsim.runner import RunResult, run
 from sbsim_helpers import REPO, STORIES, assert_bad_input, assert_no_crash
-from storyboard.runner import RunResult, run
 
 HIGHWAY = STORIES / "highway-police"
 CFG = HIGHWAY / "highway.sumocfg"

@@ -12,8 +12,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from sbsim.runner import RunResult, read_events, run
 from sbsim_helpers import STORIES, FcdTrace, assert_no_crash, message_counts, read_fcd
-from storyboard.runner import RunResult, read_events, run
 
 SCENARIO = STORIES / "highway-police"
 POLICE = "police0"

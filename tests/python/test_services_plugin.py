@@ -10,8 +10,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
+from sbsim.runner import RunResult, cmake_prefix, run
 from sbsim_helpers import REPO, STORIES, assert_no_crash, message_counts
-from storyboard.runner import RunResult, cmake_prefix, run
 
 EXAMPLE = REPO / "examples" / "service-module"
 #: The accident scenario: the queue behind the wreck brakes hard, so brake lights go on.

@@ -22,7 +22,7 @@ EMERGENCY = ["veh15"]
 EMERGENCY_THEN_STOP = ["veh29"]
 WATCHED = CAP + LOW_THEN_HIGH + HIGH_THEN_LOW + STOP_TWICE + STOP_ONCE + EMERGENCY + EMERGENCY_THEN_STOP
 
-ORIGINAL_MAX = {"car": 50.0, "truck": 25.0}  # tools/make_grid.py vTypes
+ORIGINAL_MAX = {"car": 50.0, "truck": 25.0}  # sbsim.scenarios.grid's vTypes
 
 
 def _story(max_log: Path) -> str:

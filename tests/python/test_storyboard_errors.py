@@ -5,8 +5,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from sbsim.runner import RunResult, run
 from sbsim_helpers import assert_no_crash, write_story
-from storyboard.runner import RunResult, run
 
 
 def _run(cfg: Path, tmp_path: Path, source: str, end: float = 60) -> tuple[RunResult, Path]:

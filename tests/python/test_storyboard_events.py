@@ -7,8 +7,8 @@ from collections import Counter, defaultdict
 from pathlib import Path
 
 import pytest
+from sbsim.runner import run
 from sbsim_helpers import StoryRun, active_timeline, byte_key, run_story, write_story
-from storyboard.runner import run
 
 ORDER_STORY = """
     import storyboard
@@ -208,7 +208,7 @@ def test_speed_condition_less_is_strict_and_follows_sumo(order_run: StoryRun) ->
 
 
 def test_events_without_a_story_file_is_empty(trips_cfg: Path, tmp_path: Path) -> None:
-    from storyboard.runner import run
+    from sbsim.runner import run
 
     events = tmp_path / "ev.jsonl"
     events.write_text("stale\n")

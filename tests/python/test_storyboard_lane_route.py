@@ -6,7 +6,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from make_grid import make_grid
+from sbsim.scenarios.grid import make_grid
 from sbsim_helpers import StoryRun, run_story
 
 LEFT = ["veh5", "veh6", "veh8", "veh9", "veh10", "veh11"]

@@ -11,8 +11,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from sbsim.runner import read_events, run
 from sbsim_helpers import STORIES, StoryRun, read_fcd, run_story
-from storyboard.runner import read_events, run
 
 CLOSED = ("B1C1", "C1B1")
 CLOSE_FROM, CLOSE_TO = 60, 180

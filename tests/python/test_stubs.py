@@ -8,8 +8,8 @@ import ast
 import json
 from pathlib import Path
 
+from sbsim.runner import run
 from sbsim_helpers import REPO, write_story
-from storyboard.runner import run
 
 STUB = REPO / "python" / "storyboard" / "__init__.pyi"
 PACKAGE = REPO / "python" / "storyboard" / "__init__.py"

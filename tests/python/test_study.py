@@ -1,4 +1,4 @@
-"""storyboard.study: a 2 x 3 study on a 2-worker LocalCluster, its tables, resuming, failures."""
+"""sbsim.study: a 2 x 3 study on a 2-worker LocalCluster, its tables, resuming, failures."""
 
 from __future__ import annotations
 
@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+from sbsim import study
+from sbsim.runner import run
 from sbsim_helpers import write_story
-from storyboard import study
-from storyboard.runner import run
 
 STORY = """
     import storyboard
@@ -24,7 +24,7 @@ STORY = """
 
 @pytest.fixture(scope="module")
 def cluster_env(monkeypatch_module: pytest.MonkeyPatch) -> None:
-    """Dask workers import storyboard.study: they must see this tree's python/ folder."""
+    """Dask workers import sbsim.study: they must see this tree's python/ folder."""
     root = Path(__file__).resolve().parents[2] / "python"
     monkeypatch_module.setenv("PYTHONPATH", f"{root}:{__import__('os').environ.get('PYTHONPATH', '')}")
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from sbsim.runner import run
 from sbsim_helpers import assert_bad_input, assert_no_crash, write_story
-from storyboard.runner import run
 
 READER = """
     import storyboard
@@ -78,7 +78,7 @@ def test_bad_param_is_bad_input(trips_cfg: Path) -> None:
 
 
 def test_summary_json_has_the_figures_a_table_needs(trips_cfg: Path, tmp_path: Path) -> None:
-    from storyboard.runner import read_summary
+    from sbsim.runner import read_summary
 
     story = write_story(tmp_path, READER)
     out = tmp_path / "summary.json"

@@ -7,6 +7,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from sbsim.runner import read_events, run
 from sbsim_helpers import (
     STORIES,
     StoryRun,
@@ -16,7 +17,6 @@ from sbsim_helpers import (
     run_story,
     write_story,
 )
-from storyboard.runner import read_events, run
 
 LIMIT = 13.89  # the grid's speed limit (make_grid's default)
 STEP = 1.0

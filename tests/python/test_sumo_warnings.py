@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections import Counter
 from pathlib import Path
 
+from sbsim.runner import read_summary, run
 from sbsim_helpers import assert_bad_input
-from storyboard.runner import read_summary, run
 
 # Teleports after 2 s of waiting: plenty of warnings of two kinds on the small grid.
 NOISY = ["--no-warnings false --time-to-teleport 2"]

@@ -1,0 +1,57 @@
+"""The event log (``sbsim --events FILE``): one JSON object a line, what the stories did and when."""
+
+from __future__ import annotations
+
+import json
+import os
+from typing import Any
+
+__all__ = ["EVENT_FIELDS", "WORLD_EVENT_TYPES", "EventLogError", "read_events"]
+
+
+class EventLogError(ValueError):
+    """A line of an event log that is not an event: ``path:line: what is wrong``."""
+
+    def __init__(self, path: str | os.PathLike[str], line: int, message: str) -> None:
+        super().__init__(f"{os.fspath(path)}:{line}: {message}")
+        self.path = os.fspath(path)
+        self.line = line
+
+
+#: What every event carries, whatever its type (sbsim writes them first on each line).
+EVENT_FIELDS: dict[str, type | tuple[type, ...]] = {"t": (int, float), "type": str, "story": str, "vehicle": str}
+#: Event types a WorldStory writes with ``"vehicle": null`` (it acts on the network, not on a vehicle).
+WORLD_EVENT_TYPES = ("activate", "deactivate")
+
+
+def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+    """The events of an ``--events`` file, one dict per line (``pandas.read_json(path, lines=True)`` works too).
+
+    Raises :class:`EventLogError` (naming the line) for a line that is not a JSON object with ``t``,
+    ``type``, ``story`` and ``vehicle`` (``None`` in a WorldStory's activate and deactivate lines);
+    blank lines are skipped. A file that cannot be read raises :class:`OSError`, one that is not
+    UTF-8 :class:`UnicodeDecodeError`.
+    """
+    events: list[dict[str, Any]] = []
+    with open(path, encoding="utf-8") as f:
+        for number, line in enumerate(f, start=1):
+            if not line.strip():
+                continue
+            try:
+                event = json.loads(line)
+            except json.JSONDecodeError as e:
+                raise EventLogError(path, number, f"bad JSON: {e.msg} (column {e.colno})") from e
+            if not isinstance(event, dict):
+                raise EventLogError(path, number, "not a JSON object")
+            for key, kind in EVENT_FIELDS.items():
+                if key == "vehicle" and key in event and event[key] is None and event.get("type") in WORLD_EVENT_TYPES:
+                    continue
+                # bool is an int to isinstance, but never a time.
+                if not isinstance(event.get(key), kind) or isinstance(event.get(key), bool):
+                    raise EventLogError(path, number, f"'{key}' missing or not a {_kind_name(kind)}")
+            events.append(event)
+    return events
+
+
+def _kind_name(kind: type | tuple[type, ...]) -> str:
+    return "number" if isinstance(kind, tuple) else "string"

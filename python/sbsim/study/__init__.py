@@ -1,0 +1,50 @@
+"""Studies: one story run over parameter values x seeds, on Dask, with the results as two tables.
+
+    python -m sbsim.study study.toml [--scheduler tcp://host:8786] [--workers N] [--plot]
+
+The TOML names the scenario, the seeds and the parameter values (paths relative to the TOML)::
+
+    sumocfg = "grid-rain.sumocfg"
+    story = "story.py"                  # optional; also: services = "services.xml"
+    seeds = { first = 1, count = 10 }   # or a list: seeds = [1, 2, 3]
+    end = 600                           # optional; also: args = ["--threads", "1"]
+    [parameters]
+    rain_speed = [5, 10, 15]
+    [outputs]
+    directory = "results/rain"
+
+Each run is one ``sbsim`` process (crash isolation; SUMO is not re-entrant) started by a Dask task,
+on a ``distributed.LocalCluster`` with one single-threaded worker process per core, or on an
+existing cluster (``--scheduler``; workers must see the same file system). Every run writes its
+own folder ``runs/<id>/`` (events.jsonl, summary.json, stderr, result.json, written last); a run whose
+result.json says it succeeded is not run again, so an interrupted study resumes where it stopped.
+At the end ``runs.parquet`` (one row per run) and ``events.parquet`` (every event with its run's
+parameters and seed) are written beside them.
+
+The package, one job a module: :mod:`~sbsim.study.spec` (the TOML file and its runs),
+:mod:`~sbsim.study.execution` (the runs on Dask), :mod:`~sbsim.study.tables` (Parquet tables and
+plots) and :mod:`~sbsim.study.cli`; a run's summary becomes its row through
+:func:`sbsim.summary.table_columns`.
+"""
+
+from __future__ import annotations
+
+from sbsim.study.cli import main
+from sbsim.study.execution import STDERR_TAIL, StudyResult, execute, result_of, run
+from sbsim.study.spec import Run, StudyError, StudySpec, Value
+from sbsim.study.tables import plot, write_tables
+
+__all__ = [
+    "STDERR_TAIL",
+    "Run",
+    "StudyError",
+    "StudyResult",
+    "StudySpec",
+    "Value",
+    "execute",
+    "main",
+    "plot",
+    "result_of",
+    "run",
+    "write_tables",
+]

@@ -1,0 +1,45 @@
+"""The study's command line (``python -m sbsim.study``; the older ``python -m storyboard.study`` too)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from sbsim.study.execution import run
+from sbsim.study.spec import StudyError, StudySpec
+from sbsim.study.tables import plot
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Runs the study; a bad study file is one line on stderr and exit code 2, a failed run exit code 1."""
+    parser = argparse.ArgumentParser(
+        prog="python -m sbsim.study",
+        description=sys.modules["sbsim.study"].__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("study", type=Path, help="the study's TOML file")
+    parser.add_argument("--scheduler", help="address of a running Dask scheduler (default: a local cluster)")
+    parser.add_argument("--workers", type=int, help="local worker processes (default: one per core)")
+    parser.add_argument("--timeout", type=float, help="seconds a single run may take (default: no limit)")
+    parser.add_argument("--plot", action="store_true", help="also draw activations per story (PNG files)")
+    args = parser.parse_args(argv)
+    try:
+        spec = StudySpec.load(args.study)
+        if args.workers is not None and args.workers < 1:
+            raise StudyError("--workers must be >= 1")
+        result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout)
+    except StudyError as e:
+        print(f"study: {e}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("study: interrupted; finished runs are kept, run the same command again to go on", file=sys.stderr)
+        return 130
+    print(f"study: {len(result.rows)} runs ({result.ran} run now, {len(result.failed)} failed) in {spec.directory}")
+    for row in result.failed:
+        print(f"study: run {row['run']} failed with exit code {row['exit_code']}", file=sys.stderr)
+    if args.plot:
+        for path in plot(spec.directory, spec):
+            print(f"study: plot {path}")
+    return 1 if result.failed else 0

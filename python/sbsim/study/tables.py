@@ -1,0 +1,59 @@
+"""A study's results as tables (Parquet) and plots."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from sbsim.events import read_events
+from sbsim.study.spec import Run, StudySpec
+
+
+def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
+    """runs.parquet (one row per run) and events.parquet (the successful runs' events)."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    spec.directory.mkdir(parents=True, exist_ok=True)
+    pq.write_table(pa.Table.from_pylist(list(rows)), spec.directory / "runs.parquet")
+    events: list[dict[str, Any]] = []
+    for r, row in zip(runs, rows, strict=True):
+        if row["exit_code"] != 0:
+            continue
+        path = spec.directory / "runs" / r.id / "events.jsonl"
+        if not path.exists():
+            continue
+        context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
+        events.extend({**context, **event} for event in read_events(path))
+    pq.write_table(pa.Table.from_pylist(events), spec.directory / "events.parquet")
+
+
+def plot(directory: Path, spec: StudySpec) -> list[Path]:
+    """Per story, a box plot of its activations over the seeds for each parameter combination."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import pandas as pd
+
+    table = pd.read_parquet(directory / "runs.parquet")
+    table = table[table["exit_code"] == 0]
+    names = list(spec.parameters)
+    labels = table[names].astype(str).agg(", ".join, axis=1) if names else pd.Series("all", index=table.index)
+    out = []
+    for column in (c for c in table.columns if c.startswith("activations:")):
+        story = column.removeprefix("activations:")
+        groups = {label: table.loc[labels == label, column].to_list() for label in dict.fromkeys(labels)}
+        fig, ax = plt.subplots(figsize=(max(4.0, 1.2 * len(groups)), 4.0))
+        ax.boxplot(list(groups.values()))
+        ax.set_xticks(range(1, len(groups) + 1), list(groups.keys()), rotation=30, ha="right")
+        ax.set_xlabel(", ".join(names) or "runs")
+        ax.set_ylabel("activations")
+        ax.set_title(f"{story}: activations over {len(spec.seeds)} seeds")
+        fig.tight_layout()
+        path = directory / f"activations-{''.join(c if c.isalnum() else '_' for c in story)}.png"
+        fig.savefig(path, dpi=100)
+        plt.close(fig)
+        out.append(path)
+    return out
