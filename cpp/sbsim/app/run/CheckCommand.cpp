@@ -77,12 +77,8 @@ int CheckCommand::run(const CommandLine& cl) {
     checkSumoInputs(sumocfg, cl.sumoOptions, files);
     files.requireInput("--story", *story);
 
-    traffic::SumoSettings settings;
-    settings.sumocfg = sumocfg;
-    settings.extraOptions = cl.sumoOptions;
-    settings.seed = cl.seed;
+    traffic::SumoSettings settings = Scenario::sumoSettings(cl, sumocfg);
     settings.quiet = true;  // the check's own output only
-    if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
     Scenario scenario(cl, settings, 1);
     scenario.loadSumo();
     scenario.addStoryboard(*story, nullptr).createStories();

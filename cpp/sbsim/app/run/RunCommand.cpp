@@ -82,12 +82,7 @@ int RunCommand::run(const CommandLine& cl) {
     }
     Interruption::checkpoint("before SUMO loaded");
 
-    traffic::SumoSettings settings;
-    settings.sumocfg = sumocfg;
-    settings.extraOptions = cl.sumoOptions;
-    settings.seed = cl.seed;
-    if (cl.end) settings.end = kernel::SimTime::fromSeconds(*cl.end);
-    settings.quiet = cl.quiet;
+    traffic::SumoSettings settings = Scenario::sumoSettings(cl, sumocfg);
     settings.warningsShown = cl.verbose ? SIZE_MAX : kWarningsShown;
     settings.readVehicles = !cl.noSnapshot;
     settings.gui = cl.gui;

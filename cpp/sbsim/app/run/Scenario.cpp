@@ -8,6 +8,16 @@
 
 namespace sbsim::app {
 
+traffic::SumoSettings Scenario::sumoSettings(const CommandLine& options, const std::filesystem::path& sumocfg) {
+    traffic::SumoSettings settings;
+    settings.sumocfg = sumocfg;
+    settings.extraOptions = options.sumoOptions;
+    settings.seed = options.seed;
+    if (options.end) settings.end = kernel::SimTime::fromSeconds(*options.end);
+    settings.quiet = options.quiet;
+    return settings;
+}
+
 Scenario::Scenario(const CommandLine& options, traffic::SumoSettings settings, unsigned threads)
     : sumocfg_(settings.sumocfg),
       sim_(static_cast<std::uint64_t>(options.seed.value_or(CommandLine::kDefaultSeed)), threads),

@@ -29,6 +29,9 @@ namespace sbsim::app {
 /// that order; each is wired to the bridge as it is added.
 class Scenario {
 public:
+    /// What the command line says SUMO is to run: the sumocfg, SUMO's words, --seed, --end, --quiet.
+    static traffic::SumoSettings sumoSettings(const CommandLine& options, const std::filesystem::path& sumocfg);
+
     /// Makes the simulation and the (not yet loaded) SUMO bridge. Throws UsageError for a bad --param.
     Scenario(const CommandLine& options, traffic::SumoSettings settings, unsigned threads);
     Scenario(const Scenario&) = delete;
