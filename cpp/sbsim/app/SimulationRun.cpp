@@ -14,15 +14,16 @@
 #include "sbsim/app/BundledScenario.h"
 #include "sbsim/app/GuiWatch.h"
 #include "sbsim/app/Interruption.h"
+#include "sbsim/app/MessageTraceFile.h"
 #include "sbsim/app/OutputFile.h"
 #include "sbsim/app/ProgressDisplay.h"
+#include "sbsim/app/RadioSetup.h"
 #include "sbsim/app/RunFiles.h"
 #include "sbsim/app/RunInputs.h"
 #include "sbsim/app/Summary.h"
 #include "sbsim/app/SumoOptions.h"
 #include "sbsim/app/SumoStateFile.h"
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/DiscMedium.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/CanvasFrame.h"
@@ -75,6 +76,17 @@ int runSimulation(const CommandLine& cl) {
     if (cl.events) events.emplace("--events", *cl.events, files);
     std::optional<OutputFile> summary;
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
+    std::optional<OutputFile> messages;
+    if (cl.messages) {
+        if (!cl.services) throw UsageError("--messages: there are no messages without --services");
+        messages.emplace("--messages", *cl.messages, files);
+    }
+    if (cl.radio) {
+        if (!cl.services) throw UsageError("--radio: the radio carries the services' messages; give --services");
+        files.requireInput("--radio", *cl.radio);
+    }
+    std::optional<MessageTraceFile> messageTrace;
+    if (messages) messageTrace.emplace(messages->stream());
     std::optional<OutputFile> sumoLog;
     if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
     std::optional<GuiWatch> gui;
@@ -160,13 +172,10 @@ int runSimulation(const CommandLine& cl) {
     if (servicesConfig) {
         serviceManager = &sim.emplaceModule<services::ServiceManager>(
             std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval), sumo.snapshot());
-        radio::DiscSettings disc;
-        disc.range = cl.v2xRange;
-        disc.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
-        disc.fadeStart = cl.v2xFadeStart;
-        medium = &sim.emplaceModule<radio::DiscMedium>(disc, sumo.snapshot(), [serviceManager](const std::string& id) {
+        medium = &makeMedium(cl, sim, sumo.snapshot(), [serviceManager](const std::string& id) -> kernel::Module* {
             return serviceManager->middlewareOf(id);
         });
+        if (messageTrace) medium->setTrace(&*messageTrace);
         serviceManager->useRegistry(vehicles);
         serviceManager->setMedium(*medium);
         serviceManager->setPenetration(penetration);
@@ -182,6 +191,7 @@ int runSimulation(const CommandLine& cl) {
         Interruption::reassert();
         if (Interruption::requested()) sim.stop();
         if (events) events->check();  // a full disk ends the run now, not at its end
+        if (messages) messages->check();
     });
     sim.subscribe(traffic::SumoBridge::stepSignal, checks);
     try {
@@ -199,6 +209,8 @@ int runSimulation(const CommandLine& cl) {
     if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
+    if (messageTrace) messageTrace->flush();
+    if (messages && !Interruption::requested()) messages->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
 
     const RunFigures figures{sumocfg,
