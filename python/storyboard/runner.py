@@ -126,6 +126,47 @@ def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
     return events
 
 
+#: What every line of a message trace (``--messages``) carries, by its ``event``.
+MESSAGE_FIELDS: dict[str, dict[str, type | tuple[type, ...]]] = {
+    "tx": {
+        "t": (int, float),
+        "type": str,
+        "station": str,
+        "seq": int,
+        "bytes": int,
+        "x": (int, float),
+        "y": (int, float),
+    },
+    "rx": {"t": (int, float), "type": str, "station": str, "sender": str, "seq": int, "distance": (int, float)},
+    "lost": {"t": (int, float), "type": str, "station": str, "sender": str, "seq": int, "reason": str},
+}
+
+
+def read_messages(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+    """The lines of a ``--messages`` trace, one dict per line, in time order: ``tx`` per transmission,
+    ``rx`` per reception, ``lost`` per lost reception within the radio's trace range (``reason``:
+    sensing, propagation, collision, half-duplex, queue; the disc model: range, fade).
+
+    Raises :class:`EventLogError` (naming the line) for a line that is not such an object.
+    """
+    lines: list[dict[str, Any]] = []
+    with open(path, encoding="utf-8") as f:
+        for number, text in enumerate(f, start=1):
+            if not text.strip():
+                continue
+            try:
+                line = json.loads(text)
+            except json.JSONDecodeError as e:
+                raise EventLogError(path, number, f"bad JSON: {e.msg} (column {e.colno})") from e
+            if not isinstance(line, dict) or line.get("event") not in MESSAGE_FIELDS:
+                raise EventLogError(path, number, "not a message trace line (event tx, rx or lost)")
+            for key, kind in MESSAGE_FIELDS[line["event"]].items():
+                if not isinstance(line.get(key), kind) or isinstance(line.get(key), bool):
+                    raise EventLogError(path, number, f"'{key}' missing or not a {_kind_name(kind)}")
+            lines.append(line)
+    return lines
+
+
 def _kind_name(kind: type | tuple[type, ...]) -> str:
     return "number" if isinstance(kind, tuple) else "string"
 

@@ -51,8 +51,8 @@ void printSummary(const RunFigures& f) {
     if (f.services != nullptr) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
         for (const auto& [type, counts] : f.medium->counts()) {
-            fmt::print("messages {}: sent {}, delivered {}, mean receivers {:.2f}\n", type, counts.sent,
-                       counts.delivered, meanReceivers(counts));
+            fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
+            fmt::print("mean receivers {}: {:.2f}\n", type, meanReceivers(counts));
             if (!counts.linkStations.empty()) {
                 std::string ratios;
                 for (std::size_t k = 0; k < counts.linkStations.size() && k < kSummaryBins; ++k) {
