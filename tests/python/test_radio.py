@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 from make_grid import sumo_binary
-from sbsim_helpers import assert_bad_input, assert_no_crash, message_counts
+from sbsim_helpers import STORIES, assert_bad_input, assert_no_crash, message_counts
 from storyboard.runner import RunResult, read_messages, run
 
 
@@ -171,3 +171,38 @@ def test_bad_radio_files_are_one_line_errors(tmp_path: Path) -> None:
     )
     assert_bad_input(result, "radio_power_dbm", "must be a number")
     assert_bad_input(run(cfg, end=1.0, extra=["--radio", str(tmp_path / "radio.toml")]), "--radio", "--services")
+
+
+def test_the_disc_model_traces_range_and_fade_losses(tmp_path: Path) -> None:
+    scenario = STORIES / "highway-police"
+    messages = tmp_path / "messages.jsonl"
+    result = run(
+        scenario / "highway.sumocfg",
+        story=scenario / "story.py",
+        end=40.0,
+        extra=[
+            "--services",
+            str(scenario / "services.xml"),
+            "--v2x-fade-start",
+            "300",
+            "--messages",
+            str(messages),
+            "--messages-range",
+            "800",
+        ],
+        timeout=300,
+    )
+    assert_no_crash(result)
+    assert result.returncode == 0, result.stderr
+    lines = read_messages(messages)
+    times = [line["t"] for line in lines]
+    assert times == sorted(times)
+    rx = [line for line in lines if line["event"] == "rx"]
+    lost = [line for line in lines if line["event"] == "lost"]
+    assert {line["reason"] for line in lost} == {"range", "fade"}
+    assert all(line["distance"] > 500 for line in lost if line["reason"] == "range")
+    assert all(300 < line["distance"] <= 500 for line in lost if line["reason"] == "fade")
+    assert all(line["delay"] == pytest.approx(0.001) and line["distance"] <= 500 for line in rx)
+    sent, delivered = message_counts(result.stdout)["ClearLane"]
+    assert delivered == len(rx)
+    assert sent == sum(line["event"] == "tx" for line in lines)

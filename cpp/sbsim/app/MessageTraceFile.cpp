@@ -68,6 +68,9 @@ void MessageTraceFile::record(const radio::TraceLine& line, kernel::SimTime now)
     writeUpTo(now);
 }
 
-void MessageTraceFile::flush() { writeUpTo(kernel::SimTime::max()); }
+void MessageTraceFile::finish(kernel::SimTime end) {
+    writeUpTo(end);
+    pending_ = {};
+}
 
 }  // namespace sbsim::app

@@ -17,8 +17,9 @@ class MessageTraceFile : public radio::MessageTrace {
 public:
     explicit MessageTraceFile(std::ostream& out) : out_(out) {}
     void record(const radio::TraceLine& line, kernel::SimTime now) override;
-    /// Writes the lines still waiting (at the end of the run).
-    void flush();
+    /// At the end of the run (at `end`): writes the lines still waiting up to `end` and drops
+    /// those after it (receptions the run ended before).
+    void finish(kernel::SimTime end);
 
     /// The line as written, without its newline.
     static std::string format(const radio::TraceLine& line);

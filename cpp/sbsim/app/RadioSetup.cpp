@@ -181,9 +181,11 @@ radio::Medium& makeMedium(const CommandLine& cl, kernel::Simulation& sim, const 
         disc.range = cl.v2xRange;
         disc.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
         disc.fadeStart = cl.v2xFadeStart;
+        if (cl.messagesRange) disc.traceRange = *cl.messagesRange;
         return sim.emplaceModule<radio::DiscMedium>(disc, snapshot, std::move(directory));
     }
     radio::ChannelSettings settings = readRadioSettings(cl.radio, sim.parameters());
+    if (cl.messagesRange) settings.traceRange = *cl.messagesRange;
     auto obstacles = std::make_shared<radio::Obstacles>(settings.wallDb, settings.perMetreDb);
     for (traffic::SumoPolygons::Polygon& p : traffic::SumoPolygons::all()) {
         if (p.type == settings.obstacleType) obstacles->add(std::move(p.shape));

@@ -209,7 +209,7 @@ int runSimulation(const CommandLine& cl) {
     if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
-    if (messageTrace) messageTrace->flush();
+    if (messageTrace) messageTrace->finish(sim.now());
     if (messages && !Interruption::requested()) messages->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
 
