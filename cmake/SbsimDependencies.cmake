@@ -40,6 +40,10 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(CLI11 2.1 CONFIG REQUIRED)  # the program's command line (header-only)
 find_package(fmt 9 CONFIG REQUIRED)
 find_package(nlohmann_json 3.11 CONFIG REQUIRED)
+# The radio's obstacle index (Boost.Geometry's R-tree, header-only) and its settings file (toml++,
+# header-only in Debian's libtomlplusplus-dev).
+find_package(Boost 1.74 REQUIRED)
+find_package(tomlplusplus 3 CONFIG REQUIRED)
 
 # The services file's XML reader (version 6 added line numbers). Debian's libtinyxml2-dev ships a
 # CMake package; elsewhere pkg-config may be all there is.

@@ -7,9 +7,10 @@ set -euo pipefail
 SBSIM_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="$SBSIM_ROOT/.venv"
 # Build: compilers, Eigen, GoogleTest and the C++ libraries sbsim uses (XML, command line, JSON,
-# formatting, regular expressions, allocator, gzip); tests: clang-format and a virtual X server for sumo-gui.
+# formatting, regular expressions, allocator, gzip, the radio's R-tree (Boost.Geometry) and its TOML
+# file); tests: clang-format and a virtual X server for sumo-gui.
 DEBIAN_PACKAGES=(cmake g++ python3-dev libeigen3-dev libgtest-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev
-  libfmt-dev libre2-dev libjemalloc-dev zlib1g-dev clang-format xvfb xauth)
+  libfmt-dev libre2-dev libjemalloc-dev libboost-dev libtomlplusplus-dev zlib1g-dev clang-format xvfb xauth)
 # Studies (python -m sbsim.study): Dask runs the sweep, pandas and pyarrow write the tables; reports
 # (python -m sbsim.report): sumolib reads the net and the FCD, at SUMO's own version.
 STUDY_DEPENDENCIES=("dask>=2024" "distributed>=2024" "pandas>=2" "pyarrow>=14" "tqdm>=4" "matplotlib>=3.7" "sumolib==1.28.*")

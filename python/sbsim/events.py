@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import json
 import os
+from collections.abc import Callable
 from typing import Any
 
-__all__ = ["EVENT_FIELDS", "WORLD_EVENT_TYPES", "EventLogError", "read_events"]
+__all__ = ["EVENT_FIELDS", "WORLD_EVENT_TYPES", "EventLogError", "read_events", "read_json_lines"]
 
 
 class EventLogError(ValueError):
@@ -24,6 +25,41 @@ EVENT_FIELDS: dict[str, type | tuple[type, ...]] = {"t": (int, float), "type": s
 WORLD_EVENT_TYPES = ("activate", "deactivate")
 
 
+def read_json_lines(
+    path: str | os.PathLike[str], check: Callable[[int, dict[str, Any]], None] | None = None
+) -> list[dict[str, Any]]:
+    """The JSON objects of a JSON Lines file sbsim wrote, one dict per line (blank lines skipped).
+
+    Raises :class:`EventLogError` (naming the line) for a line that is not a JSON object, and lets
+    ``check(line_number, object)`` raise it for an object that lacks what the file's lines carry.
+    """
+    objects: list[dict[str, Any]] = []
+    with open(path, encoding="utf-8") as f:
+        for number, line in enumerate(f, start=1):
+            if not line.strip():
+                continue
+            try:
+                obj = json.loads(line)
+            except json.JSONDecodeError as e:
+                raise EventLogError(path, number, f"bad JSON: {e.msg} (column {e.colno})") from e
+            if not isinstance(obj, dict):
+                raise EventLogError(path, number, "not a JSON object")
+            if check is not None:
+                check(number, obj)
+            objects.append(obj)
+    return objects
+
+
+def require_fields(
+    path: str | os.PathLike[str], number: int, obj: dict[str, Any], fields: dict[str, type | tuple[type, ...]]
+) -> None:
+    """Raises :class:`EventLogError` unless ``obj`` has each of ``fields`` with its type (a number is not a bool)."""
+    for key, kind in fields.items():
+        # bool is an int to isinstance, but never a time or a count.
+        if not isinstance(obj.get(key), kind) or isinstance(obj.get(key), bool):
+            raise EventLogError(path, number, f"'{key}' missing or not a {_kind_name(kind)}")
+
+
 def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
     """The events of an ``--events`` file, one dict per line (``pandas.read_json(path, lines=True)`` works too).
 
@@ -32,25 +68,14 @@ def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
     blank lines are skipped. A file that cannot be read raises :class:`OSError`, one that is not
     UTF-8 :class:`UnicodeDecodeError`.
     """
-    events: list[dict[str, Any]] = []
-    with open(path, encoding="utf-8") as f:
-        for number, line in enumerate(f, start=1):
-            if not line.strip():
-                continue
-            try:
-                event = json.loads(line)
-            except json.JSONDecodeError as e:
-                raise EventLogError(path, number, f"bad JSON: {e.msg} (column {e.colno})") from e
-            if not isinstance(event, dict):
-                raise EventLogError(path, number, "not a JSON object")
-            for key, kind in EVENT_FIELDS.items():
-                if key == "vehicle" and key in event and event[key] is None and event.get("type") in WORLD_EVENT_TYPES:
-                    continue
-                # bool is an int to isinstance, but never a time.
-                if not isinstance(event.get(key), kind) or isinstance(event.get(key), bool):
-                    raise EventLogError(path, number, f"'{key}' missing or not a {_kind_name(kind)}")
-            events.append(event)
-    return events
+
+    def check(number: int, event: dict[str, Any]) -> None:
+        fields = dict(EVENT_FIELDS)
+        if event.get("vehicle", 0) is None and event.get("type") in WORLD_EVENT_TYPES:
+            del fields["vehicle"]
+        require_fields(path, number, event, fields)
+
+    return read_json_lines(path, check)
 
 
 def _kind_name(kind: type | tuple[type, ...]) -> str:

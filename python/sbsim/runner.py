@@ -16,18 +16,21 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from sbsim.events import EVENT_FIELDS, WORLD_EVENT_TYPES, EventLogError, read_events
+from sbsim.messages import MESSAGE_FIELDS, read_messages
 from sbsim.summary import SummaryError, read_summary
 
 __all__ = [
     "EVENT_FIELDS",
     "WORLD_EVENT_TYPES",
     "EventLogError",
+    "MESSAGE_FIELDS",
     "RunResult",
     "SummaryError",
     "cmake_prefix",
     "executable",
     "main",
     "read_events",
+    "read_messages",
     "read_summary",
     "run",
 ]

@@ -1,5 +1,6 @@
 #include "sbsim/radio/DiscMedium.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -42,13 +43,48 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     }
     const std::shared_ptr<const V2xMessage> shared(std::move(message));
     const auto& positions = snapshot_.positions();
-    for (const auto other : grid_.within(*self, settings_.range)) {
+    const kernel::SimTime now = simTime();
+    if (trace() != nullptr) {
+        TraceLine line;
+        line.event = TraceLine::Event::Tx;
+        line.t = now;
+        line.message = shared.get();
+        line.station = sender;
+        line.seq = shared->sequence();
+        line.x = positions(0, *self);
+        line.y = positions(1, *self);
+        trace()->record(line, now);
+    }
+    // With a trace, stations out to the trace range are visited too (to report them out of range);
+    // the draws stay those of the stations in range, in the same ascending order.
+    const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
+    for (const auto other : grid_.within(*self, radius)) {
         kernel::Module* receiver = receiverOf(snapshot_.ids()[other]);
         if (receiver == nullptr) continue;  // a vehicle without services
-        const double p = receptionProbability((positions.col(other) - positions.col(*self)).norm());
-        // Draw only where loss is possible, so a lossless medium consumes no random numbers.
-        if (p < 1.0 && !(random_->uniform01() < p)) continue;
-        sendDirect(std::make_unique<Delivery>(shared), settings_.latency, *receiver);
+        const double distance = (positions.col(other) - positions.col(*self)).norm();
+        const double p = receptionProbability(distance);
+        std::optional<LossReason> loss;
+        if (distance > settings_.range) {
+            loss = LossReason::Range;
+        } else if (p < 1.0 && !(random_->uniform01() < p)) {
+            // Draw only where loss is possible, so a lossless medium consumes no random numbers.
+            loss = LossReason::Fade;
+        }
+        if (distance <= settings_.range) countLink(*shared, distance, !loss);
+        if (trace() != nullptr && (!loss || distance <= settings_.traceRange)) {
+            TraceLine line;
+            line.event = loss ? TraceLine::Event::Lost : TraceLine::Event::Rx;
+            line.t = loss ? now : now + settings_.latency;
+            line.message = shared.get();
+            line.station = snapshot_.ids()[other];
+            line.sender = sender;
+            line.seq = shared->sequence();
+            line.distance = distance;
+            line.delay = settings_.latency.seconds();
+            if (loss) line.reason = *loss;
+            trace()->record(line, now);
+        }
+        if (!loss) sendDirect(std::make_unique<Delivery>(shared), settings_.latency, *receiver);
     }
 }
 

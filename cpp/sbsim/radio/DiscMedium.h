@@ -19,6 +19,8 @@ struct SBSIM_API DiscSettings {
     /// Packet errors: reception is certain up to this distance, then falls linearly to 0 at
     /// `range`. None (the default): no losses.
     std::optional<double> fadeStart;
+    /// Lost receptions ("range", "fade") are traced for stations this close to the sender.
+    double traceRange = 1000;
 };
 
 /// Single-hop broadcast on an ideal disc: a message reaches every other station within range

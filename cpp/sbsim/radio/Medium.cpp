@@ -5,7 +5,21 @@ namespace sbsim::radio {
 void Medium::stamp(V2xMessage& message, const std::string& sender) {
     message.sender_ = sender;
     message.sentAt_ = simTime();
+    message.sequence_ = sequences_[sender]++;
     ++counts_[std::string(message.typeName())].sent;
+}
+
+void Medium::countLink(const V2xMessage& message, double distance, bool received) {
+    const auto it = counts_.find(message.typeName());
+    if (it == counts_.end() || !(distance >= 0)) return;
+    const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
+    Counts& c = it->second;
+    if (c.linkStations.size() <= bin) {
+        c.linkStations.resize(bin + 1);
+        c.linkReceptions.resize(bin + 1);
+    }
+    ++c.linkStations[bin];
+    if (received) ++c.linkReceptions[bin];
 }
 
 void Medium::delivered(const V2xMessage& message) {

@@ -6,9 +6,12 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/radio/MessageTrace.h"
 #include "sbsim/radio/V2xMessage.h"
 
 namespace sbsim::radio {
@@ -21,6 +24,16 @@ public:
     struct Counts {
         std::uint64_t sent = 0;
         std::uint64_t delivered = 0;
+        /// Per 50 m of sender–receiver distance (bin k: [50k, 50k + 50) m): the stations the
+        /// medium considered, and those that received the message.
+        std::vector<std::uint64_t> linkStations, linkReceptions;
+    };
+    static constexpr double kDistanceBin = 50;
+    /// Channel busy ratio over every station's 100 ms samples.
+    struct LoadFigures {
+        double meanCbr = 0;
+        double maxCbr = 0;
+        std::uint64_t samples = 0;
     };
     /// The module a station's receptions go to (its middleware), or none for a vehicle that is
     /// not a station.
@@ -36,19 +49,30 @@ public:
     /// The share of the last 100 ms `station` sensed the channel busy; none when the medium does
     /// not model it.
     virtual std::optional<double> channelBusyRatio(const std::string& /*station*/) const { return std::nullopt; }
+    /// Mean and max channel busy ratio so far; none when the medium does not model it.
+    virtual std::optional<LoadFigures> loadFigures() const { return std::nullopt; }
     /// Called by a receiving station when a message reaches it.
     void delivered(const V2xMessage& message);
 
     const std::map<std::string, Counts, std::less<>>& counts() const { return counts_; }
 
+    /// Reports every transmission, reception and (within the medium's trace range) loss to
+    /// `trace` from now on; null: none. The trace must outlive the run.
+    void setTrace(MessageTrace* trace) { trace_ = trace; }
+
 protected:
-    /// Stamps `message` as sent by `sender` now and counts it.
+    /// Stamps `message` as sent by `sender` now, with the sender's next sequence number, and counts it.
     void stamp(V2xMessage& message, const std::string& sender);
+    /// Counts one station the medium considered for `message` at `distance` m, and whether it received it.
+    void countLink(const V2xMessage& message, double distance, bool received);
+    MessageTrace* trace() const { return trace_; }
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
 
 private:
     Directory directory_;
     std::map<std::string, Counts, std::less<>> counts_;
+    std::unordered_map<std::string, std::uint64_t> sequences_;  // next per sender
+    MessageTrace* trace_ = nullptr;
 };
 
 }  // namespace sbsim::radio

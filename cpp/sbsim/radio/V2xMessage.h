@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,11 +29,14 @@ public:
     /// Filled in by the medium when the message is sent.
     const std::string& sender() const { return sender_; }
     kernel::SimTime sentAt() const { return sentAt_; }
+    /// The sender's count of messages before this one (0, 1, 2, …), over all its services.
+    std::uint64_t sequence() const { return sequence_; }
 
 private:
     friend class Medium;
     std::string sender_;
     kernel::SimTime sentAt_;
+    std::uint64_t sequence_ = 0;
 };
 
 }  // namespace sbsim::radio

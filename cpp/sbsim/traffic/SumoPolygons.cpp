@@ -32,6 +32,16 @@ std::vector<Eigen::Vector2d> SumoPolygons::shape(const std::string& id) {
     return points;
 }
 
+std::vector<SumoPolygons::Polygon> SumoPolygons::all() {
+    std::vector<Polygon> polygons;
+    for (std::string& id : ids()) {
+        Polygon p{id, libsumo::Polygon::getType(id), {}};
+        for (const libsumo::TraCIPosition& q : libsumo::Polygon::getShape(id).value) p.shape.emplace_back(q.x, q.y);
+        polygons.push_back(std::move(p));
+    }
+    return polygons;
+}
+
 std::string SumoPolygons::unknownMessage(const std::string& id, const std::vector<std::string>& known) {
     if (known.empty()) {
         return fmt::format(

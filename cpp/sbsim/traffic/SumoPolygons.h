@@ -18,6 +18,14 @@ public:
     /// Throws std::invalid_argument with unknownMessage() for an id SUMO does not know, and
     /// std::logic_error unless SUMO is loaded.
     static std::vector<Eigen::Vector2d> shape(const std::string& id);
+    struct Polygon {
+        std::string id;
+        std::string type;  ///< its `type` attribute, e.g. "building"
+        std::vector<Eigen::Vector2d> shape;
+    };
+    /// Every polygon with its type and shape, ids ascending (one pass: a city has tens of
+    /// thousands). Throws std::logic_error unless SUMO is loaded.
+    static std::vector<Polygon> all();
     /// "SUMO has no polygon 'x' (...)", naming what `known` holds: all ids if few, else some.
     static std::string unknownMessage(const std::string& id, const std::vector<std::string>& known);
 

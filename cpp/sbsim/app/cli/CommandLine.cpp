@@ -153,6 +153,19 @@ void CommandLine::declareOptions(CLI::App& app) {
         ->type_name("SHARE")
         ->check(share())
         ->capture_default_str();
+    app.add_option("--radio", radio,
+                   "the 802.11p channel model (path loss, shadowing, buildings,\n"
+                   "interference, CSMA/CA, DCC) with this settings file, instead\n"
+                   "of the --v2x-* disc; study parameters radio_<key> override it")
+        ->type_name("FILE.toml");
+    app.add_option("--messages", messages, "write every transmission, reception and loss as JSON Lines")
+        ->type_name("FILE.jsonl");
+    app.add_option("--messages-range", messagesRange,
+                   "lost receptions go to --messages for stations this close to\n"
+                   "the sender (default: the radio file's trace_range, 500 m;\n"
+                   "the disc model: 1000 m)")
+        ->type_name("METRES")
+        ->check(metres(true));
     app.add_flag("--storyboard-equipped-only", storyboardEquippedOnly,
                  "stories see only equipped vehicles, as egos and as others\n"
                  "(as in Artery, where only vehicles with a middleware take part)");

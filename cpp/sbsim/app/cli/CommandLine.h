@@ -42,6 +42,9 @@ struct CommandLine {
     double v2xLatency = 0.001;                      ///< s
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors
     double penetration = 1.0;                       ///< share of vehicles with V2X equipment
+    std::optional<std::filesystem::path> radio;     ///< 802.11p channel model settings (TOML); none: the disc
+    std::optional<std::filesystem::path> messages;  ///< the message trace (JSON Lines)
+    std::optional<double> messagesRange;            ///< m; lost lines only this close to the sender
     bool storyboardEquippedOnly = false;            ///< stories see only equipped vehicles
     std::optional<std::filesystem::path> sumoLog;   ///< every SUMO warning, as SUMO printed it
     bool verbose = false;                           ///< every SUMO warning on stderr, not the first few of a kind

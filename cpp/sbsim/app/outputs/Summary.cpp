@@ -23,6 +23,13 @@ const char* endReasonText(traffic::SumoBridge::EndReason r) {
     return "stopped";
 }
 
+double meanReceivers(const radio::Medium::Counts& c) {
+    return c.sent == 0 ? 0.0 : static_cast<double>(c.delivered) / static_cast<double>(c.sent);
+}
+
+/// Distance bins (of 50 m) the text summary shows; the JSON has them all.
+constexpr std::size_t kSummaryBins = 20;
+
 }  // namespace
 
 void printSummary(const RunFigures& f) {
@@ -45,7 +52,19 @@ void printSummary(const RunFigures& f) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
         for (const auto& [type, counts] : f.medium->counts()) {
             fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
+            fmt::print("mean receivers {}: {:.2f}\n", type, meanReceivers(counts));
+            if (!counts.linkStations.empty()) {
+                std::string ratios;
+                for (std::size_t k = 0; k < counts.linkStations.size() && k < kSummaryBins; ++k) {
+                    if (counts.linkStations[k] == 0) continue;
+                    ratios += fmt::format("{}{}: {:.3f}", ratios.empty() ? "" : ", ", k * 50,
+                                          static_cast<double>(counts.linkReceptions[k]) / counts.linkStations[k]);
+                }
+                fmt::print("delivery ratio {} by metres: {}\n", type, ratios);
+            }
         }
+        if (const auto load = f.medium->loadFigures())
+            fmt::print("channel busy ratio: mean {:.4f}, max {:.4f}\n", load->meanCbr, load->maxCbr);
     }
     if (const std::size_t warnings = f.sumo.warnings().total(); warnings > 0) {
         const auto kinds = f.sumo.warnings().kinds();
@@ -96,8 +115,21 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();
         for (const auto& [type, counts] : f.medium->counts()) {
-            messages[type] = {{"sent", counts.sent}, {"delivered", counts.delivered}};
+            ordered_json bins = ordered_json::array();
+            for (std::size_t k = 0; k < counts.linkStations.size(); ++k) {
+                if (counts.linkStations[k] == 0) continue;
+                bins.push_back({{"from_m", k * 50},
+                                {"stations", counts.linkStations[k]},
+                                {"received", counts.linkReceptions[k]},
+                                {"ratio", static_cast<double>(counts.linkReceptions[k]) / counts.linkStations[k]}});
+            }
+            messages[type] = {{"sent", counts.sent},
+                              {"delivered", counts.delivered},
+                              {"mean_receivers", meanReceivers(counts)},
+                              {"delivery_ratio", std::move(bins)}};
         }
+        if (const auto load = f.medium->loadFigures())
+            out["channel_busy_ratio"] = {{"mean", load->meanCbr}, {"max", load->maxCbr}, {"samples", load->samples}};
     }
     out["messages"] = std::move(messages);
     ordered_json warningKinds = ordered_json::array();

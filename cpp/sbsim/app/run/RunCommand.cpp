@@ -15,6 +15,7 @@
 #include "sbsim/app/inputs/ScenarioInputs.h"
 #include "sbsim/app/inputs/SumoOptions.h"
 #include "sbsim/app/inputs/SumoStateFile.h"
+#include "sbsim/app/outputs/MessageTraceFile.h"
 #include "sbsim/app/outputs/OutputFile.h"
 #include "sbsim/app/outputs/Summary.h"
 #include "sbsim/app/run/AfterEachStep.h"
@@ -23,7 +24,6 @@
 #include "sbsim/app/run/ProgressDisplay.h"
 #include "sbsim/app/run/Scenario.h"
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/DiscMedium.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/StoryError.h"
@@ -73,6 +73,17 @@ int RunCommand::run(const CommandLine& cl) {
     if (cl.events) events.emplace("--events", *cl.events, files);
     std::optional<OutputFile> summary;
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
+    std::optional<OutputFile> messages;
+    if (cl.messages) {
+        if (!cl.services) throw UsageError("--messages: there are no messages without --services");
+        messages.emplace("--messages", *cl.messages, files);
+    }
+    if (cl.radio) {
+        if (!cl.services) throw UsageError("--radio: the radio carries the services' messages; give --services");
+        files.requireInput("--radio", *cl.radio);
+    }
+    std::optional<MessageTraceFile> messageTrace;
+    if (messages) messageTrace.emplace(messages->stream());
     std::optional<OutputFile> sumoLog;
     if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
     std::optional<GuiWatch> gui;
@@ -126,12 +137,8 @@ int RunCommand::run(const CommandLine& cl) {
     }
 
     if (servicesConfig) {
-        radio::DiscSettings disc;
-        disc.range = cl.v2xRange;
-        disc.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
-        disc.fadeStart = cl.v2xFadeStart;
-        scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval), disc,
-                             penetration);
+        scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval),
+                             penetration, messageTrace ? &*messageTrace : nullptr);
     }
 
     std::unique_ptr<ProgressDisplay> progress;
@@ -143,6 +150,7 @@ int RunCommand::run(const CommandLine& cl) {
         Interruption::reassert();
         if (Interruption::requested()) sim.stop();
         if (events) events->check();  // a full disk ends the run now, not at its end
+        if (messages) messages->check();
     });
     sim.subscribe(traffic::SumoBridge::stepSignal, checks);
     try {
@@ -160,6 +168,8 @@ int RunCommand::run(const CommandLine& cl) {
     if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
+    if (messageTrace) messageTrace->finish(sim.now());
+    if (messages && !Interruption::requested()) messages->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
 
     const RunFigures figures{sumocfg,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "sbsim/app/cli/BadInput.h"
+#include "sbsim/app/run/RadioSetup.h"
 #include "sbsim/storyboard/CanvasFrame.h"
 #include "sbsim/traffic/EquippedView.h"
 
@@ -19,7 +20,8 @@ traffic::SumoSettings Scenario::sumoSettings(const CommandLine& options, const s
 }
 
 Scenario::Scenario(const CommandLine& options, traffic::SumoSettings settings, unsigned threads)
-    : sumocfg_(settings.sumocfg),
+    : options_(options),
+      sumocfg_(settings.sumocfg),
       sim_(static_cast<std::uint64_t>(options.seed.value_or(CommandLine::kDefaultSeed)), threads),
       sumo_(sim_.emplaceModule<traffic::SumoBridge>(std::move(settings))) {
     for (const std::string& param : options.params) {
@@ -55,12 +57,13 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
     return *script_;
 }
 
-void Scenario::addServices(services::ServicesConfig config, kernel::SimTime interval, const radio::DiscSettings& disc,
-                           const traffic::Penetration& penetration) {
+void Scenario::addServices(services::ServicesConfig config, kernel::SimTime interval,
+                           const traffic::Penetration& penetration, radio::MessageTrace* trace) {
     services_ = &sim_.emplaceModule<services::ServiceManager>(std::move(config), interval, sumo_.snapshot(), vehicles_);
     services::ServiceManager* manager = services_;
-    medium_ = &sim_.emplaceModule<radio::DiscMedium>(
-        disc, sumo_.snapshot(), [manager](const std::string& id) { return manager->middlewareOf(id); });
+    medium_ = &makeMedium(options_, sim_, sumo_.snapshot(),
+                          [manager](const std::string& id) -> kernel::Module* { return manager->middlewareOf(id); });
+    if (trace != nullptr) medium_->setTrace(trace);
     services_->setMedium(*medium_);
     services_->setPenetration(penetration);
     services_->attach(sumo_);

@@ -8,7 +8,8 @@
 
 #include "sbsim/app/cli/CommandLine.h"
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/radio/Medium.h"
+#include "sbsim/radio/MessageTrace.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/BoardFeed.h"
@@ -43,9 +44,10 @@ public:
     /// those vehicles) and loads the story script, whose createStories() is still to run.
     storyboard::StoryScript& addStoryboard(const std::filesystem::path& story, storyboard::EventLog* log,
                                            std::optional<traffic::Penetration> equippedOnly = std::nullopt);
-    /// Adds the services with the disc medium.
-    void addServices(services::ServicesConfig config, kernel::SimTime interval, const radio::DiscSettings& disc,
-                     const traffic::Penetration& penetration);
+    /// Adds the services with the medium the command line chooses (--radio: the 802.11p channel
+    /// model, else the disc model of the --v2x-* options), its lines going to `trace` if given.
+    void addServices(services::ServicesConfig config, kernel::SimTime interval, const traffic::Penetration& penetration,
+                     radio::MessageTrace* trace);
 
     kernel::Simulation& simulation() { return sim_; }
     traffic::SumoBridge& sumo() { return sumo_; }
@@ -57,6 +59,7 @@ public:
     std::vector<std::string> abandonLingeringThreads();
 
 private:
+    const CommandLine& options_;
     std::filesystem::path sumocfg_;
     // Destroyed bottom up: the script's Python objects before the board, the simulation before
     // the registry its modules hold entries of, the interpreter last.

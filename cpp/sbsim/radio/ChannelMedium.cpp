@@ -1,0 +1,458 @@
+#include "sbsim/radio/ChannelMedium.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/radio/CounterRandom.h"
+#include "sbsim/radio/Delivery.h"
+
+namespace sbsim::radio {
+
+namespace {
+enum TimerKind { kAccess = 1, kEnd = 2, kLoad = 3 };
+
+double toMw(double dbm) { return std::pow(10.0, dbm / 10.0); }
+double toDb(double mw) { return 10.0 * std::log10(mw); }
+}  // namespace
+
+struct ChannelMedium::Link {
+    Slot receiver = -1;
+    double distance = 0;
+    double powerDbm = 0;
+    double powerMw = 0;
+    double maxInterferenceMw = 0;  // the largest sum of the other frames overlapping this one
+    bool counted = false;          // above the floor: part of the receiver's sensed power
+    bool halfDuplex = false;       // the receiver transmitted during the frame
+    bool locked = false;           // the receiver was decoding this frame
+};
+
+struct ChannelMedium::StationTimer : kernel::Message {
+    explicit StationTimer(Slot s) : kernel::Message("channel access", kAccess), station(s) {}
+    Slot station;
+};
+
+struct ChannelMedium::EndTimer : kernel::Message {
+    explicit EndTimer(std::uint64_t id) : kernel::Message("transmission end", kEnd), tx(id) {}
+    std::uint64_t tx;
+};
+
+struct ChannelMedium::Transmission {
+    explicit Transmission(std::uint64_t i) : id(i), end(i) {}
+    std::uint64_t id;
+    Slot sender = -1;
+    std::shared_ptr<const V2xMessage> message;
+    kernel::SimTime start;
+    std::vector<Link> links;  // ascending receiver slot
+    EndTimer end;
+};
+
+ChannelMedium::ChannelMedium(ChannelSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory,
+                             std::shared_ptr<const Obstacles> obstacles)
+    : Medium(std::move(directory)),
+      settings_(std::move(settings)),
+      snapshot_(snapshot),
+      obstacles_(std::move(obstacles)),
+      fer_((settings_.validate(), settings_.ferTable)) {
+    pathLoss_ = settings_.makePathLoss();
+    fading_.m = settings_.nakagamiM;
+    fading_.veinsDistanceRule = settings_.fading == ChannelSettings::Fading::NakagamiVeins;
+    sensingMw_ = toMw(settings_.sensingDbm);
+    noiseMw_ = toMw(settings_.noiseDbm);
+    floorMw_ = toMw(settings_.interferenceFloorDbm);
+    // The cutoff: where the mean power plus a margin for shadowing (2 σ) and fading falls below
+    // the floor. Path loss grows with distance, so double, then bisect.
+    const double margin =
+        2 * settings_.shadowingSigmaDb + (settings_.fading == ChannelSettings::Fading::None ? 0.0 : 5.0);
+    const auto above = [&](double d) { return meanPowerDbm(d) + margin >= settings_.interferenceFloorDbm; };
+    double lo = 1;
+    double hi = 2;
+    while (above(hi) && hi < 1e5) {
+        lo = hi;
+        hi *= 2;
+    }
+    for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        (above(mid) ? lo : hi) = mid;
+    }
+    cutoff_ = hi;
+}
+
+ChannelMedium::~ChannelMedium() = default;
+
+double ChannelMedium::meanPowerDbm(double distance) const { return settings_.powerDbm - pathLoss_->lossDb(distance); }
+
+void ChannelMedium::initialize() {
+    seed_ = simulation().seed();
+    loadTimer_ = std::make_unique<kernel::Message>("channel load", kLoad);
+    scheduleAt(DccStateMachine::kSampling * (simTime() / DccStateMachine::kSampling + 1), *loadTimer_);
+}
+
+void ChannelMedium::handleMessage(kernel::Message& msg) {
+    switch (msg.kind()) {
+        case kAccess:
+            return startTransmission(static_cast<StationTimer&>(msg).station);
+        case kEnd:
+            return endTransmission(static_cast<EndTimer&>(msg).tx);
+        case kLoad:
+            sampleLoad();
+            return scheduleAfter(DccStateMachine::kSampling, msg);
+        default:
+            return Medium::handleMessage(msg);
+    }
+}
+
+ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
+    if (const auto it = slotOf_.find(id); it != slotOf_.end()) return it->second;
+    const auto s = static_cast<Slot>(ids_.size());
+    slotOf_.emplace(id, s);
+    ids_.push_back(id);
+    keys_.push_back(CounterRandom::keyOf(id));
+    x_.push_back(0);
+    y_.push_back(0);
+    present_.push_back(0);
+    sensedMw_.push_back(0);
+    sensedBusy_.push_back(0);
+    transmitting_.push_back(0);
+    locked_.push_back(0);
+    incoming_.emplace_back();
+    cbrBusy_.push_back(0);
+    cbrSince_.push_back(simTime());
+    windowStart_.push_back(simTime());
+    busyNs_.push_back(0);
+    cbr_.push_back(0);
+    dcc_.emplace_back();
+    queue_.emplace_back();
+    contending_.push_back(0);
+    backoff_.push_back(0);
+    countStart_.push_back(simTime());
+    idleSince_.push_back(kernel::SimTime::zero());
+    timers_.push_back(std::make_unique<StationTimer>(s));
+    return s;
+}
+
+void ChannelMedium::refreshStations() {
+    if (refreshedAt_ == snapshot_.time() && slotOfIndex_.size() == static_cast<std::size_t>(snapshot_.size())) return;
+    refreshedAt_ = snapshot_.time();
+    std::fill(present_.begin(), present_.end(), 0);
+    slotOfIndex_.assign(static_cast<std::size_t>(snapshot_.size()), -1);
+    const auto& positions = snapshot_.positions();
+    for (traffic::VehicleSnapshot::Index i = 0; i < snapshot_.size(); ++i) {
+        const std::string& id = snapshot_.ids()[i];
+        Slot s = -1;
+        if (const auto it = slotOf_.find(id); it != slotOf_.end()) {
+            s = it->second;
+        } else if (receiverOf(id) != nullptr) {
+            s = stationOf(id);
+        } else {
+            continue;  // a vehicle without services is no station
+        }
+        slotOfIndex_[i] = s;
+        present_[s] = 1;
+        x_[s] = positions(0, i);
+        y_[s] = positions(1, i);
+    }
+    // Cells of half the cutoff: a query touches about 5x5 cells around the sender.
+    grid_.build(snapshot_, std::max(cutoff_ / 2, 1.0));
+}
+
+void ChannelMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) {
+    if (!message) throw std::invalid_argument("cannot send a null V2X message");
+    stamp(*message, sender);
+    refreshStations();
+    const auto index = snapshot_.indexOf(sender);
+    if (!index) return;  // not on the road (yet): nobody hears it
+    const Slot s = stationOf(sender);
+    if (!present_[s]) {
+        present_[s] = 1;  // a station whose directory entry appeared after the last refresh
+        x_[s] = snapshot_.positions()(0, *index);
+        y_[s] = snapshot_.positions()(1, *index);
+    }
+    std::shared_ptr<const V2xMessage> shared(std::move(message));
+    if (queue_[s].size() >= settings_.queueLimit) {
+        if (trace() != nullptr) {
+            TraceLine line;
+            line.event = TraceLine::Event::Lost;
+            line.t = simTime();
+            line.message = shared.get();
+            line.station = ids_[s];
+            line.sender = ids_[s];
+            line.seq = shared->sequence();
+            line.reason = LossReason::Queue;
+            trace()->record(line, simTime());
+        }
+        return;
+    }
+    queue_[s].push_back({std::move(shared)});
+    if (!contending_[s] && transmitting_[s] == 0 && queue_[s].size() == 1) startAccess(s);
+}
+
+void ChannelMedium::startAccess(Slot s) {
+    const V2xMessage& head = *queue_[s].front().message;
+    CounterRandom random(seed_, keys_[s], head.sequence(), 0, DrawPurpose::Backoff);
+    backoff_[s] = static_cast<std::int32_t>(random.uniform01() * (settings_.contentionWindow + 1));
+    contending_[s] = 1;
+    if (!sensedBusy_[s]) scheduleCountdown(s);
+}
+
+void ChannelMedium::scheduleCountdown(Slot s) {
+    // The backoff counts down once the channel has been idle for AIFS.
+    countStart_[s] = std::max(simTime(), idleSince_[s] + settings_.aifs());
+    scheduleAt(countStart_[s] + settings_.slot * backoff_[s], *timers_[s]);
+}
+
+void ChannelMedium::setSensedPower(Slot s, double mw) {
+    sensedMw_[s] = mw;
+    const bool busy = mw >= sensingMw_;
+    if (busy == static_cast<bool>(sensedBusy_[s])) return;
+    sensedBusy_[s] = busy;
+    if (busy) {
+        // Freeze the backoff: the slots that passed idle are spent. A station whose backoff ends
+        // now sends anyway: carrier sense takes part of a slot, so frames starting in the same
+        // slot collide, as on the air.
+        if (contending_[s] && timers_[s]->isScheduled() && timers_[s]->arrivalTime() > simTime()) {
+            cancelEvent(*timers_[s]);
+            if (simTime() > countStart_[s]) {
+                const auto spent = static_cast<std::int32_t>((simTime() - countStart_[s]) / settings_.slot);
+                backoff_[s] = std::max(0, backoff_[s] - spent);
+            }
+        }
+    } else {
+        idleSince_[s] = simTime();
+        if (contending_[s]) scheduleCountdown(s);
+    }
+    setCbrBusy(s);
+}
+
+void ChannelMedium::setCbrBusy(Slot s) {
+    // The channel counts busy for the busy ratio while sensed busy or while the station sends.
+    const bool busy = sensedBusy_[s] || transmitting_[s] != 0;
+    if (busy == static_cast<bool>(cbrBusy_[s])) return;
+    if (!busy) busyNs_[s] += (simTime() - cbrSince_[s]).raw();
+    cbrBusy_[s] = busy;
+    cbrSince_[s] = simTime();
+}
+
+void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links) {
+    candidates_.clear();
+    const auto index = snapshot_.indexOf(ids_[s]);
+    if (index) {
+        grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
+            if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) candidates_.push_back(r);
+        });
+    }
+    std::sort(candidates_.begin(), candidates_.end());
+    links.resize(candidates_.size());
+    const std::uint64_t senderKey = keys_[s];
+    const std::uint64_t sequence = tx.message->sequence();
+    const Eigen::Vector2d from(x_[s], y_[s]);
+    const bool fading = settings_.fading != ChannelSettings::Fading::None;
+    const bool shadowing = settings_.shadowingSigmaDb > 0;
+    const bool obstacles = obstacles_ && obstacles_->size() > 0;
+    // Each link is a pure function of its ends and its key: any split over threads gives the same.
+    simulation().parallel().run(
+        candidates_.size(),
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t k = begin; k < end; ++k) {
+                const Slot r = candidates_[k];
+                Link& link = links[k];
+                link = Link{};
+                link.receiver = r;
+                const Eigen::Vector2d to(x_[r], y_[r]);
+                link.distance = (to - from).norm();
+                double dbm = settings_.powerDbm - pathLoss_->lossDb(link.distance);
+                if (obstacles) dbm -= obstacles_->lossDb(from, to);
+                if (shadowing) {
+                    CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Shadowing);
+                    dbm += settings_.shadowingSigmaDb * random.normal();
+                }
+                if (fading) {
+                    CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Fading);
+                    dbm += fading_.gainDb(link.distance, random);
+                }
+                link.powerDbm = dbm;
+                link.powerMw = toMw(dbm);
+            }
+        },
+        256);
+    linksComputed_ += links.size();
+}
+
+void ChannelMedium::startTransmission(Slot s) {
+    refreshStations();
+    contending_[s] = 0;
+    auto tx = std::make_unique<Transmission>(nextTx_++);
+    tx->sender = s;
+    tx->message = std::move(queue_[s].front().message);
+    queue_[s].pop_front();
+    tx->start = simTime();
+    ++transmissions_;
+    if (trace() != nullptr) {
+        TraceLine line;
+        line.event = TraceLine::Event::Tx;
+        line.t = simTime();
+        line.message = tx->message.get();
+        line.station = ids_[s];
+        line.seq = tx->message->sequence();
+        line.x = x_[s];
+        line.y = y_[s];
+        line.cbr = cbr_[s];
+        trace()->record(line, simTime());
+    }
+    if (present_[s]) computeLinks(s, *tx, tx->links);
+
+    // The sender stops receiving: whatever it was receiving is lost to half-duplex.
+    for (const Incoming& in : incoming_[s]) active_.at(in.tx)->links[in.link].halfDuplex = true;
+    locked_[s] = 0;
+    transmitting_[s] = tx->id;
+    setCbrBusy(s);
+
+    // Receivers one by one, in slot order: this part schedules events and must stay sequential.
+    for (std::uint32_t k = 0; k < tx->links.size(); ++k) {
+        Link& link = tx->links[k];
+        const Slot r = link.receiver;
+        if (transmitting_[r] != 0) link.halfDuplex = true;
+        if (link.powerMw < floorMw_) continue;
+        link.counted = true;
+        std::vector<Incoming>& in = incoming_[r];
+        double others = 0;
+        for (const Incoming& e : in) others += e.mw;
+        link.maxInterferenceMw = others;
+        const double total = others + link.powerMw;
+        for (const Incoming& e : in) {
+            Link& old = active_.at(e.tx)->links[e.link];
+            old.maxInterferenceMw = std::max(old.maxInterferenceMw, std::max(0.0, total - e.mw));
+        }
+        if (transmitting_[r] == 0 && locked_[r] == 0 && link.powerMw >= sensingMw_) {
+            locked_[r] = tx->id;
+            link.locked = true;
+        }
+        in.push_back({tx->id, k, link.powerMw});
+        setSensedPower(r, total);
+    }
+    scheduleAt(simTime() + settings_.airtime(tx->message->byteSize()), tx->end);
+    active_.emplace(tx->id, std::move(tx));
+}
+
+void ChannelMedium::endTransmission(std::uint64_t id) {
+    const auto found = active_.find(id);
+    if (found == active_.end()) return;
+    std::unique_ptr<Transmission> tx = std::move(found->second);
+    active_.erase(found);
+    const V2xMessage& message = *tx->message;
+    const double delay = (simTime() - message.sentAt()).seconds();
+    const double ratio = settings_.bandwidthHz / (settings_.rateMbps * 1e6);
+
+    for (Link& link : tx->links) {
+        const Slot r = link.receiver;
+        if (link.counted) {
+            std::vector<Incoming>& in = incoming_[r];
+            in.erase(std::remove_if(in.begin(), in.end(), [&](const Incoming& e) { return e.tx == id; }), in.end());
+            double total = 0;  // summed afresh, so no rounding drift accumulates
+            for (const Incoming& e : in) total += e.mw;
+            setSensedPower(r, total);
+        }
+        if (locked_[r] == id) locked_[r] = 0;
+
+        std::optional<LossReason> loss;
+        double sinrDb = 0;
+        if (link.halfDuplex) {
+            loss = LossReason::HalfDuplex;
+        } else if (link.powerMw < sensingMw_) {
+            loss = LossReason::Sensing;
+        } else if (!link.locked) {
+            loss = LossReason::Collision;  // the receiver was decoding another frame
+        } else {
+            sinrDb = toDb(link.powerMw / (noiseMw_ + link.maxInterferenceMw));
+            const double snrDb = toDb(link.powerMw / noiseMw_);
+            const double ferWith = fer_.ferAtEbN0Db(sinrDb + toDb(ratio));
+            const double ferWithout = fer_.ferAtEbN0Db(snrDb + toDb(ratio));
+            CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Decode);
+            const double u = random.uniform01();
+            if (u < ferWithout) {
+                loss = LossReason::Propagation;
+            } else if (u < ferWith) {
+                loss = LossReason::Collision;
+            }
+        }
+        kernel::Module* receiver = receiverOf(ids_[r]);
+        countLink(message, link.distance, !loss && receiver != nullptr);
+        if (receiver == nullptr) continue;  // left the simulation during the frame
+        if (loss) {
+            if (trace() != nullptr && link.distance <= settings_.traceRange) traceLost(*tx, r, link.distance, *loss);
+            continue;
+        }
+        ++receptions_;
+        if (trace() != nullptr) {
+            TraceLine line;
+            line.event = TraceLine::Event::Rx;
+            line.t = simTime();
+            line.message = &message;
+            line.station = ids_[r];
+            line.sender = ids_[tx->sender];
+            line.seq = message.sequence();
+            line.distance = link.distance;
+            line.delay = delay;
+            line.powerDbm = link.powerDbm;
+            line.sinrDb = sinrDb;
+            trace()->record(line, simTime());
+        }
+        sendDirect(std::make_unique<Delivery>(tx->message), kernel::SimTime::zero(), *receiver);
+    }
+
+    const Slot s = tx->sender;
+    transmitting_[s] = 0;
+    if (!sensedBusy_[s]) idleSince_[s] = simTime();  // AIFS again after its own frame
+    setCbrBusy(s);
+    if (!queue_[s].empty()) startAccess(s);
+}
+
+void ChannelMedium::traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason) {
+    TraceLine line;
+    line.event = TraceLine::Event::Lost;
+    line.t = simTime();
+    line.message = tx.message.get();
+    line.station = ids_[receiver];
+    line.sender = ids_[tx.sender];
+    line.seq = tx.message->sequence();
+    line.distance = distance;
+    line.reason = reason;
+    trace()->record(line, simTime());
+}
+
+void ChannelMedium::sampleLoad() {
+    const kernel::SimTime now = simTime();
+    for (Slot s = 0; s < static_cast<Slot>(ids_.size()); ++s) {
+        if (cbrBusy_[s]) {
+            busyNs_[s] += (now - cbrSince_[s]).raw();
+            cbrSince_[s] = now;
+        }
+        const kernel::SimTime window = now - windowStart_[s];
+        if (present_[s] && window > kernel::SimTime::zero()) {
+            cbr_[s] = static_cast<double>(busyNs_[s]) / static_cast<double>(window.raw());
+            dcc_[s].update(cbr_[s]);
+            if (!load_) load_.emplace();
+            ++load_->samples;
+            cbrSum_ += cbr_[s];
+            load_->meanCbr = cbrSum_ / static_cast<double>(load_->samples);
+            load_->maxCbr = std::max(load_->maxCbr, cbr_[s]);
+        }
+        busyNs_[s] = 0;
+        windowStart_[s] = now;
+    }
+}
+
+std::optional<kernel::SimTime> ChannelMedium::dccInterval(const std::string& station) const {
+    const auto it = slotOf_.find(station);
+    if (it == slotOf_.end()) return DccStateMachine{}.transmissionInterval();
+    return dcc_[it->second].transmissionInterval();
+}
+
+std::optional<double> ChannelMedium::channelBusyRatio(const std::string& station) const {
+    const auto it = slotOf_.find(station);
+    if (it == slotOf_.end()) return 0.0;
+    return cbr_[it->second];
+}
+
+}  // namespace sbsim::radio

@@ -1,0 +1,58 @@
+#include "sbsim/radio/ChannelSettings.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "sbsim/radio/FrameErrorTable.h"
+#include "sbsim/radio/FreeSpaceLoss.h"
+#include "sbsim/radio/LogDistanceLoss.h"
+#include "sbsim/radio/TwoRayGroundLoss.h"
+#include "sbsim/radio/WinnerB1Loss.h"
+
+namespace sbsim::radio {
+
+kernel::SimTime ChannelSettings::airtime(std::size_t bytes) const {
+    const double bits = (static_cast<double>(bytes) + 30) * 8;
+    return kernel::SimTime::fromNanoseconds(40'000) +
+           kernel::SimTime::fromNanoseconds(static_cast<kernel::SimTime::rep>(std::ceil(bits * 1e3 / rateMbps)));
+}
+
+void ChannelSettings::validate() const {
+    const auto require = [](bool ok, const char* what) {
+        if (!ok) throw std::invalid_argument(what);
+    };
+    require(std::isfinite(powerDbm), "power_dbm must be a number");
+    const double rates[] = {3, 4.5, 6, 9, 12, 18, 24, 27};
+    bool knownRate = false;
+    for (const double r : rates) knownRate = knownRate || r == rateMbps;
+    require(knownRate, "rate_mbps must be one of 3, 4.5, 6, 9, 12, 18, 24, 27");
+    require(frequencyHz > 0, "frequency_hz must be > 0");
+    require(bandwidthHz > 0, "bandwidth_hz must be > 0");
+    require(std::isfinite(noiseDbm) && std::isfinite(sensingDbm) && std::isfinite(interferenceFloorDbm),
+            "noise_dbm, sensing_dbm and interference_floor_dbm must be numbers");
+    require(shadowingSigmaDb >= 0, "shadowing_sigma_db must be >= 0");
+    require(nakagamiM >= 0.5, "nakagami_m must be >= 0.5");
+    require(wallDb >= 0 && perMetreDb >= 0, "obstacle losses must be >= 0 dB");
+    require(aifsn >= 1 && aifsn <= 15, "aifsn must be 1 to 15");
+    require(contentionWindow >= 0 && contentionWindow <= 1023, "contention_window must be 0 to 1023");
+    require(queueLimit >= 1, "queue_limit must be >= 1");
+    require(traceRange >= 0, "trace_range must be >= 0 m");
+    (void)FrameErrorTable(ferTable);  // throws on a malformed table
+    (void)makePathLoss();
+}
+
+std::unique_ptr<PathLoss> ChannelSettings::makePathLoss() const {
+    switch (pathLoss) {
+        case PathLossModel::FreeSpace:
+            return std::make_unique<FreeSpaceLoss>(frequencyHz);
+        case PathLossModel::LogDistance:
+            return std::make_unique<LogDistanceLoss>(referenceLossDb, referenceDistance, exponent);
+        case PathLossModel::TwoRayGround:
+            return std::make_unique<TwoRayGroundLoss>(frequencyHz, antennaHeight, antennaHeight);
+        case PathLossModel::WinnerB1:
+            break;
+    }
+    return std::make_unique<WinnerB1Loss>(frequencyHz, antennaHeight, environmentHeight);
+}
+
+}  // namespace sbsim::radio

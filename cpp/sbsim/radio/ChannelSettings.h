@@ -1,0 +1,75 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/radio/PathLoss.h"
+
+namespace sbsim::radio {
+
+/// Every setting of the 802.11p channel model (ChannelMedium), with the defaults of Sepulcre et
+/// al.'s highway evaluation (IEEE TVT 2022): 23 dBm, 6 Mbit/s over 10 MHz at 5.89 GHz, WINNER+ B1
+/// LOS with 3 dB shadowing, sensing threshold −85 dBm, noise −95 dBm. The radio file (--radio)
+/// sets them; see README "Radio".
+struct SBSIM_API ChannelSettings {
+    enum class PathLossModel { FreeSpace, LogDistance, TwoRayGround, WinnerB1 };
+    enum class Fading { None, Nakagami, NakagamiVeins };
+
+    double powerDbm = 23;
+    double rateMbps = 6;  ///< one of 802.11p's 10 MHz rates: 3, 4.5, 6, 9, 12, 18, 24, 27
+    double frequencyHz = 5.89e9;
+    double bandwidthHz = 10e6;
+    double noiseDbm = -95;
+    double sensingDbm = -85;  ///< carrier sense and frame detection threshold
+    /// Links whose mean power plus two shadowing deviations is below this are not computed at all
+    /// (they would add less than a tenth of the noise): it sets the model's cutoff range.
+    double interferenceFloorDbm = -105;
+
+    PathLossModel pathLoss = PathLossModel::WinnerB1;
+    double antennaHeight = 1.5;      ///< m, both ends (WINNER+ B1, two-ray ground)
+    double environmentHeight = 0.5;  ///< m (WINNER+ B1)
+    double referenceLossDb = 47.86;  ///< log-distance: loss at the reference distance (free space at 1 m, 5.89 GHz)
+    double referenceDistance = 1;    ///< m
+    double exponent = 2.0;           ///< log-distance
+
+    double shadowingSigmaDb = 3;  ///< log-normal, per link and message; 0 = none
+    Fading fading = Fading::None;
+    double nakagamiM = 1.5;  ///< with Fading::Nakagami
+
+    /// Buildings: SUMO polygons of this type (none loaded: no obstacles).
+    std::string obstacleType = "building";
+    double wallDb = 9;        ///< per wall crossed (Veins' simple obstacle model)
+    double perMetreDb = 0.4;  ///< per metre inside
+
+    // 802.11p EDCA for broadcast, 10 MHz channel. Default: the best-effort access category
+    // (AIFSN 6, CW 15), which ETSI ITS-G5 uses for CAMs on the control channel.
+    int aifsn = 6;
+    int contentionWindow = 15;  ///< backoff drawn uniformly in [0, CW] slots
+    kernel::SimTime slot = kernel::SimTime::fromNanoseconds(13'000);
+    kernel::SimTime sifs = kernel::SimTime::fromNanoseconds(32'000);
+    /// Frames a station holds waiting for the channel (the one contending included); a frame
+    /// arriving at a full queue is dropped (trace reason "queue").
+    std::size_t queueLimit = 16;
+
+    /// FER against Eb/N0 (dB) used at every rate (Eb/N0 = SINR · bandwidth / rate); the default is
+    /// Goubet et al.'s 6 Mbit/s table.
+    std::vector<std::pair<double, double>> ferTable = {{0, 1},     {5, 1},     {10, 0.4},  {15, 1.5e-2},
+                                                       {20, 4e-3}, {25, 3e-3}, {30, 2e-3}, {35, 1e-3}};
+
+    /// Lost receptions are traced (--messages) only for stations this close to the sender.
+    double traceRange = 500;
+
+    kernel::SimTime aifs() const { return sifs + slot * aifsn; }
+    /// 40 µs of preamble and header plus (bytes + 30 of MAC header and FCS) at the rate.
+    kernel::SimTime airtime(std::size_t bytes) const;
+    /// Throws std::invalid_argument naming the first setting out of range.
+    void validate() const;
+    std::unique_ptr<PathLoss> makePathLoss() const;
+};
+
+}  // namespace sbsim::radio

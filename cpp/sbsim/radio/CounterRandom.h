@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "sbsim/kernel/Export.h"
+
+namespace sbsim::radio {
+
+/// What a radio draw is for: part of its key, so two purposes on the same link never share a number.
+enum class DrawPurpose : std::uint64_t { Shadowing = 1, Fading = 2, Decode = 3, Backoff = 4, Start = 5 };
+
+/// A counter-based random generator: every number is a pure function of its key (seed, sender,
+/// sequence number, receiver, purpose) and a counter, like Philox or Random123's generators. No
+/// state is shared between draws, so the radio's results do not depend on which thread computes
+/// a link or in which order links are evaluated.
+class SBSIM_API CounterRandom {
+public:
+    /// The stream of one draw's key. `receiver` is 0 for draws of the sender alone (backoff).
+    CounterRandom(std::uint64_t seed, std::uint64_t sender, std::uint64_t sequence, std::uint64_t receiver,
+                  DrawPurpose purpose);
+
+    /// A stable 64-bit key for a station id (FNV-1a then mixed), the same on every platform.
+    static std::uint64_t keyOf(std::string_view stationId);
+    /// SplitMix64's finalizer: a bijection of 64-bit words with good avalanche.
+    static constexpr std::uint64_t mix(std::uint64_t z) {
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return z ^ (z >> 31);
+    }
+
+    /// The next 64 random bits of this stream (counter 0, 1, 2, …).
+    std::uint64_t next();
+    /// Uniform in [0, 1), 53 bits.
+    double uniform01() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    /// Standard normal (Box–Muller on two uniforms).
+    double normal();
+    /// Gamma(shape k, scale 1) by Marsaglia and Tsang's method (k > 0).
+    double gamma(double shape);
+
+private:
+    std::uint64_t key_;
+    std::uint64_t counter_ = 0;
+};
+
+}  // namespace sbsim::radio

@@ -1,0 +1,17 @@
+#pragma once
+
+#include "sbsim/radio/PathLoss.h"
+
+namespace sbsim::radio {
+
+/// Log-distance loss: PL(d0) + 10 n log10(d / d0), with PL(d0) the reference loss at d0.
+class SBSIM_API LogDistanceLoss : public PathLoss {
+public:
+    LogDistanceLoss(double referenceLossDb, double referenceDistance, double exponent);
+    double lossDb(double distance) const override;
+
+private:
+    double referenceLossDb_, referenceDistance_, exponent_;
+};
+
+}  // namespace sbsim::radio

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/radio/V2xMessage.h"
+
+namespace sbsim::radio {
+
+/// Why a station did not receive a message (the `reason` of a trace's lost line).
+enum class LossReason {
+    Sensing,      ///< received below the sensing threshold
+    Propagation,  ///< detected, but lost to noise alone (FER at its SNR)
+    Collision,    ///< lost to interference: overlapping frames, or the receiver was busy with another
+    HalfDuplex,   ///< the receiver was transmitting during the frame
+    Queue,        ///< dropped at the sender: its queue was full
+    Range,        ///< disc model: beyond the range
+    Fade,         ///< disc model: the linear fade dropped it
+};
+SBSIM_API std::string_view lossReasonName(LossReason reason);
+
+/// One line of the message trace (--messages). Which optional fields are set depends on the event.
+struct TraceLine {
+    enum class Event { Tx, Rx, Lost };
+    Event event = Event::Tx;
+    kernel::SimTime t;
+    const V2xMessage* message = nullptr;
+    std::string_view station;
+    std::string_view sender;  ///< rx and lost
+    std::uint64_t seq = 0;
+    double x = 0, y = 0;                          ///< tx
+    std::optional<double> cbr;                    ///< tx
+    double distance = 0;                          ///< rx and lost
+    double delay = 0;                             ///< rx, s
+    std::optional<double> powerDbm, sinrDb;       ///< rx, channel model only
+    LossReason reason = LossReason::Propagation;  ///< lost
+};
+
+/// Where a medium reports what happened to each message. Lines may come with a time later than
+/// `now` (a disc-model reception after its latency); a trace writes them in time order.
+class SBSIM_API MessageTrace {
+public:
+    virtual ~MessageTrace() = default;
+    virtual void record(const TraceLine& line, kernel::SimTime now) = 0;
+};
+
+}  // namespace sbsim::radio

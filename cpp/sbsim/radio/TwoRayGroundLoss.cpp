@@ -1,0 +1,26 @@
+#include "sbsim/radio/TwoRayGroundLoss.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "sbsim/radio/SpeedOfLight.h"
+
+namespace sbsim::radio {
+
+TwoRayGroundLoss::TwoRayGroundLoss(double frequencyHz, double transmitterHeight, double receiverHeight)
+    : freeSpace_(frequencyHz) {
+    if (!(transmitterHeight > 0) || !(receiverHeight > 0))
+        throw std::invalid_argument("two-ray ground loss: antenna heights must be > 0 m");
+    heightsDb_ = 20 * std::log10(transmitterHeight * receiverHeight);
+    crossover_ = 4 * std::numbers::pi * transmitterHeight * receiverHeight * frequencyHz / kSpeedOfLight;
+}
+
+double TwoRayGroundLoss::lossDb(double distance) const {
+    const double d = std::max(distance, 1.0);
+    if (d < crossover_) return freeSpace_.lossDb(d);
+    return 40 * std::log10(d) - heightsDb_;
+}
+
+}  // namespace sbsim::radio

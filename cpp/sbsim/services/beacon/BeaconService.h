@@ -1,0 +1,26 @@
+#pragma once
+
+#include "sbsim/kernel/Message.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/services/Service.h"
+
+namespace sbsim::services {
+
+/// Broadcasts a BeaconMessage of `bytes` bytes (default 190) every `interval` seconds (default
+/// 0.1), as the fixed-rate beacons of Sepulcre et al.'s 802.11p evaluation. The first one goes at
+/// a random phase in [0, interval) after the vehicle departs, drawn per vehicle from the seed, so
+/// vehicles departing together do not send in lockstep.
+///
+///     <service type="Beacon" interval="0.1" bytes="190"/>
+class BeaconService : public Service {
+public:
+    void initialize() override;
+    void handleMessage(kernel::Message& msg) override;
+
+private:
+    kernel::SimTime interval_;
+    std::size_t bytes_ = 190;
+    kernel::Message timer_{"beacon"};
+};
+
+}  // namespace sbsim::services

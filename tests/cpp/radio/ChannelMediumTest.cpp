@@ -1,0 +1,237 @@
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/radio/ChannelMedium.h"
+#include "sbsim/radio/Delivery.h"
+
+namespace sbsim::radio {
+namespace {
+
+using kernel::SimTime;
+
+struct TestMessage : V2xMessage {
+    std::string_view typeName() const override { return "Test"; }
+    std::size_t byteSize() const override { return 190; }
+};
+
+/// A station's module: counts what reaches it.
+struct Station : kernel::Module {
+    explicit Station(std::string id) : kernel::Module(std::move(id)) {}
+    void handleMessage(kernel::Message& msg) override {
+        received.push_back(static_cast<Delivery&>(msg).message->sender());
+    }
+    std::vector<std::string> received;
+};
+
+/// Calls the medium at given times.
+struct Script : kernel::Module {
+    Script() : kernel::Module("script") {}
+    void at(SimTime t, std::function<void()> f) {
+        actions.push_back(std::make_unique<Action>(std::move(f)));
+        pending.emplace_back(t, actions.back().get());
+    }
+    void initialize() override {
+        for (auto& [t, a] : pending) scheduleAt(t, *a);
+    }
+    void handleMessage(kernel::Message& msg) override { static_cast<Action&>(msg).f(); }
+    struct Action : kernel::Message {
+        explicit Action(std::function<void()> fn) : f(std::move(fn)) {}
+        std::function<void()> f;
+    };
+    std::vector<std::unique_ptr<Action>> actions;
+    std::vector<std::pair<SimTime, Action*>> pending;
+};
+
+/// Keeps every trace line as text.
+struct LinesTrace : MessageTrace {
+    void record(const TraceLine& l, SimTime /*now*/) override {
+        static const char* events[] = {"tx", "rx", "lost"};
+        std::string s =
+            fmt::format("{} {} {} {} {}", l.t.raw(), events[static_cast<int>(l.event)], l.station, l.sender, l.seq);
+        if (l.event == TraceLine::Event::Lost) s += fmt::format(" {}", lossReasonName(l.reason));
+        if (l.powerDbm) s += fmt::format(" {:.6f} {:.6f}", *l.powerDbm, *l.sinrDb);
+        lines.push_back(s);
+        if (l.event == TraceLine::Event::Tx) txTimes[std::string(l.station)].push_back(l.t);
+        if (l.event == TraceLine::Event::Lost)
+            losses[std::string(l.station) + "<" + std::string(l.sender)] = lossReasonName(l.reason);
+    }
+    std::vector<std::string> lines;
+    std::map<std::string, std::vector<SimTime>> txTimes;
+    std::map<std::string, std::string_view> losses;
+};
+
+/// A run on fixed positions (one snapshot at t = 0).
+struct Bench {
+    explicit Bench(const std::vector<std::pair<std::string, double>>& stations, ChannelSettings settings = quiet(),
+                   unsigned threads = 1, std::shared_ptr<const Obstacles> obstacles = {})
+        : sim(42, threads) {
+        std::vector<traffic::VehicleSnapshot::Vehicle> vehicles;
+        for (const auto& [id, x] : stations) {
+            traffic::VehicleSnapshot::Vehicle v;
+            v.id = id;
+            v.x = x;
+            vehicles.push_back(v);
+            modules[id] = &sim.emplaceModule<Station>(id);
+        }
+        snapshot.assign(std::move(vehicles), SimTime::zero());
+        medium = &sim.emplaceModule<ChannelMedium>(
+            settings, snapshot,
+            [this](const std::string& id) -> kernel::Module* {
+                const auto it = modules.find(id);
+                return it == modules.end() ? nullptr : it->second;
+            },
+            std::move(obstacles));
+        medium->setTrace(&trace);
+        script = &sim.emplaceModule<Script>();
+    }
+    /// No shadowing: outcomes follow distance alone.
+    static ChannelSettings quiet() {
+        ChannelSettings s;
+        s.shadowingSigmaDb = 0;
+        return s;
+    }
+    void send(SimTime t, const std::string& sender) {
+        script->at(t, [this, sender] { medium->broadcast(sender, std::make_unique<TestMessage>()); });
+    }
+    void run(SimTime until = SimTime::fromMilliseconds(50)) {
+        sim.initialize();
+        sim.run(until);
+    }
+    std::size_t got(const std::string& receiver, const std::string& sender) const {
+        std::size_t n = 0;
+        for (const auto& s : modules.at(receiver)->received) n += s == sender;
+        return n;
+    }
+
+    kernel::Simulation sim;
+    traffic::VehicleSnapshot snapshot;
+    std::map<std::string, Station*> modules;
+    ChannelMedium* medium = nullptr;
+    Script* script = nullptr;
+    LinesTrace trace;
+};
+
+TEST(ChannelMedium, NearbyStationsReceiveAndFarOnesDoNot) {
+    Bench b({{"a", 0}, {"b", 100}, {"c", 2000}});
+    b.send(SimTime::zero(), "a");
+    b.run();
+    EXPECT_EQ(b.got("b", "a"), 1u);
+    EXPECT_EQ(b.got("c", "a"), 0u);
+    EXPECT_EQ(b.medium->transmissions(), 1u);
+    EXPECT_GT(b.medium->cutoffRange(), 800);
+    EXPECT_LT(b.medium->cutoffRange(), 2000);
+}
+
+TEST(ChannelMedium, ReceptionBelowTheSensingThresholdIsLostToSensing) {
+    ChannelSettings s = Bench::quiet();
+    s.traceRange = 2000;
+    // −85 dBm at 23 dBm needs 108 dB of loss: about 291 m with WINNER+ B1.
+    Bench b({{"a", 0}, {"near", 280}, {"far", 305}}, s);
+    b.send(SimTime::zero(), "a");
+    b.run();
+    EXPECT_EQ(b.got("near", "a"), 1u);
+    EXPECT_EQ(b.got("far", "a"), 0u);
+    EXPECT_EQ(b.trace.losses["far<a"], "sensing");
+}
+
+TEST(ChannelMedium, HalfDuplexStationsMissEachOther) {
+    ChannelSettings s = Bench::quiet();
+    s.contentionWindow = 0;  // both start at AIFS exactly: neither can sense the other in time
+    Bench b({{"a", 0}, {"b", 50}, {"c", 25}}, s);
+    b.send(SimTime::zero(), "a");
+    b.send(SimTime::zero(), "b");
+    b.run();
+    EXPECT_EQ(b.got("a", "b"), 0u);
+    EXPECT_EQ(b.got("b", "a"), 0u);
+    EXPECT_EQ(b.trace.losses["a<b"], "half-duplex");
+    EXPECT_EQ(b.trace.losses["b<a"], "half-duplex");
+    // c hears both at equal power: neither decodes.
+    EXPECT_EQ(b.got("c", "a") + b.got("c", "b"), 0u);
+}
+
+TEST(ChannelMedium, OverlappingFramesCollideAtOneReceiverAndNotAnother) {
+    ChannelSettings s = Bench::quiet();
+    s.contentionWindow = 0;
+    // a and b are hidden from each other (−95 dBm at 400 m < −85), so both send at once.
+    Bench b({{"a", 0}, {"b", 400}, {"nearA", 10}, {"middle", 200}}, s);
+    b.send(SimTime::zero(), "a");
+    b.send(SimTime::zero(), "b");
+    b.run();
+    EXPECT_EQ(b.trace.txTimes["a"], b.trace.txTimes["b"]);
+    EXPECT_EQ(b.got("nearA", "a"), 1u);   // SINR about 45 dB
+    EXPECT_EQ(b.got("middle", "a"), 0u);  // SINR about 0 dB
+    EXPECT_EQ(b.got("middle", "b"), 0u);
+    EXPECT_EQ(b.trace.losses["middle<a"], "collision");
+    EXPECT_EQ(b.trace.losses["middle<b"], "collision");
+}
+
+TEST(ChannelMedium, CsmaDefersToASensedFrame) {
+    Bench b({{"a", 0}, {"b", 50}});
+    const ChannelSettings& s = b.medium->settings();
+    b.send(SimTime::zero(), "a");
+    b.send(SimTime::fromNanoseconds(200'000), "b");  // while a's 333 µs frame is on the air
+    b.run();
+    ASSERT_EQ(b.trace.txTimes["a"].size(), 1u);
+    ASSERT_EQ(b.trace.txTimes["b"].size(), 1u);
+    const SimTime aEnd = b.trace.txTimes["a"][0] + s.airtime(190);
+    EXPECT_GE(b.trace.txTimes["b"][0], aEnd + s.aifs());
+    EXPECT_LE(b.trace.txTimes["b"][0], aEnd + s.aifs() + s.slot * s.contentionWindow);
+    EXPECT_EQ(b.got("b", "a"), 1u);
+    EXPECT_EQ(b.got("a", "b"), 1u);
+}
+
+TEST(ChannelMedium, ABuildingBlocksALink) {
+    auto obstacles = std::make_shared<Obstacles>(9, 0.4);
+    obstacles->add({{40, -10}, {60, -10}, {60, 10}, {40, 10}});
+    Bench open({{"a", 0}, {"b", 150}});
+    Bench walled({{"a", 0}, {"b", 150}}, Bench::quiet(), 1, obstacles);
+    for (Bench* b : {&open, &walled}) {
+        b->send(SimTime::zero(), "a");
+        b->run();
+    }
+    EXPECT_EQ(open.got("b", "a"), 1u);
+    EXPECT_EQ(walled.got("b", "a"), 0u);  // 26 dB more: below the sensing threshold
+    EXPECT_EQ(walled.trace.losses["b<a"], "sensing");
+}
+
+TEST(ChannelMedium, BusyRatioAndDccFollowTheLoad) {
+    Bench b({{"a", 0}, {"b", 50}});
+    // a sends every ms for 300 ms: 333 µs of 1000 busy at b.
+    for (int k = 0; k < 300; ++k) b.send(SimTime::fromMilliseconds(k), "a");
+    b.run(SimTime::fromMilliseconds(300));
+    EXPECT_NEAR(*b.medium->channelBusyRatio("b"), 0.333, 0.01);
+    EXPECT_NEAR(*b.medium->channelBusyRatio("a"), 0.333, 0.01);             // its own frames count
+    EXPECT_EQ(*b.medium->dccInterval("b"), SimTime::fromMilliseconds(60));  // one second not yet seen
+}
+
+TEST(ChannelMedium, ResultsDoNotDependOnTheThreadCount) {
+    // 600 stations over 3 km (more links per frame than one chunk of the pool), each sending
+    // a few frames at staggered times, with shadowing and fading on.
+    std::vector<std::pair<std::string, double>> stations;
+    for (int k = 0; k < 600; ++k) stations.emplace_back(fmt::format("v{:03}", k), k * 5.0);
+    ChannelSettings s;
+    s.fading = ChannelSettings::Fading::NakagamiVeins;
+    std::vector<std::string> traces[2];
+    for (unsigned threads : {1u, 2u}) {
+        Bench b(stations, s, threads);
+        for (int k = 0; k < 600; ++k)
+            for (int m = 0; m < 3; ++m)
+                b.send(SimTime::fromNanoseconds(k * 97'000 + m * 20'000'000), stations[k].first);
+        b.run(SimTime::fromMilliseconds(200));
+        EXPECT_GT(b.medium->receptions(), 10000u);
+        traces[threads - 1] = b.trace.lines;
+    }
+    ASSERT_EQ(traces[0].size(), traces[1].size());
+    EXPECT_TRUE(traces[0] == traces[1]);
+}
+
+}  // namespace
+}  // namespace sbsim::radio

@@ -1,0 +1,208 @@
+"""The 802.11p channel model (--radio) end to end on small SUMO highways made here with netconvert:
+a building between two vehicles blocks their beacons, the message trace agrees with the summary,
+and the trace is byte-identical with one thread and two.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+import subprocess
+from pathlib import Path
+
+import pytest
+from sbsim.sumo import sumo_binary
+from sbsim_helpers import STORIES, assert_bad_input, assert_no_crash, message_counts
+from sbsim.runner import RunResult, read_messages, run
+
+
+def highway(
+    folder: Path, positions: list[float], speed: float, *, building: bool, length: float = 600.0, lanes: int = 2
+) -> Path:
+    """A straight one-way road along y = 0 with vehicles at `positions` (m from its start), each
+    beaconing (190 bytes, 10 Hz); with `building`, a 30 m deep block across the road at x 110..140."""
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "h.nod.xml").write_text(f'<nodes><node id="a" x="0" y="0"/><node id="b" x="{length:g}" y="0"/></nodes>')
+    (folder / "h.edg.xml").write_text(f'<edges><edge id="e" from="a" to="b" numLanes="{lanes}" speed="30"/></edges>')
+    subprocess.run(
+        [
+            str(sumo_binary("netconvert")),
+            "-n",
+            str(folder / "h.nod.xml"),
+            "-e",
+            str(folder / "h.edg.xml"),
+            "-o",
+            str(folder / "h.net.xml"),
+        ],
+        check=True,
+        capture_output=True,
+    )
+    vehicles = "\n".join(
+        f'<vehicle id="v{k:04d}" type="car" depart="0" route="r" departLane="{k % lanes}" departPos="{x:.2f}" '
+        f'departSpeed="{speed:g}"/>'
+        for k, x in enumerate(positions)
+    )
+    (folder / "h.rou.xml").write_text(
+        f'<routes><vType id="car" maxSpeed="{speed:g}" sigma="0" speedDev="0" lcStrategic="-1" lcSpeedGain="0" '
+        f'lcKeepRight="0"/><route id="r" edges="e"/>\n{vehicles}\n</routes>'
+    )
+    additional = ""
+    if building:
+        (folder / "b.add.xml").write_text(
+            '<additional><poly id="block" type="building" color="1,0,0" fill="true" '
+            'shape="110,-60 140,-60 140,60 110,60"/><poly id="park" type="park" color="0,1,0" '
+            'shape="300,-60 330,-60 330,60 300,60"/></additional>'
+        )
+        additional = '<additional-files value="b.add.xml"/>'
+    (folder / "h.services.xml").write_text('<services><service type="Beacon" interval="0.1" bytes="190"/></services>')
+    cfg = folder / "h.sumocfg"
+    cfg.write_text(
+        f'<configuration><input><net-file value="h.net.xml"/><route-files value="h.rou.xml"/>{additional}</input>'
+        '<time><step-length value="0.1"/></time><report><no-step-log value="true"/></report></configuration>'
+    )
+    return cfg
+
+
+def beacon_run(cfg: Path, out: Path, *extra: str, end: float = 3.0) -> RunResult:
+    result = run(
+        cfg,
+        end=end,
+        extra=["--services", str(cfg.parent / "h.services.xml"), "--radio", str(out / "radio.toml"), *extra],
+        timeout=300,
+    )
+    assert_no_crash(result)
+    assert result.returncode == 0, result.stderr
+    return result
+
+
+@pytest.fixture
+def radio_file(tmp_path: Path) -> Path:
+    # The defaults, plus buildings of type "building" (also the default), written out.
+    (tmp_path / "radio.toml").write_text(
+        '[phy]\npower_dbm = 23\n[propagation]\npath_loss = "winner-b1"\nshadowing_sigma_db = 3\n'
+        '[obstacles]\npolygon_type = "building"\nwall_db = 9\nper_metre_db = 0.4\n[trace]\ntrace_range = 500\n'
+    )
+    return tmp_path / "radio.toml"
+
+
+@pytest.mark.parametrize("building", [False, True])
+def test_a_building_between_two_vehicles_blocks_them(tmp_path: Path, radio_file: Path, building: bool) -> None:
+    # 150 m apart at 1 m/s, either side of x 110..140 (the park polygon at 300 m is not a building).
+    cfg = highway(tmp_path / "road", [50.0, 200.0], 1.0, building=building)
+    messages = tmp_path / "messages.jsonl"
+    result = beacon_run(cfg, tmp_path, "--messages", str(messages))
+    lines = read_messages(messages)
+    rx = [line for line in lines if line["event"] == "rx"]
+    lost = [line for line in lines if line["event"] == "lost"]
+    tx = [line for line in lines if line["event"] == "tx"]
+    assert len(tx) >= 50  # two vehicles, 10 Hz, 3 s
+    if building:
+        # 2 walls (18 dB) + 30 m inside (12 dB) below −74 dBm: far under the −85 dBm threshold.
+        assert rx == []
+        assert {line["reason"] for line in lost} == {"sensing"}
+        assert len(lost) == len(tx)
+    else:
+        assert len(rx) >= len(tx) - 2  # about 0.1 % FER at ~20 dB SNR
+        assert all(abs(line["distance"] - 150.0) < 1.0 for line in rx)
+        assert all(-80 < line["power_dbm"] < -65 for line in rx)
+    sent, delivered = message_counts(result.stdout)["Beacon"]
+    assert delivered == len(rx)
+
+
+def test_trace_counts_agree_with_the_summary(tmp_path: Path, radio_file: Path) -> None:
+    positions = [10.0 + 12.0 * k for k in range(40)]  # 40 vehicles over 470 m
+    cfg = highway(tmp_path / "road", positions, 10.0, building=False)
+    messages = tmp_path / "messages.jsonl"
+    summary = tmp_path / "summary.json"
+    result = beacon_run(cfg, tmp_path, "--messages", str(messages), "--summary", str(summary), end=2.0)
+    lines = read_messages(messages)
+    times = [line["t"] for line in lines]
+    assert times == sorted(times)
+    counts = {event: sum(line["event"] == event for line in lines) for event in ("tx", "rx", "lost")}
+    queue_drops = sum(line.get("reason") == "queue" for line in lines)
+    data = json.loads(summary.read_text())
+    beacon = data["messages"]["Beacon"]
+    # Every beacon sent is transmitted, dropped from a full queue, or still waiting at the end.
+    assert beacon["sent"] - len(positions) <= counts["tx"] + queue_drops <= beacon["sent"]
+    assert beacon["delivered"] == counts["rx"]
+    assert sum(b["received"] for b in beacon["delivery_ratio"]) == counts["rx"]
+    assert beacon["mean_receivers"] == pytest.approx(counts["rx"] / beacon["sent"])
+    assert 0 < data["channel_busy_ratio"]["mean"] <= data["channel_busy_ratio"]["max"] <= 1
+    # Near and far: the delivery ratio falls with distance.
+    ratios = {b["from_m"]: b["ratio"] for b in beacon["delivery_ratio"]}
+    assert ratios[0] > 0.9 > ratios[400]
+    assert re.search(r"^delivery ratio Beacon by metres: 0: 0\.\d+", result.stdout, re.M)
+    assert re.search(r"^channel busy ratio: mean 0\.\d+, max [01]\.\d+", result.stdout, re.M)
+
+
+def test_traces_are_identical_with_one_thread_and_two(tmp_path: Path, radio_file: Path) -> None:
+    # Dense enough that a frame's links are split over the pool (more than 256 within the cutoff).
+    cfg = highway(tmp_path / "road", [5.0 + 5.0 * k for k in range(490)], 5.0, building=False, length=2500.0, lanes=4)
+    digests = []
+    for threads in ("1", "2"):
+        messages = tmp_path / f"messages{threads}.jsonl"
+        beacon_run(
+            cfg, tmp_path, "--messages", str(messages), "--threads", threads, "--param", "radio_trace_range=30", end=0.4
+        )
+        digests.append(hashlib.sha256(messages.read_bytes()).hexdigest())
+        assert messages.stat().st_size > 1_000_000
+    assert digests[0] == digests[1]
+
+
+def test_bad_radio_files_are_one_line_errors(tmp_path: Path) -> None:
+    cfg = highway(tmp_path / "road", [50.0], 1.0, building=False)
+    services = str(cfg.parent / "h.services.xml")
+    cases = {
+        "[phy]\npower = 23\n": "[phy] power: is not a radio setting",
+        "[phy]\nrate_mbps = 7\n": "rate_mbps must be one of",
+        '[propagation]\npath_loss = "moon"\n': "path_loss: must be free-space",
+        "[phy\n": "radio.toml:1",
+    }
+    for text, needle in cases.items():
+        (tmp_path / "radio.toml").write_text(text)
+        result = run(cfg, end=1.0, extra=["--services", services, "--radio", str(tmp_path / "radio.toml")])
+        assert_bad_input(result, needle)
+    (tmp_path / "radio.toml").write_text("")
+    result = run(
+        cfg,
+        end=1.0,
+        extra=["--services", services, "--radio", str(tmp_path / "radio.toml"), "--param", "radio_power_dbm=hot"],
+    )
+    assert_bad_input(result, "radio_power_dbm", "must be a number")
+    assert_bad_input(run(cfg, end=1.0, extra=["--radio", str(tmp_path / "radio.toml")]), "--radio", "--services")
+
+
+def test_the_disc_model_traces_range_and_fade_losses(tmp_path: Path) -> None:
+    scenario = STORIES / "highway-police"
+    messages = tmp_path / "messages.jsonl"
+    result = run(
+        scenario / "highway.sumocfg",
+        story=scenario / "story.py",
+        end=40.0,
+        extra=[
+            "--services",
+            str(scenario / "services.xml"),
+            "--v2x-fade-start",
+            "300",
+            "--messages",
+            str(messages),
+            "--messages-range",
+            "800",
+        ],
+        timeout=300,
+    )
+    assert_no_crash(result)
+    assert result.returncode == 0, result.stderr
+    lines = read_messages(messages)
+    times = [line["t"] for line in lines]
+    assert times == sorted(times)
+    rx = [line for line in lines if line["event"] == "rx"]
+    lost = [line for line in lines if line["event"] == "lost"]
+    assert {line["reason"] for line in lost} == {"range", "fade"}
+    assert all(line["distance"] > 500 for line in lost if line["reason"] == "range")
+    assert all(300 < line["distance"] <= 500 for line in lost if line["reason"] == "fade")
+    assert all(line["delay"] == pytest.approx(0.001) and line["distance"] <= 500 for line in rx)
+    sent, delivered = message_counts(result.stdout)["ClearLane"]
+    assert delivered == len(rx)
+    assert sent == sum(line["event"] == "tx" for line in lines)
