@@ -12,9 +12,9 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from sbsim.runner import RunResult, read_messages, run
 from sbsim.sumo import sumo_binary
 from sbsim_helpers import STORIES, assert_bad_input, assert_no_crash, message_counts
-from sbsim.runner import RunResult, read_messages, run
 
 
 def highway(
