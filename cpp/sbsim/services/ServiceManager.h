@@ -7,6 +7,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/radio/Medium.h"
@@ -35,6 +36,10 @@ public:
     void useRegistry(traffic::VehicleRegistry& registry);
     traffic::VehicleRegistry& registry() const { return *registry_; }
     void setMedium(radio::Medium& medium) { medium_ = &medium; }
+    /// The stations' facilities (LDM, DENM memory), shared with the storyboard's V2X conditions
+    /// (default: a registry of the manager's own). A station's entry goes when it leaves.
+    void useStations(std::shared_ptr<facilities::StationRegistry> stations) { stations_ = std::move(stations); }
+    facilities::StationRegistry& stations() const { return *stations_; }
     /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
     /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
     void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
@@ -69,6 +74,7 @@ private:
     std::size_t servicesCreated_ = 0;
     std::unique_ptr<traffic::VehicleRegistry> ownRegistry_;  // unless given one (useRegistry)
     traffic::VehicleRegistry* registry_;
+    std::shared_ptr<facilities::StationRegistry> stations_ = std::make_shared<facilities::StationRegistry>();
 };
 
 }  // namespace sbsim::services

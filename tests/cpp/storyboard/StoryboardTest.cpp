@@ -35,6 +35,7 @@ namespace sbsim::storyboard {
 namespace {
 
 using kernel::SimTime;
+using traffic::StoryboardSignal;
 using traffic::VehicleSnapshot;
 
 /// Records every command per vehicle; max speed starts at 50.
