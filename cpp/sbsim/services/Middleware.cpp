@@ -37,6 +37,11 @@ Eigen::Vector2d Middleware::position() const {
     return snapshot.positions().col(*index);
 }
 
+void Middleware::initialize() {
+    departedAt_ = simTime();
+    (void)manager_.stations().of(vehicleId_);  // the station's facilities, empty, from its departure on
+}
+
 facilities::StationFacilities& Middleware::facilities() const { return manager_.stations().of(vehicleId_); }
 
 void Middleware::trigger() {

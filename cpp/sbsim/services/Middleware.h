@@ -47,7 +47,7 @@ public:
     void trigger();
     void signal(const traffic::StoryboardSignal& signal);
 
-    void initialize() override { departedAt_ = simTime(); }
+    void initialize() override;
     void handleMessage(kernel::Message& msg) override;
 
 private:

@@ -17,22 +17,17 @@ void StoryboardEvent::initialize() {
 
 void StoryboardEvent::handleSignal(const traffic::StoryboardSignal& signal) {
     if (endSignal_ && signal.cause == *endSignal_) {
-        endPending_ = true;
+        // Ended at once (not at the next trigger), so no repetition goes out after the story ended.
+        pending_ = false;
+        if (event_) service().terminate(*event_);
+        event_.reset();
     } else if (signal.cause == signal_ && !signal.onExit) {
         pending_ = true;
-        endPending_ = false;
     }
 }
 
 void StoryboardEvent::check() {
-    // Handled at the trigger, as Artery's use cases do, so a signal and its end in one step cancel.
-    if (endPending_) {
-        endPending_ = false;
-        pending_ = false;
-        if (event_) service().terminate(*event_);
-        event_.reset();
-        return;
-    }
+    // The event starts at the trigger, as Artery's use cases do.
     if (!pending_) return;
     pending_ = false;
     if (event_ && service().repeating(*event_)) return;  // still going

@@ -28,7 +28,6 @@ private:
     std::string signal_;
     std::optional<std::string> endSignal_;
     bool pending_ = false;
-    bool endPending_ = false;
     std::optional<facilities::ActionId> event_;
 };
 
