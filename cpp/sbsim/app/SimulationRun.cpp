@@ -12,6 +12,7 @@
 #include "sbsim/app/AfterEachStep.h"
 #include "sbsim/app/BadInput.h"
 #include "sbsim/app/BundledScenario.h"
+#include "sbsim/app/DenmTrace.h"
 #include "sbsim/app/GuiWatch.h"
 #include "sbsim/app/Interruption.h"
 #include "sbsim/app/OutputFile.h"
@@ -21,6 +22,7 @@
 #include "sbsim/app/Summary.h"
 #include "sbsim/app/SumoOptions.h"
 #include "sbsim/app/SumoStateFile.h"
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/DiscMedium.h"
 #include "sbsim/services/ServiceManager.h"
@@ -29,6 +31,7 @@
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/StoryError.h"
 #include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/conditions/V2xSource.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 #include "sbsim/storyboard/python/StoryScript.h"
 #include "sbsim/traffic/Penetration.h"
@@ -73,6 +76,8 @@ int runSimulation(const CommandLine& cl) {
     // it cannot write fails at once.
     std::optional<OutputFile> events;
     if (cl.events) events.emplace("--events", *cl.events, files);
+    std::optional<OutputFile> denmFile;
+    if (cl.denmTrace) denmFile.emplace("--denm-trace", *cl.denmTrace, files);
     std::optional<OutputFile> summary;
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
     std::optional<OutputFile> sumoLog;
@@ -131,6 +136,15 @@ int runSimulation(const CommandLine& cl) {
 
     std::optional<storyboard::EventLog> log;
     if (events) log.emplace(events->stream());
+    // What every station heard (LDM, DENM memory): written by the services, read by the stories'
+    // V2X conditions, which take it when the script creates them.
+    const auto stations = std::make_shared<facilities::StationRegistry>();
+    std::optional<DenmTrace> denmTrace;
+    if (denmFile) {
+        denmTrace.emplace(denmFile->stream());
+        stations->setPhaseSink(&*denmTrace);
+    }
+    storyboard::V2xSource::use(stations);
     storyboard::Storyboard* board = nullptr;
     std::unique_ptr<storyboard::StoryScript> script;
     if (story) {
@@ -168,6 +182,7 @@ int runSimulation(const CommandLine& cl) {
             return serviceManager->middlewareOf(id);
         });
         serviceManager->useRegistry(vehicles);
+        serviceManager->useStations(stations);
         serviceManager->setMedium(*medium);
         serviceManager->setPenetration(penetration);
         serviceManager->attach(sumo);
@@ -200,6 +215,7 @@ int runSimulation(const CommandLine& cl) {
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
+    if (denmFile && !Interruption::requested()) denmFile->commit();
 
     const RunFigures figures{sumocfg,
                              sim,

@@ -13,9 +13,10 @@ std::optional<DenmPhase> DenmMemory::received(const DenmContent& denm, kernel::S
     }
     if (denm.expiry() < now) return std::nullopt;
     if (it == entries_.end()) {
-        entries_.emplace(denm.action, Entry{denm, now, now});
+        entries_.emplace(denm.action, Entry{denm, now, now, now});
         return DenmPhase::New;
     }
+    if (!(denm.referenceTime < it->second.denm.referenceTime)) it->second.lastHeardAt = now;
     if (!(it->second.denm.referenceTime < denm.referenceTime)) return std::nullopt;
     it->second.denm = denm;
     it->second.receivedAt = now;

@@ -23,6 +23,7 @@ public:
         DenmContent denm;
         kernel::SimTime receivedAt;    ///< of the version kept
         kernel::SimTime firstHeardAt;  ///< of the event's first DENM here
+        kernel::SimTime lastHeardAt;   ///< of its latest DENM here, a repetition too
     };
 
     /// Takes in a DENM received at `now`; returns what happened to its event (New, Update,
