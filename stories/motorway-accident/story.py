@@ -11,8 +11,16 @@ the event, the receivers drop it and the warned vehicles speed up again.
 from __future__ import annotations
 
 import storyboard
-from storyboard import AndCondition, CarSetCondition, DenmCondition, SignalEffect, SpeedEffect, StopEffect, Story
-from storyboard import TimeCondition
+from storyboard import (
+    AndCondition,
+    CarSetCondition,
+    DenmCondition,
+    SignalEffect,
+    SpeedEffect,
+    StopEffect,
+    Story,
+    TimeCondition,
+)
 
 ACCIDENT_CAUSE = 2  # EN 302 637-3 cause code "accident"
 
