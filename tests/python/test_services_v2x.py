@@ -115,3 +115,36 @@ def test_traction_loss_repeats_every_second_and_stays_in_its_area(tmp_path: Path
                 # The area stays where the event was detected, whatever the sender does since.
                 assert math.dist(here, centre) <= 1000 + 20
     assert far > 5, "some vehicles were in radio range but outside the area"
+
+
+def police_services(tmp_path: Path, police_type: str) -> Path:
+    """A services file in the form of Artery's highway-police ones (with their <listener> ports)."""
+    path = tmp_path / f"{police_type}.xml"
+    path.write_text(
+        f'<services><service type="{police_type}"><listener port="8001"/>'
+        '<filters><name pattern="police0"/></filters></service>'
+        '<service type="ClearLaneService"><listener port="8001"/>'
+        '<filters><name pattern="police0" match="inverse"/></filters></service></services>'
+    )
+    return path
+
+
+def test_artery_police_services_keep_their_meanings(tmp_path: Path) -> None:
+    highway = STORIES / "highway-police"
+    counts = {}
+    for police_type in ("PoliceService", "PoliceServiceStoryboard"):
+        for story in (None, highway / "story.py"):
+            result = run(
+                highway / "highway.sumocfg",
+                story=story,
+                end=20,
+                extra=["--services", str(police_services(tmp_path, police_type))],
+                timeout=120,
+            )
+            assert result.returncode == 0, result.stderr
+            counts[police_type, story is not None] = message_counts(result.stdout).get("ClearLane", (0, 0))[0]
+    # PoliceService broadcasts from its departure (6 s) on, every 0.1 s, story or not.
+    assert counts["PoliceService", False] == counts["PoliceService", True] >= 120
+    # PoliceServiceStoryboard waits for the story's "siren on" at 10 s.
+    assert counts["PoliceServiceStoryboard", False] == 0
+    assert 90 <= counts["PoliceServiceStoryboard", True] < counts["PoliceService", True]
