@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -199,6 +200,132 @@ TEST_F(DenTest, CamsFillTheLocalDynamicMap) {
     EXPECT_EQ(entry->cam.position, Eigen::Vector2d(0, 0));
     EXPECT_EQ(h.manager.stations().find("b")->ldm.size(), 1u);
     EXPECT_EQ(h.manager.stations().find("far")->ldm.size(), 0u);
+}
+
+/// A vehicle with its dynamics.
+VehicleSnapshot::Vehicle moving(std::string id, double x, double speed, double acceleration = 0) {
+    auto v = vehicle(std::move(id), x, 0);
+    v.speed = speed;
+    v.acceleration = acceleration;
+    v.angle = 90;
+    return v;
+}
+
+std::string useCases(const std::string& body) { return "<usecases>" + body + "</usecases>"; }
+
+TEST_F(DenTest, EmergencyBrakeLightOnFiveHardBrakingSamplesAbove20Kmh) {
+    Harness h(loadFiles({{"services.xml", std::string(kServices)},
+                         {"den-use-cases.xml", useCases(R"(<usecase type="EmergencyBrakeLight"/>)")}}));
+    h.manager.stations().setPhaseSink(&phases);
+    // "hard" brakes at −8 m/s² from 1.0 s; "soft" at −6.9; "slow" at −8 but drives 5 m/s.
+    for (int k = 0; k <= 20; ++k) {
+        const double t = k / 10.0;
+        const bool braking = t >= 1.0 - 1e-9;
+        h.step(secs(t), {moving("hard", 0, 25, braking ? -8 : 0), moving("soft", 50, 25, braking ? -6.9 : 0),
+                         moving("slow", 100, 5, braking ? -8 : 0)});
+    }
+    h.sim.run(secs(2.05));
+    // Samples at the triggers 1.0 … 1.4 (a step comes before the trigger due with it): the buffer
+    // is full at 1.4; blocked for 100 ms after each, so again at 1.6, 1.8, 2.0.
+    EXPECT_EQ(phases.of("hard"),
+              (std::vector<std::string>{"new@1.4 hard:1", "new@1.6 hard:2", "new@1.8 hard:3", "new@2 hard:4"}));
+    ASSERT_EQ(phases.of("soft").size(), 4u);
+    EXPECT_EQ(phases.of("soft")[0], "new@1.401 hard:1");
+    EXPECT_EQ(den(h, "soft").denmsSent(), 0u);
+    EXPECT_EQ(den(h, "slow").denmsSent(), 0u);
+    const auto& d = its.denms["soft"].front();
+    EXPECT_EQ(d.cause, 99);
+    EXPECT_EQ(d.subcause, 1);
+    EXPECT_EQ(d.validity, secs(2));
+    EXPECT_EQ(d.relevanceDistance, 500.0);
+    EXPECT_EQ(d.destination.radius, 500.0);
+    EXPECT_EQ(d.trafficClass, 0);
+    EXPECT_EQ(its.denms["soft"].size(), 4u) << "no repetition";
+}
+
+TEST_F(DenTest, ImpactReductionRequestGetsResponses) {
+    Harness h(loadFiles({{"services.xml", std::string(kServices)},
+                         {"den-use-cases.xml", useCases(R"(<usecase type="ImpactReductionContainerExchange"/>)")}}));
+    h.manager.stations().setPhaseSink(&phases);
+    h.step(secs(0), {vehicle("a", 0, 0), vehicle("b", 50, 0), vehicle("far", 160, 0)});
+    signal(h, 1.05, "a", "irc");
+    h.sim.run(secs(3));
+    // The request at 1.1, repeated at 1.2 and 1.3 (0.1 s for 0.3 s).
+    EXPECT_EQ(den(h, "a").denmsSent(), 3u);
+    ASSERT_FALSE(its.denms["b"].empty());
+    const auto& request = its.denms["b"].front();
+    EXPECT_EQ(request.cause, 97);
+    EXPECT_EQ(request.impactReduction, facilities::ImpactReduction::Request);
+    EXPECT_EQ(request.destination.radius, 100.0);
+    // b answers each copy of the request it hears (as Artery's use case does), each answer
+    // repeated 3 times; "far" is outside the 100 m area and neither hears nor answers.
+    EXPECT_EQ(den(h, "b").denmsSent(), 9u);
+    EXPECT_EQ(den(h, "far").denmsSent(), 0u);
+    EXPECT_EQ(its.denms.count("far"), 0u);
+    ASSERT_FALSE(its.denms["a"].empty());
+    EXPECT_EQ(its.denms["a"].front().impactReduction, facilities::ImpactReduction::Response);
+}
+
+constexpr const char* kEndOfQueueCases =
+    R"(<usecase type="TrafficJamEndOfQueue"><filters><name pattern="b"/></filters></usecase>
+       <usecase type="StoryboardEvent" signal="queue" cause="27" validity="60" duration="2">
+           <filters><name pattern="head"/></filters></usecase>)";
+
+// b drives 25 m/s (90 km/h) until 2 s, then slows by 4.5 m/s² to 7 m/s (25 km/h, at 6 s); "head"
+// stands 300 m ahead and, in the second test, announces a queue (cause 27) at 0.6 s.
+
+TEST_F(DenTest, EndOfQueueNeedsAQueueHeardOf) {
+    Harness h(loadFiles({{"services.xml", std::string(kServices)}, {"den-use-cases.xml", useCases(kEndOfQueueCases)}}));
+    h.manager.stations().setPhaseSink(&phases);
+    for (int k = 0; k <= 100; ++k) {
+        const double t = k / 10.0;
+        h.step(secs(t), {moving("head", 300, 0), moving("b", 0, t < 2 ? 25 : std::max(7.0, 25 - 4.5 * (t - 2)))});
+    }
+    h.sim.run(secs(10));
+    EXPECT_TRUE(phases.of("b").empty()) << "braking alone is not enough";
+}
+
+TEST_F(DenTest, EndOfQueueAfterHardBrakingToAQueueHeardOf) {
+    Harness h(loadFiles({{"services.xml", std::string(kServices)}, {"den-use-cases.xml", useCases(kEndOfQueueCases)}}));
+    h.manager.stations().setPhaseSink(&phases);
+    for (int k = 0; k <= 100; ++k) {
+        const double t = k / 10.0;
+        h.step(secs(t), {moving("head", 300, 0), moving("b", 0, t < 2 ? 25 : std::max(7.0, 25 - 4.5 * (t - 2)))});
+    }
+    signal(h, 0.55, "head", "queue");
+    h.sim.run(secs(10));
+    // b is at most 30 km/h (8.33 m/s) from 5.8 s on (7.9 m/s; 8.35 at 5.7); the newest earlier
+    // sample of at least 80 km/h (22.2 m/s) is at 2.6 s (22.3 m/s): −4.5 m/s², below −3.5.
+    const auto b = phases.of("b");
+    ASSERT_FALSE(b.empty());
+    EXPECT_EQ(b.back(), "new@5.8 b:1");
+    const auto& sent = its.denms["head"];
+    ASSERT_FALSE(sent.empty());
+    EXPECT_EQ(sent.back().cause, 27);
+    EXPECT_EQ(sent.back().action.station, "b");
+    EXPECT_EQ(sent.back().trafficDirection, facilities::TrafficDirection::Upstream);
+    EXPECT_EQ(sent.back().validity, secs(20));
+    EXPECT_EQ(sent.back().destination.radius, 1000.0);
+    // Repeated every 0.5 s for 20 s: 5.8, 6.3 … 9.8 by 10 s.
+    EXPECT_EQ(den(h, "b").denmsSent(), 9u);
+}
+
+TEST_F(DenTest, TrafficJamAheadOnALowAverageSpeed) {
+    Harness h(loadFiles({{"services.xml", std::string(kServices)},
+                         {"den-use-cases.xml", useCases(R"(<usecase type="TrafficJamAhead"/>)")}}));
+    h.manager.stations().setPhaseSink(&phases);
+    h.step(secs(0), {moving("crawl", 0, 5), moving("fast", 100, 30), moving("stand", 200, 0)});
+    h.sim.run(secs(15));
+    // Sampled every second from 0.1 s; 10 s of samples at 10.1 s: average 5 m/s ≤ 30 km/h.
+    EXPECT_EQ(phases.of("crawl").front(), "new@10.1 crawl:1");
+    EXPECT_EQ(den(h, "fast").denmsSent(), 0u);
+    // Standing (average 0) counts only with a jam heard of: crawl's DENM (cause 1) is one.
+    EXPECT_EQ(phases.of("stand").size(), 2u);  // its memory's "new" of crawl:1, then its own
+    EXPECT_EQ(phases.of("stand").back(), "new@10.2 stand:1");
+    const auto& d = its.denms["fast"].front();
+    EXPECT_EQ(d.cause, 1);
+    EXPECT_EQ(d.validity, secs(60));
+    EXPECT_EQ(d.trafficDirection, facilities::TrafficDirection::Upstream);
 }
 
 }  // namespace
