@@ -80,7 +80,7 @@ protected:
     StoryboardTest() : log(out), board(sim.emplaceModule<Storyboard>(&log)) {
         board.setControllerFactory(
             [this](const std::string& id) { return std::make_unique<RecordingVehicle>(id, commands); });
-        sim.subscribe(Storyboard::signalEmitted, probe);
+        sim.subscribe(StoryboardSignal::id, probe);
     }
 
     void step(double t, std::vector<VehicleSnapshot::Vehicle> vehicles, std::vector<std::string> left = {}) {
