@@ -176,6 +176,20 @@ class AllCondition(Condition):
 class AnyCondition(Condition):
     def __init__(self, *conditions: Condition) -> None: ...
 
+class DenmCondition(Condition):
+    """A vehicle whose DENM memory holds a live event of `cause` (any if None) heard at most
+    `max_age` ago; yields the events' originating vehicles."""
+
+    def __init__(self, cause: int | None = None, max_age: Seconds | None = None) -> None: ...
+    def describe(self) -> str: ...
+
+class CamCondition(Condition):
+    """A vehicle whose local dynamic map knows a station (from its CAMs) within `distance` m,
+    its CAM at most `max_age` old; yields those stations."""
+
+    def __init__(self, distance: float | None = None, max_age: Seconds | None = None) -> None: ...
+    def describe(self) -> str: ...
+
 class HoldCondition(Condition):
     def __init__(self, condition: Condition, seconds: Seconds) -> None: ...
 

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sbsim/facilities/ItsMessage.h"
 #include "sbsim/radio/Delivery.h"
 #include "sbsim/services/ServiceManager.h"
 
@@ -28,17 +29,44 @@ ServiceVehicle& Middleware::vehicleOf(const Service& service) {
     throw std::logic_error("the service is not hosted here");
 }
 
+Eigen::Vector2d Middleware::position() const {
+    if (fixedPosition_) return *fixedPosition_;
+    const auto& snapshot = manager_.snapshot();
+    const auto index = snapshot.indexOf(vehicleId_);
+    if (!index) return Eigen::Vector2d::Zero();
+    return snapshot.positions().col(*index);
+}
+
+void Middleware::initialize() {
+    departedAt_ = simTime();
+    (void)manager_.stations().of(vehicleId_);  // the station's facilities, empty, from its departure on
+}
+
+facilities::StationFacilities& Middleware::facilities() const { return manager_.stations().of(vehicleId_); }
+
 void Middleware::trigger() {
     // A vehicle departing in the step at a grid time has just been initialized: its first
     // trigger is the next one.
     if (simTime() <= departedAt_) return;
+    manager_.stations().dropExpired(vehicleId_, simTime());
     for (Service* s : services_) s->trigger();
 }
 
 void Middleware::handleMessage(kernel::Message& msg) {
     if (auto* delivery = dynamic_cast<radio::Delivery*>(&msg)) {
-        manager_.medium().delivered(*delivery->message);
-        for (Service* s : services_) s->indicate(*delivery->message);
+        const radio::V2xMessage& message = *delivery->message;
+        manager_.medium().delivered(message);
+        // A cross-cast to the facilities' interface, not a switch on concrete types: the message
+        // itself says where it goes and what is kept of it.
+        const auto* its = dynamic_cast<const facilities::ItsMessage*>(&message);
+        if (its != nullptr) {
+            if (!its->reaches(position())) return;
+            its->store(manager_.stations(), vehicleId_, simTime());
+        }
+        for (Service* s : services_) s->indicate(message);
+        if (its != nullptr) {
+            for (Service* s : services_) its->dispatch(*s);
+        }
     } else {
         kernel::Module::handleMessage(msg);
     }

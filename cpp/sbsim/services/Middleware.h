@@ -4,6 +4,10 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+#include <optional>
+
+#include "sbsim/facilities/StationFacilities.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/services/Service.h"
@@ -16,7 +20,10 @@ class ServiceManager;
 
 /// One vehicle's middleware: created when the vehicle departs, it hosts the vehicle's services
 /// (which the simulation owns, as modules) and hands them triggers, storyboard signals and incoming
-/// V2X messages. Removed, services first, when the vehicle arrives.
+/// V2X messages. Removed, services first, when the vehicle arrives. It is the station's
+/// network and facilities layers too: a geo-broadcast message whose destination area does not
+/// hold the station goes no further, and CAMs and DENMs go into the station's LDM and DENM memory
+/// before its services see them; expired entries are dropped before every trigger.
 class SBSIM_API Middleware : public kernel::Module {
 public:
     Middleware(ServiceManager& manager, std::string vehicleId);
@@ -26,6 +33,13 @@ public:
     ServiceVehicle& vehicleOf(const Service& service);
     ServiceManager& manager() const { return manager_; }
     const std::vector<Service*>& services() const { return services_; }
+    /// Where the station is: a roadside unit's fixed position, else its vehicle's in the current
+    /// snapshot (the origin if it is not in it).
+    Eigen::Vector2d position() const;
+    /// Makes this a stationary station (a roadside unit) at `position`.
+    void setFixedPosition(const Eigen::Vector2d& position) { fixedPosition_ = position; }
+    /// This station's facilities (in the manager's station registry).
+    facilities::StationFacilities& facilities() const;
 
     /// Hosts `service` (already owned by the simulation) with its configuration.
     void host(Service& service, const ServiceSpec& spec);
@@ -33,7 +47,7 @@ public:
     void trigger();
     void signal(const traffic::StoryboardSignal& signal);
 
-    void initialize() override { departedAt_ = simTime(); }
+    void initialize() override;
     void handleMessage(kernel::Message& msg) override;
 
 private:
@@ -43,6 +57,7 @@ private:
     std::vector<Service*> services_;
     std::vector<std::unique_ptr<ServiceVehicle>> vehicles_;  // per service, as services_
     kernel::SimTime departedAt_;
+    std::optional<Eigen::Vector2d> fixedPosition_;
 };
 
 }  // namespace sbsim::services

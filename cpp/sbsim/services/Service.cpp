@@ -21,6 +21,11 @@ const traffic::VehicleSnapshot& Service::snapshot() const { return hostOf(middle
 
 std::optional<traffic::VehicleSnapshot::Index> Service::selfIndex() const { return snapshot().indexOf(vehicleId()); }
 
+Eigen::Vector2d Service::position() const { return hostOf(middleware_).position(); }
+const facilities::StationFacilities& Service::facilities() const { return hostOf(middleware_).facilities(); }
+facilities::StationRegistry& Service::stations() const { return hostOf(middleware_).manager().stations(); }
+radio::Medium& Service::medium() const { return hostOf(middleware_).manager().medium(); }
+
 void Service::send(std::unique_ptr<radio::V2xMessage> message) {
     hostOf(middleware_).manager().medium().broadcast(vehicleId(), std::move(message));
 }
@@ -29,6 +34,11 @@ void Service::listenToAllSignals() { hostOf(middleware_).manager().listenToAllSi
 
 std::optional<kernel::StudyParameters::Value> Service::studyParameter(const std::string& name) const {
     return simulation().parameters().get(name);
+}
+
+const ServiceSpec& Service::spec() const {
+    if (spec_ == nullptr) throw std::logic_error("service is not hosted by a middleware yet");
+    return *spec_;
 }
 
 std::optional<std::string> Service::parameter(const std::string& name) const {

@@ -4,9 +4,15 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/Core>
+
+#include "sbsim/facilities/ItsMessageHandler.h"
+#include "sbsim/facilities/StationFacilities.h"
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/StudyParameters.h"
+#include "sbsim/radio/Medium.h"
 #include "sbsim/radio/V2xMessage.h"
 #include "sbsim/services/ServiceVehicle.h"
 #include "sbsim/traffic/StoryboardSignal.h"
@@ -26,7 +32,10 @@ struct ServiceSpec;
 ///         void trigger() override { send(std::make_unique<BeaconMessage>()); }
 ///     };
 ///     SBSIM_REGISTER_SERVICE(Beacon);
-class SBSIM_API Service : public kernel::Module {
+///
+/// CAMs and DENMs arrive twice: at indicate() like any message, and at indicateCam() /
+/// indicateDenm() (facilities::ItsMessageHandler) after the station's facilities took them in.
+class SBSIM_API Service : public kernel::Module, public facilities::ItsMessageHandler {
 public:
     Service() : kernel::Module("service") {}
 
@@ -38,6 +47,10 @@ public:
     virtual void indicate(const radio::V2xMessage& /*message*/) {}
 
     const std::string& vehicleId() const;
+    /// This service's entry of the services file.
+    const ServiceSpec& spec() const;
+    /// The station's id: its vehicle's, or the roadside unit's.
+    const std::string& stationId() const { return vehicleId(); }
 
 protected:
     /// Commands and live queries for this service's vehicle; a max speed set here composes with
@@ -47,6 +60,17 @@ protected:
     const traffic::VehicleSnapshot& snapshot() const;
     /// This vehicle's index in snapshot(), if it is running.
     std::optional<traffic::VehicleSnapshot::Index> selfIndex() const;
+
+    /// Where the station is now (a vehicle: the current step's front bumper), SUMO network frame.
+    Eigen::Vector2d position() const;
+    /// What this station heard: its local dynamic map (CAMs) and DENM memory.
+    const facilities::StationFacilities& facilities() const;
+    const facilities::LocalDynamicMap& localDynamicMap() const { return facilities().ldm; }
+    const facilities::DenmMemory& denmMemory() const { return facilities().denms; }
+    /// Every station's facilities, and where DENM phase events are reported.
+    facilities::StationRegistry& stations() const;
+    /// The radio medium the station sends on (its DCC interval, if it models DCC).
+    radio::Medium& medium() const;
 
     /// Broadcasts `message` to the services of every other vehicle in range.
     void send(std::unique_ptr<radio::V2xMessage> message);

@@ -111,6 +111,7 @@ void ServiceManager::arrive(const std::string& id) {
         simulation().removeModule(*s);  // finish(), then its timers are dropped
     }
     simulation().removeModule(middleware);
+    stations_->remove(id);
     registry_->drop(id);
 }
 

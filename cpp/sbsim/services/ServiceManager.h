@@ -7,6 +7,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/radio/Medium.h"
@@ -38,6 +39,10 @@ public:
     static traffic::SnapshotColumns columns() { return traffic::SnapshotColumns::all(); }
     traffic::VehicleRegistry& registry() const { return *registry_; }
     void setMedium(radio::Medium& medium) { medium_ = &medium; }
+    /// The stations' facilities (LDM, DENM memory), shared with the storyboard's V2X conditions
+    /// (default: a registry of the manager's own). A station's entry goes when it leaves.
+    void useStations(std::shared_ptr<facilities::StationRegistry> stations) { stations_ = std::move(stations); }
+    facilities::StationRegistry& stations() const { return *stations_; }
     /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
     /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
     void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
@@ -71,6 +76,7 @@ private:
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;
     traffic::VehicleRegistry* registry_;
+    std::shared_ptr<facilities::StationRegistry> stations_ = std::make_shared<facilities::StationRegistry>();
 };
 
 }  // namespace sbsim::services

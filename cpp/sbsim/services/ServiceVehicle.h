@@ -55,6 +55,13 @@ public:
     int laneCount() const override { return controller().laneCount(); }
     std::vector<std::string> route() const override { return controller().route(); }
     std::vector<std::string> via() const override { return controller().via(); }
+    traffic::Position position() const override { return controller().position(); }
+    std::optional<double> drivingDistance(const std::string& edge, double position) const override {
+        return controller().drivingDistance(edge, position);
+    }
+    std::optional<double> drivingDistanceTo(double x, double y) const override {
+        return controller().drivingDistanceTo(x, y);
+    }
 
 private:
     traffic::VehicleController& controller() const { return *vehicle_->controller; }

@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
+
+#include "sbsim/services/den/UseCaseFactory.h"
 
 namespace sbsim::services {
 
@@ -259,16 +262,35 @@ void parseFilters(const XMLElement& element, const std::string& source, ServiceS
     }
 }
 
-ServiceSpec parseService(const XMLElement& element, const std::string& source) {
+// Artery's module names ("artery.application.CaService", "artery.application.den.TractionLoss")
+// name sbsim's services and use cases of the same short name.
+std::string shortTypeName(std::string_view type) {
+    for (const std::string_view prefix : {"artery.application.den.", "artery.application."}) {
+        if (type.substr(0, prefix.size()) == prefix) return std::string(type.substr(prefix.size()));
+    }
+    return std::string(type);
+}
+
+// Artery-only elements met while reading one file, for the one line that says they were ignored.
+struct Ignored {
+    std::vector<std::string> names;
+    void add(std::string_view name) {
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.emplace_back(name);
+    }
+};
+
+ServiceSpec parseService(const XMLElement& element, const std::string& source, Ignored& ignored,
+                         std::string_view elementName = "service") {
     ServiceSpec spec;
     spec.source = source;
     spec.line = element.GetLineNum();
     const auto attributes = attributesOf(element);
     const auto type =
         std::find_if(attributes.begin(), attributes.end(), [](const auto& a) { return a.first == "type"; });
-    if (type == attributes.end()) fail(source, spec.line, "<service> has no 'type' attribute");
-    if (trimmed(type->second).empty()) fail(source, spec.line, "<service> has an empty 'type' attribute");
-    spec.type = type->second;
+    if (type == attributes.end()) fail(source, spec.line, tag(elementName) + " has no 'type' attribute");
+    if (trimmed(type->second).empty()) fail(source, spec.line, tag(elementName) + " has an empty 'type' attribute");
+    spec.writtenType = type->second;
+    spec.type = shortTypeName(type->second);
     for (const auto& [key, value] : attributes) {
         if (key != "type") spec.parameters.emplace(key, value);
     }
@@ -276,19 +298,24 @@ ServiceSpec parseService(const XMLElement& element, const std::string& source) {
     bool hasFilters = false;
     for (const XMLElement* child = element.FirstChildElement(); child; child = child->NextSiblingElement()) {
         const std::string_view name = child->Name();
-        if (name == "listener") continue;  // Artery's port binding; services here talk in-process
+        if (name == "listener") {  // Artery's port binding; services here talk in-process
+            ignored.add(name);
+            continue;
+        }
         if (name != "filters") {
             fail(source, child->GetLineNum(),
-                 "unexpected element " + tag(name) + " in <service> (expected <filters> or <listener>)");
+                 "unexpected element " + tag(name) + " in " + tag(elementName) + " (expected <filters> or <listener>)");
         }
-        if (hasFilters) fail(source, child->GetLineNum(), "a <service> may have only one <filters>");
+        if (hasFilters) fail(source, child->GetLineNum(), "a " + tag(elementName) + " may have only one <filters>");
         hasFilters = true;
         parseFilters(*child, source, spec);
     }
     return spec;
 }
 
-std::vector<ServiceSpec> readServices(std::string_view text, const std::string& source) {
+// A file's elements under its root `rootName`, each a `childName` read like a <service>.
+std::vector<ServiceSpec> readSpecs(std::string_view text, const std::string& source, std::string_view rootName,
+                                   std::string_view childName) {
     // tinyxml2 reads a C string: a NUL byte would silently end the file there.
     if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
         fail(source, lineAt(text, nul), "NUL character in the file");
@@ -296,18 +323,70 @@ std::vector<ServiceSpec> readServices(std::string_view text, const std::string& 
     XMLDocument doc;
     if (parseXml(doc, text) != tinyxml2::XML_SUCCESS) failXml(doc, text, source);
     const XMLElement& root = rootOf(doc, text, source);
-    if (std::string_view(root.Name()) != "services") {
-        fail(source, root.GetLineNum(), "the root element must be <services>, found " + tag(root));
+    if (std::string_view(root.Name()) != rootName) {
+        fail(source, root.GetLineNum(), "the root element must be " + tag(rootName) + ", found " + tag(root));
     }
     rejectAttributes(root, source);
     rejectText(root, source);
     std::vector<ServiceSpec> out;
+    Ignored ignored;
     for (const XMLElement* child = root.FirstChildElement(); child; child = child->NextSiblingElement()) {
-        if (std::string_view(child->Name()) != "service") {
+        if (std::string_view(child->Name()) != childName) {
             fail(source, child->GetLineNum(),
-                 "unexpected element " + tag(*child) + " in <services> (expected <service>)");
+                 "unexpected element " + tag(*child) + " in " + tag(rootName) + " (expected " + tag(childName) + ")");
         }
-        out.push_back(parseService(*child, source));
+        out.push_back(parseService(*child, source, ignored, childName));
+    }
+    if (!ignored.names.empty()) {
+        std::string list;
+        for (const std::string& n : ignored.names) list += (list.empty() ? "" : ", ") + tag(n);
+        std::fprintf(stderr, "sbsim: note: %s: Artery's %s ignored (services here talk in-process)\n", source.c_str(),
+                     list.c_str());
+    }
+    return out;
+}
+
+std::string readFile(const std::filesystem::path& path) {
+    const std::string source = path.string();
+    std::error_code ec;
+    // An ifstream opens a directory without complaint and then reads nothing.
+    if (std::filesystem::is_directory(path, ec)) throw ServicesConfigError(source + ": cannot read");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ServicesConfigError(source + ": cannot read");
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw ServicesConfigError(source + ": cannot read");
+    return text;
+}
+
+// A DenService's use cases: its `useCases` file (relative to the services file), else
+// den-use-cases.xml beside the services file, else none listed (all run).
+void attachUseCases(ServiceSpec& spec) {
+    const std::filesystem::path dir = std::filesystem::path(spec.source).parent_path();
+    std::filesystem::path file;
+    if (const auto named = spec.parameter("useCases")) {
+        file = dir / *named;
+    } else {
+        std::error_code ec;
+        if (!std::filesystem::exists(dir / "den-use-cases.xml", ec)) return;
+        file = dir / "den-use-cases.xml";
+    }
+    auto useCases = readSpecs(readFile(file), file.string(), "usecases", "usecase");
+    for (const ServiceSpec& u : useCases) {
+        if (!isUseCase(u.type)) {
+            try {
+                (void)makeUseCase(u.type);
+            } catch (const std::out_of_range& e) {
+                fail(u.source, u.line, e.what());
+            }
+        }
+    }
+    spec.useCases = std::make_shared<const std::vector<ServiceSpec>>(std::move(useCases));
+}
+
+std::vector<ServiceSpec> readServices(std::string_view text, const std::string& source) {
+    std::vector<ServiceSpec> out = readSpecs(text, source, "services", "service");
+    for (ServiceSpec& spec : out) {
+        if (spec.type == "DenService") attachUseCases(spec);
     }
     return out;
 }
@@ -367,17 +446,7 @@ ServicesConfig ServicesConfig::parse(std::string_view text, const std::string& s
     return config;
 }
 
-ServicesConfig ServicesConfig::load(const std::filesystem::path& path) {
-    const std::string source = path.string();
-    std::error_code ec;
-    // An ifstream opens a directory without complaint and then reads nothing.
-    if (std::filesystem::is_directory(path, ec)) throw ServicesConfigError(source + ": cannot read");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ServicesConfigError(source + ": cannot read");
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw ServicesConfigError(source + ": cannot read");
-    return parse(text, source);
-}
+ServicesConfig ServicesConfig::load(const std::filesystem::path& path) { return parse(readFile(path), path.string()); }
 
 std::vector<const ServiceSpec*> ServicesConfig::matching(std::string_view vehicleId,
                                                          std::string_view vehicleType) const {

@@ -64,6 +64,12 @@ struct SBSIM_API ServiceSpec {
     }
     std::string source;  ///< the file, for messages
     int line = 0;        ///< of the <service> start tag
+    /// The type as the file wrote it (Artery's "artery.application.CaService" for "CaService").
+    std::string writtenType;
+    /// A DenService's use cases (<usecase> elements, each with its attributes and filters): from
+    /// its `useCases` attribute (a file relative to the services file), else den-use-cases.xml
+    /// beside the services file; null when neither exists: all use cases run.
+    std::shared_ptr<const std::vector<ServiceSpec>> useCases;
 
     /// Whether the service runs on this vehicle. No filters: every vehicle.
     bool matches(std::string_view vehicleId, std::string_view vehicleType) const;

@@ -43,6 +43,27 @@ void VehicleController::setColor(const Color& color) {
     Vehicle::setColor(id_, libsumo::TraCIColor(color.r, color.g, color.b, color.a));
 }
 int VehicleController::laneCount() const { return libsumo::Edge::getLaneNumber(Vehicle::getRoadID(id_)); }
+Position VehicleController::position() const {
+    const libsumo::TraCIPosition p = Vehicle::getPosition(id_);
+    return {p.x, p.y};
+}
+
+namespace {
+// SUMO answers "not reachable" with INVALID_DOUBLE_VALUE (a huge negative number).
+std::optional<double> reachable(double distance) {
+    if (distance < 0 || distance == libsumo::INVALID_DOUBLE_VALUE) return std::nullopt;
+    return distance;
+}
+}  // namespace
+
+std::optional<double> VehicleController::drivingDistance(const std::string& edge, double position) const {
+    return reachable(Vehicle::getDrivingDistance(id_, edge, position, 0));
+}
+
+std::optional<double> VehicleController::drivingDistanceTo(double x, double y) const {
+    return reachable(Vehicle::getDrivingDistance2D(id_, x, y));
+}
+
 std::vector<std::string> VehicleController::route() const { return Vehicle::getRoute(id_); }
 std::vector<std::string> VehicleController::via() const { return Vehicle::getVia(id_); }
 void VehicleController::setVia(const std::vector<std::string>& edges) {

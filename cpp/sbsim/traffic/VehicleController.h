@@ -1,11 +1,13 @@
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/traffic/Color.h"
+#include "sbsim/traffic/Position.h"
 
 namespace sbsim::traffic {
 
@@ -80,6 +82,16 @@ public:
     /// Routes the vehicle from where it is to `edge` (through its via edges) by travel time; throws
     /// CommandRefused when SUMO finds no route, leaving the route as it was.
     virtual void changeTarget(const std::string& edge);
+
+    // Added after the others, for the same reason.
+    /// Where the vehicle is (front bumper), SUMO network frame.
+    virtual Position position() const;
+    /// The distance (m) the vehicle drives along its route to `position` m on `edge` (lane 0), or
+    /// none when that spot is not on its route ahead (SUMO's getDrivingDistance).
+    virtual std::optional<double> drivingDistance(const std::string& edge, double position) const;
+    /// The distance (m) it drives along its route to the route's point nearest to (x, y), or none
+    /// when the route does not pass there (SUMO's getDrivingDistance2D).
+    virtual std::optional<double> drivingDistanceTo(double x, double y) const;
 
 private:
     std::string id_;

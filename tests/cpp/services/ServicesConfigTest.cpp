@@ -60,7 +60,9 @@ TEST(ServicesConfig, ArteryExample) {
     const auto& services = config.services();
     ASSERT_EQ(services.size(), 3u);
 
-    EXPECT_EQ(services[0].type, "artery.application.CaService");
+    // Artery's module name names sbsim's service of the same short name.
+    EXPECT_EQ(services[0].type, "CaService");
+    EXPECT_EQ(services[0].writtenType, "artery.application.CaService");
     EXPECT_EQ(services[0].line, 4);
     EXPECT_EQ(services[0].source, "s.xml");
     EXPECT_TRUE(services[0].parameters.empty());
@@ -72,14 +74,18 @@ TEST(ServicesConfig, ArteryExample) {
     EXPECT_TRUE(services[0].matches("flow0.1", "passenger"));
     EXPECT_FALSE(services[0].matches("walker", "artery.inet.Person"));
 
-    EXPECT_EQ(services[1].type, "artery.application.ExampleService");
+    // Artery's module name names sbsim's service of the same short name.
+    EXPECT_EQ(services[1].type, "ExampleService");
+    EXPECT_EQ(services[1].writtenType, "artery.application.ExampleService");
     EXPECT_EQ(services[1].parameter("name"), "Example");
     EXPECT_TRUE(services[1].matches("flow0.1", "car"));
     EXPECT_TRUE(services[1].matches("flow0.12", "car"));
     EXPECT_FALSE(services[1].matches("flow0.2", "car"));
     EXPECT_FALSE(services[1].matches("flow001", "car"));  // the escaped dot is literal
 
-    EXPECT_EQ(services[2].type, "artery.application.DenService");
+    // Artery's module name names sbsim's service of the same short name.
+    EXPECT_EQ(services[2].type, "DenService");
+    EXPECT_EQ(services[2].writtenType, "artery.application.DenService");
     EXPECT_TRUE(services[2].filters.empty());
     EXPECT_TRUE(services[2].matches("anything", ""));
 }

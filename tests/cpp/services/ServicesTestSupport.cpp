@@ -170,10 +170,12 @@ void Script::at(SimTime t, std::function<void()> action, int priority) {
 void Script::handleMessage(kernel::Message& msg) { static_cast<Action&>(msg).run(); }
 
 Harness::Harness(std::string_view servicesXml, radio::DiscSettings disc, SimTime interval, std::uint64_t seed)
+    : Harness(ServicesConfig::parse(servicesXml, "test.xml"), disc, interval, seed) {}
+
+Harness::Harness(ServicesConfig config, radio::DiscSettings disc, SimTime interval, std::uint64_t seed)
     : sim(seed),
       sumo(sim.emplaceModule<FakeSumo>()),
-      manager(sim.emplaceModule<ServiceManager>(ServicesConfig::parse(servicesXml, "test.xml"), interval, snapshot,
-                                                registry)),
+      manager(sim.emplaceModule<ServiceManager>(std::move(config), interval, snapshot, registry)),
       medium(sim.emplaceModule<radio::DiscMedium>(disc, snapshot,
                                                   [this](const std::string& id) { return manager.middlewareOf(id); })),
       script(sim.emplaceModule<Script>()) {

@@ -175,6 +175,9 @@ public:
     /// `seed`: the simulation's, which seeds the medium's packet losses.
     explicit Harness(std::string_view servicesXml, radio::DiscSettings disc = {}, SimTime interval = secs(0.1),
                      std::uint64_t seed = 0);
+    /// The same with a configuration already loaded (a file with its use-case file beside it).
+    explicit Harness(ServicesConfig config, radio::DiscSettings disc = {}, SimTime interval = secs(0.1),
+                     std::uint64_t seed = 0);
 
     /// At `t`, as a SUMO step would (before other events due then): the snapshot becomes
     /// `vehicles`; vehicles new to it depart, vehicles missing from it arrive (each in ascending

@@ -28,6 +28,7 @@ struct CommandLine {
     std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
     std::optional<std::filesystem::path> story;
     std::optional<std::filesystem::path> events;
+    std::optional<std::filesystem::path> denmTrace;
     std::optional<std::filesystem::path> summary;  ///< the summary as JSON
     std::vector<std::string> arguments;            ///< the command line as given (for the JSON summary)
     std::optional<double> end;                     ///< seconds

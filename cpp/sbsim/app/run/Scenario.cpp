@@ -5,6 +5,7 @@
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/run/RadioSetup.h"
 #include "sbsim/storyboard/CanvasFrame.h"
+#include "sbsim/storyboard/conditions/V2xSource.h"
 #include "sbsim/traffic/EquippedView.h"
 
 namespace sbsim::app {
@@ -22,6 +23,7 @@ traffic::SumoSettings Scenario::sumoSettings(const CommandLine& options, const s
 Scenario::Scenario(const CommandLine& options, traffic::SumoSettings settings, unsigned threads)
     : options_(options),
       sumocfg_(settings.sumocfg),
+      stations_(std::make_shared<facilities::StationRegistry>()),
       sim_(static_cast<std::uint64_t>(options.seed.value_or(CommandLine::kDefaultSeed)), threads),
       sumo_(sim_.emplaceModule<traffic::SumoBridge>(std::move(settings))) {
     for (const std::string& param : options.params) {
@@ -34,6 +36,8 @@ Scenario::Scenario(const CommandLine& options, traffic::SumoSettings settings, u
     // The parameters that set options (CommandLine::complete applied them) count as read.
     for (const auto& [name, option] : CommandLine::optionParameters()) (void)sim_.parameters().get(name);
     vehicles_.attach(sumo_);
+    // The stories' V2X conditions take the registry current when the script creates them.
+    storyboard::V2xSource::use(stations_);
 }
 
 void Scenario::loadSumo() {
@@ -64,6 +68,7 @@ void Scenario::addServices(services::ServicesConfig config, kernel::SimTime inte
     medium_ = &makeMedium(options_, sim_, sumo_.snapshot(),
                           [manager](const std::string& id) -> kernel::Module* { return manager->middlewareOf(id); });
     if (trace != nullptr) medium_->setTrace(trace);
+    services_->useStations(stations_);
     services_->setMedium(*medium_);
     services_->setPenetration(penetration);
     services_->attach(sumo_);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sbsim/app/cli/CommandLine.h"
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/MessageTrace.h"
@@ -55,6 +56,9 @@ public:
     storyboard::Storyboard* board() { return board_; }
     services::ServiceManager* services() { return services_; }
     radio::Medium* medium() { return medium_; }
+    /// What every station heard (LDMs, DENM memories): written by the services, read by the
+    /// stories' V2X conditions.
+    facilities::StationRegistry& stations() { return *stations_; }
     /// Threads the story script left running, abandoned after a grace period (their names).
     std::vector<std::string> abandonLingeringThreads();
 
@@ -65,6 +69,7 @@ private:
     // the registry its modules hold entries of, the interpreter last.
     std::optional<storyboard::PythonRuntime> python_;  // outlives the stories' Python objects
     traffic::VehicleRegistry vehicles_;                // outlives the simulation, whose modules hold its entries
+    std::shared_ptr<facilities::StationRegistry> stations_;
     kernel::Simulation sim_;
     traffic::SumoBridge& sumo_;
     storyboard::Storyboard* board_ = nullptr;

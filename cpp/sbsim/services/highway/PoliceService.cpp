@@ -6,15 +6,10 @@
 namespace sbsim::services {
 
 SBSIM_REGISTER_SERVICE(PoliceService);
-
-void PoliceService::initialize() { cause_ = parameter("cause").value_or("siren on"); }
-
-void PoliceService::receiveSignal(const traffic::StoryboardSignal& signal) {
-    if (signal.ego == vehicleId() && signal.cause == cause_) sirenOn_ = true;
-}
+SBSIM_REGISTER_SERVICE(PoliceServiceStoryboard);
 
 void PoliceService::trigger() {
-    if (!sirenOn_) return;
+    if (!broadcasting()) return;
     const auto self = selfIndex();
     if (!self) return;
     const std::string& lane = snapshot().laneId(*self);
@@ -22,6 +17,12 @@ void PoliceService::trigger() {
     const auto underscore = lane.rfind('_');
     const int index = underscore == std::string::npos ? 0 : std::stoi(lane.substr(underscore + 1));
     send(std::make_unique<ClearLaneMessage>(snapshot().roadId(*self), index));
+}
+
+void PoliceServiceStoryboard::initialize() { cause_ = parameter("cause").value_or("siren on"); }
+
+void PoliceServiceStoryboard::receiveSignal(const traffic::StoryboardSignal& signal) {
+    if (signal.ego == vehicleId() && signal.cause == cause_) sirenOn_ = true;
 }
 
 }  // namespace sbsim::services

@@ -8,9 +8,11 @@
 #include "sbsim/storyboard/conditions/AllCondition.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/AnyCondition.h"
+#include "sbsim/storyboard/conditions/CamCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
 #include "sbsim/storyboard/conditions/CollisionCondition.h"
 #include "sbsim/storyboard/conditions/DeferringCondition.h"
+#include "sbsim/storyboard/conditions/DenmCondition.h"
 #include "sbsim/storyboard/conditions/DistanceCondition.h"
 #include "sbsim/storyboard/conditions/HeadwayCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
@@ -28,6 +30,7 @@
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
+#include "sbsim/storyboard/conditions/V2xSource.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/PythonCondition.h"
 
@@ -205,6 +208,40 @@ void bindConditions(py::module_& m) {
     py::class_<AnyCondition, Condition, py::smart_holder>(m, "AnyCondition").def(py::init([](const py::args& args) {
         return std::make_shared<AnyCondition>(operands(args, "AnyCondition"));
     }));
+    // V2X: what a vehicle heard, read from the run's station registry (V2xSource).
+    py::class_<DenmCondition, Condition, py::smart_holder>(m, "DenmCondition")
+        .def(py::init([](const py::object& cause, const py::object& maxAge) {
+                 std::optional<int> c;
+                 if (!cause.is_none()) {
+                     if (!py::isinstance<py::int_>(cause) || py::isinstance<py::bool_>(cause))
+                         throw py::type_error("DenmCondition cause must be a whole number (a cause code), got " +
+                                              py::repr(cause).cast<std::string>());
+                     const long long code = cause.cast<long long>();
+                     if (code < 0 || code > 255)
+                         throw py::value_error("DenmCondition cause must be a cause code 0 to 255, got " +
+                                               std::to_string(code));
+                     c = static_cast<int>(code);
+                 }
+                 std::optional<SimTime> age;
+                 if (!maxAge.is_none()) {
+                     age = toSimTime(maxAge, "DenmCondition max_age");
+                     if (*age < SimTime::zero()) throw py::value_error("DenmCondition needs max_age >= 0");
+                 }
+                 return std::make_shared<DenmCondition>(V2xSource::current(), c, age);
+             }),
+             py::arg("cause") = py::none(), py::arg("max_age") = py::none())
+        .def("describe", &DenmCondition::describe);
+    py::class_<CamCondition, Condition, py::smart_holder>(m, "CamCondition")
+        .def(py::init([](const py::object& distance, const py::object& maxAge) {
+                 std::optional<SimTime> age;
+                 if (!maxAge.is_none()) {
+                     age = toSimTime(maxAge, "CamCondition max_age");
+                     if (*age < SimTime::zero()) throw py::value_error("CamCondition needs max_age >= 0");
+                 }
+                 return std::make_shared<CamCondition>(V2xSource::current(), optionalDistance(distance), age);
+             }),
+             py::arg("distance") = py::none(), py::arg("max_age") = py::none())
+        .def("describe", &CamCondition::describe);
     py::class_<HoldCondition, Condition, py::smart_holder>(m, "HoldCondition")
         .def(py::init([](ConditionPtr condition, const py::object& seconds) {
                  const SimTime duration = toSimTime(seconds, "HoldCondition seconds");

@@ -1,0 +1,32 @@
+#include "sbsim/facilities/LocalDynamicMap.h"
+
+#include <algorithm>
+
+namespace sbsim::facilities {
+
+void LocalDynamicMap::update(const CamContent& cam, kernel::SimTime now) {
+    if (cam.generationTime + kLifetime < now) return;
+    auto it = entries_.find(cam.station);
+    if (it == entries_.end()) {
+        entries_.emplace(cam.station, Entry{cam, now});
+    } else if (it->second.cam.generationTime <= cam.generationTime) {
+        it->second = Entry{cam, now};
+    }
+}
+
+void LocalDynamicMap::dropExpired(kernel::SimTime now) {
+    std::erase_if(entries_, [now](const auto& kv) { return kv.second.expiry() < now; });
+}
+
+const LocalDynamicMap::Entry* LocalDynamicMap::find(std::string_view station) const {
+    const auto it = entries_.find(station);
+    return it == entries_.end() ? nullptr : &it->second;
+}
+
+std::size_t LocalDynamicMap::count(kernel::SimTime now, const std::function<bool(const Entry&)>& predicate) const {
+    return static_cast<std::size_t>(std::count_if(entries_.begin(), entries_.end(), [&](const auto& kv) {
+        return kv.second.expiry() >= now && predicate(kv.second);
+    }));
+}
+
+}  // namespace sbsim::facilities

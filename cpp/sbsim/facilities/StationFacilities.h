@@ -1,0 +1,20 @@
+#pragma once
+
+#include "sbsim/facilities/DenmMemory.h"
+#include "sbsim/facilities/LocalDynamicMap.h"
+
+namespace sbsim::facilities {
+
+/// What one station's facilities keep of what it heard.
+struct StationFacilities {
+    LocalDynamicMap ldm;
+    DenmMemory denms;
+
+    /// Drops what expired before `now` (LDM entries and DENM events); the events dropped are returned.
+    std::vector<DenmMemory::Entry> dropExpired(kernel::SimTime now) {
+        ldm.dropExpired(now);
+        return denms.dropExpired(now);
+    }
+};
+
+}  // namespace sbsim::facilities

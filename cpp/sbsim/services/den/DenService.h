@@ -1,0 +1,73 @@
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "sbsim/facilities/ActionId.h"
+#include "sbsim/facilities/Denm.h"
+#include "sbsim/kernel/Message.h"
+#include "sbsim/services/Service.h"
+#include "sbsim/services/ServicesConfig.h"
+#include "sbsim/services/den/Repetition.h"
+#include "sbsim/services/den/UseCase.h"
+
+namespace sbsim::services {
+
+/// ETSI's DEN basic service (EN 302 637-3) as Artery's DenService: it runs the use cases its
+/// configuration lists (ServiceSpec::useCases, filtered per vehicle), checks them every trigger,
+/// passes them storyboard signals and received DENMs, and sends their DENMs as geo-broadcast with
+/// repetition. Unlike Artery it ends events: terminate() stops the repetition and sends a
+/// cancellation DENM, which makes receivers drop the event. Reports "new" and "terminate" DENM
+/// phases of its own events to the station registry's sink.
+class SBSIM_API DenService : public Service {
+public:
+    DenService();
+    ~DenService() override;
+
+    void initialize() override;
+    void trigger() override;
+    void receiveSignal(const traffic::StoryboardSignal& signal) override;
+    void indicateDenm(const facilities::Denm& denm) override;
+    void handleMessage(kernel::Message& msg) override;
+
+    /// The next action id of this station (sequence numbers from 1).
+    facilities::ActionId requestActionId();
+    /// Sends `denm` now and, with `repetition`, again every interval (the same content) until the
+    /// duration passed or the event is terminated.
+    void sendDenm(const facilities::DenmContent& denm, std::optional<Repetition> repetition = std::nullopt);
+    /// Ends this station's event `action`: no more repetitions, one cancellation DENM (reference
+    /// time now) to the same area. Nothing if the event is not this station's or already ended.
+    void terminate(const facilities::ActionId& action);
+    /// Whether `action` is one of this station's events still being repeated.
+    bool repeating(const facilities::ActionId& action) const { return active_.count(action) != 0; }
+
+    kernel::SimTime now() const { return simTime(); }
+    Eigen::Vector2d stationPosition() const { return position(); }
+    double stationSpeed() const;
+    double stationAcceleration() const;
+    double stationHeading() const;
+    const facilities::DenmMemory& memory() const { return denmMemory(); }
+    const facilities::LocalDynamicMap& ldm() const { return localDynamicMap(); }
+    const std::vector<std::unique_ptr<UseCase>>& useCases() const { return useCases_; }
+    std::size_t denmsSent() const { return sent_; }
+
+private:
+    struct Active {
+        facilities::DenmContent denm;
+        Repetition repetition;
+        kernel::SimTime first;
+        std::unique_ptr<kernel::Message> timer;
+    };
+    void transmit(const facilities::DenmContent& denm);
+
+    std::vector<std::unique_ptr<UseCase>> useCases_;
+    std::map<facilities::ActionId, Active> active_;
+    std::uint32_t sequence_ = 0;
+    std::size_t sent_ = 0;
+    std::map<facilities::ActionId, facilities::DenmContent> sentEvents_;  // the last version of each live event
+    std::vector<ServiceSpec> allUseCases_;  // when the configuration lists none: every use case
+};
+
+}  // namespace sbsim::services

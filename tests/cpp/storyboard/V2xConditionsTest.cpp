@@ -1,0 +1,115 @@
+// The V2X conditions on a station registry filled by hand: DenmCondition by cause and age of the
+// last reception, yielding the running originators (plainly true when none runs), false after
+// expiry or termination; CamCondition by distance to the known station's CAM position and age.
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "StoryboardTestSupport.h"
+#include "TestPrinters.h"
+#include "sbsim/facilities/Cam.h"
+#include "sbsim/facilities/Denm.h"
+#include "sbsim/facilities/StationRegistry.h"
+#include "sbsim/storyboard/conditions/CamCondition.h"
+#include "sbsim/storyboard/conditions/DenmCondition.h"
+
+namespace sbsim::storyboard::test {
+namespace {
+
+SimTime secs(double s) { return SimTime::fromSeconds(s); }
+
+facilities::DenmContent event(const std::string& station, int cause, double at, double validity = 600) {
+    facilities::DenmContent d;
+    d.action = {station, 1};
+    d.detectionTime = d.referenceTime = secs(at);
+    d.cause = cause;
+    d.validity = secs(validity);
+    return d;
+}
+
+std::vector<VehicleIndex> others(const Scene& scene, std::initializer_list<const char*> ids) {
+    std::vector<VehicleIndex> out;
+    for (const char* id : ids) out.push_back(scene.index(id));
+    return out;
+}
+
+TEST(DenmCondition, MatchesCauseAndAgeAndYieldsTheOriginators) {
+    auto stations = std::make_shared<facilities::StationRegistry>();
+    stations->of("w").denms.received(event("crash", 2, 10), secs(10.001));
+    stations->of("w").denms.received(event("rsu", 2, 11), secs(11.001));  // not a vehicle
+    stations->of("x").denms.received(event("slip", 6, 10), secs(10.001));
+    stations->of("y").denms.received(event("rsu", 2, 11), secs(11.001));
+    Scene scene(
+        {car("crash", 0, 0), car("slip", 10, 0), car("w", 20, 0), car("x", 30, 0), car("y", 40, 0), car("z", 50, 0)},
+        secs(15));
+    DenmCondition accident(stations, 2, std::nullopt);
+    EXPECT_EQ(scene.test(accident, "w").others(), others(scene, {"crash"}));
+    EXPECT_FALSE(scene.test(accident, "x"));
+    EXPECT_TRUE(scene.test(accident, "y"));  // the originator is no running vehicle: plainly true
+    EXPECT_FALSE(scene.test(accident, "y").isSet());
+    EXPECT_FALSE(scene.test(accident, "z"));  // no station at all
+    DenmCondition any(stations, std::nullopt, std::nullopt);
+    EXPECT_EQ(scene.test(any, "x").others(), others(scene, {"slip"}));
+    // Heard 4.999 s ago at most: w's events (10.001, 11.001) at 15 s.
+    DenmCondition recent(stations, 2, secs(4));
+    // The crash event is 4.999 s old, the roadside unit's 3.999 s: only the latter, plainly true.
+    EXPECT_TRUE(scene.test(recent, "w"));
+    EXPECT_FALSE(scene.test(recent, "w").isSet());
+    EXPECT_TRUE(scene.test(recent, "y"));
+    DenmCondition tooRecent(stations, 2, secs(3));
+    EXPECT_FALSE(scene.test(tooRecent, "w"));
+    // A repetition renews the age.
+    stations->of("w").denms.received(event("crash", 2, 10), secs(14.5));
+    EXPECT_EQ(scene.test(tooRecent, "w").others(), others(scene, {"crash"}));
+    EXPECT_EQ(accident.describe(), "DenmCondition(cause 2)");
+    EXPECT_EQ(tooRecent.describe(), "DenmCondition(cause 2, max age 3 s)");
+    EXPECT_EQ(any.describe(), "DenmCondition(any cause)");
+    EXPECT_TRUE(accident.pure());
+}
+
+TEST(DenmCondition, FalseOnceTheEventExpiredOrEnded) {
+    auto stations = std::make_shared<facilities::StationRegistry>();
+    stations->of("w").denms.received(event("crash", 2, 10, 5), secs(10));
+    DenmCondition c(stations, 2, std::nullopt);
+    Scene scene({car("crash", 0, 0), car("w", 20, 0)}, secs(15));
+    EXPECT_TRUE(scene.test(c, "w"));
+    scene.set({car("crash", 0, 0), car("w", 20, 0)}, secs(15.001));
+    EXPECT_FALSE(scene.test(c, "w")) << "expired, though not dropped yet";
+    auto cancel = event("crash", 2, 10, 5);
+    cancel.referenceTime = secs(12);
+    cancel.termination = facilities::Termination::Cancellation;
+    stations->of("w").denms.received(cancel, secs(12));
+    scene.set({car("crash", 0, 0), car("w", 20, 0)}, secs(13));
+    EXPECT_FALSE(scene.test(c, "w"));
+}
+
+TEST(CamCondition, KnowsStationsWithinDistanceAndAge) {
+    auto stations = std::make_shared<facilities::StationRegistry>();
+    const auto cam = [](const std::string& id, double x, double t) {
+        facilities::CamContent c;
+        c.station = id;
+        c.position = {x, 0};
+        c.generationTime = secs(t);
+        return c;
+    };
+    stations->of("ego").ldm.update(cam("near", 30, 9.5), secs(9.5));
+    stations->of("ego").ldm.update(cam("far", 200, 9.9), secs(9.9));
+    stations->of("ego").ldm.update(cam("rsu", 10, 9.9), secs(9.9));
+    Scene scene({car("ego", 0, 0), car("near", 35, 0), car("far", 205, 0)}, secs(10));
+    CamCondition within50(stations, 50.0, std::nullopt);
+    EXPECT_EQ(scene.test(within50, "ego").others(), others(scene, {"near"}));
+    CamCondition anywhere(stations, std::nullopt, std::nullopt);
+    EXPECT_EQ(scene.test(anywhere, "ego").others(), others(scene, {"far", "near"}));
+    CamCondition fresh(stations, 50.0, secs(0.2));
+    EXPECT_TRUE(scene.test(fresh, "ego"));  // only the roadside unit's CAM is fresh enough
+    EXPECT_FALSE(scene.test(fresh, "ego").isSet());
+    EXPECT_FALSE(scene.test(anywhere, "near"));
+    scene.set({car("ego", 0, 0), car("near", 35, 0), car("far", 205, 0)}, secs(10.8));
+    EXPECT_EQ(scene.test(anywhere, "ego").others(), others(scene, {"far"})) << "near's CAM outlived 1.1 s";
+    EXPECT_EQ(within50.describe(), "CamCondition(within 50 m)");
+    EXPECT_EQ(fresh.describe(), "CamCondition(within 50 m, max age 0.2 s)");
+}
+
+}  // namespace
+}  // namespace sbsim::storyboard::test
