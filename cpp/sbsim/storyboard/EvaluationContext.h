@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/ParallelFor.h"
 #include "sbsim/kernel/SimTime.h"
@@ -18,8 +19,9 @@ namespace sbsim::storyboard {
 class SBSIM_API EvaluationContext {
 public:
     EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid& neighbours,
-                      traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr)
-        : snapshot_(snapshot), neighbours_(neighbours), queries_(queries), parallel_(parallel) {}
+                      traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr,
+                      const facilities::StationRegistry* stations = nullptr)
+        : snapshot_(snapshot), neighbours_(neighbours), queries_(queries), parallel_(parallel), stations_(stations) {}
 
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     kernel::SimTime now() const { return snapshot_.time(); }
@@ -36,12 +38,16 @@ public:
     /// evaluated without a simulation (then that work runs on the calling thread). Never used
     /// from test(), which already runs on the pool.
     kernel::ParallelFor* parallel() const { return parallel_; }
+    /// What each station heard over V2X (its LDM, its DENM memory), which the V2X conditions read;
+    /// null in a run without services (then nobody heard anything).
+    const facilities::StationRegistry* stations() const { return stations_; }
 
 private:
     const traffic::VehicleSnapshot& snapshot_;
     const traffic::NeighbourGrid& neighbours_;
     traffic::TrafficQueries* queries_;
     kernel::ParallelFor* parallel_;
+    const facilities::StationRegistry* stations_;
 };
 
 }  // namespace sbsim::storyboard

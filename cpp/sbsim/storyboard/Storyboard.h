@@ -50,6 +50,8 @@ public:
     }
     /// Replaces what conditions ask of the traffic beyond the snapshot (default: libsumo).
     void setTrafficQueries(std::unique_ptr<traffic::TrafficQueries> queries) { queries_ = std::move(queries); }
+    /// What the stations heard over V2X, for the V2X conditions (DenmCondition, CamCondition).
+    void hearStations(std::shared_ptr<const facilities::StationRegistry> stations) { stations_ = std::move(stations); }
     /// `observer` sees every activation of a story for a vehicle (sbsim --gui paints them).
     void observeActivations(ActivationObserver& observer) { vehicles_.observe(observer); }
 
@@ -93,6 +95,7 @@ private:
     std::optional<double> neighbourRadius_;
     traffic::NeighbourGrid grid_;
     std::unique_ptr<traffic::TrafficQueries> queries_;
+    std::shared_ptr<const facilities::StationRegistry> stations_;
     std::function<void(traffic::SnapshotColumns)> columnsChanged_;
     WorldPass world_;
     VehiclePass vehicles_;

@@ -38,7 +38,10 @@ inline Vehicle car(std::string id, double speed) { return car(std::move(id), 0, 
 /// One step as the board sees it: a snapshot built by hand and its neighbour grid.
 class Scene {
 public:
-    explicit Scene(std::vector<Vehicle> vehicles, SimTime time = SimTime::zero(), double cellSize = 100) {
+    /// `stations`: what the vehicles heard over V2X, for the V2X conditions (none by default).
+    explicit Scene(std::vector<Vehicle> vehicles, SimTime time = SimTime::zero(), double cellSize = 100,
+                   const facilities::StationRegistry* stations = nullptr)
+        : stations_(stations) {
         set(std::move(vehicles), time, cellSize);
     }
     Scene(const Scene&) = delete;
@@ -74,7 +77,8 @@ public:
 private:
     traffic::VehicleSnapshot snapshot_;
     traffic::NeighbourGrid grid_;
-    EvaluationContext ctx_{snapshot_, grid_};
+    const facilities::StationRegistry* stations_;
+    EvaluationContext ctx_{snapshot_, grid_, nullptr, nullptr, stations_};
 };
 
 /// A condition that returns a fixed result and counts its evaluations (to see laziness).

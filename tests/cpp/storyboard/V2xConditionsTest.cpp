@@ -42,22 +42,22 @@ TEST(DenmCondition, MatchesCauseAndAgeAndYieldsTheOriginators) {
     stations->of("y").denms.received(event("rsu", 2, 11), secs(11.001));
     Scene scene(
         {car("crash", 0, 0), car("slip", 10, 0), car("w", 20, 0), car("x", 30, 0), car("y", 40, 0), car("z", 50, 0)},
-        secs(15));
-    DenmCondition accident(stations, 2, std::nullopt);
+        secs(15), 100, stations.get());
+    DenmCondition accident(2, std::nullopt);
     EXPECT_EQ(scene.test(accident, "w").others(), others(scene, {"crash"}));
     EXPECT_FALSE(scene.test(accident, "x"));
     EXPECT_TRUE(scene.test(accident, "y"));  // the originator is no running vehicle: plainly true
     EXPECT_FALSE(scene.test(accident, "y").isSet());
     EXPECT_FALSE(scene.test(accident, "z"));  // no station at all
-    DenmCondition any(stations, std::nullopt, std::nullopt);
+    DenmCondition any(std::nullopt, std::nullopt);
     EXPECT_EQ(scene.test(any, "x").others(), others(scene, {"slip"}));
     // Heard 4.999 s ago at most: w's events (10.001, 11.001) at 15 s.
-    DenmCondition recent(stations, 2, secs(4));
+    DenmCondition recent(2, secs(4));
     // The crash event is 4.999 s old, the roadside unit's 3.999 s: only the latter, plainly true.
     EXPECT_TRUE(scene.test(recent, "w"));
     EXPECT_FALSE(scene.test(recent, "w").isSet());
     EXPECT_TRUE(scene.test(recent, "y"));
-    DenmCondition tooRecent(stations, 2, secs(3));
+    DenmCondition tooRecent(2, secs(3));
     EXPECT_FALSE(scene.test(tooRecent, "w"));
     // A repetition renews the age.
     stations->of("w").denms.received(event("crash", 2, 10), secs(14.5));
@@ -71,8 +71,8 @@ TEST(DenmCondition, MatchesCauseAndAgeAndYieldsTheOriginators) {
 TEST(DenmCondition, FalseOnceTheEventExpiredOrEnded) {
     auto stations = std::make_shared<facilities::StationRegistry>();
     stations->of("w").denms.received(event("crash", 2, 10, 5), secs(10));
-    DenmCondition c(stations, 2, std::nullopt);
-    Scene scene({car("crash", 0, 0), car("w", 20, 0)}, secs(15));
+    DenmCondition c(2, std::nullopt);
+    Scene scene({car("crash", 0, 0), car("w", 20, 0)}, secs(15), 100, stations.get());
     EXPECT_TRUE(scene.test(c, "w"));
     scene.set({car("crash", 0, 0), car("w", 20, 0)}, secs(15.001));
     EXPECT_FALSE(scene.test(c, "w")) << "expired, though not dropped yet";
@@ -96,12 +96,12 @@ TEST(CamCondition, KnowsStationsWithinDistanceAndAge) {
     stations->of("ego").ldm.update(cam("near", 30, 9.5), secs(9.5));
     stations->of("ego").ldm.update(cam("far", 200, 9.9), secs(9.9));
     stations->of("ego").ldm.update(cam("rsu", 10, 9.9), secs(9.9));
-    Scene scene({car("ego", 0, 0), car("near", 35, 0), car("far", 205, 0)}, secs(10));
-    CamCondition within50(stations, 50.0, std::nullopt);
+    Scene scene({car("ego", 0, 0), car("near", 35, 0), car("far", 205, 0)}, secs(10), 100, stations.get());
+    CamCondition within50(50.0, std::nullopt);
     EXPECT_EQ(scene.test(within50, "ego").others(), others(scene, {"near"}));
-    CamCondition anywhere(stations, std::nullopt, std::nullopt);
+    CamCondition anywhere(std::nullopt, std::nullopt);
     EXPECT_EQ(scene.test(anywhere, "ego").others(), others(scene, {"far", "near"}));
-    CamCondition fresh(stations, 50.0, secs(0.2));
+    CamCondition fresh(50.0, secs(0.2));
     EXPECT_TRUE(scene.test(fresh, "ego"));  // only the roadside unit's CAM is fresh enough
     EXPECT_FALSE(scene.test(fresh, "ego").isSet());
     EXPECT_FALSE(scene.test(anywhere, "near"));

@@ -5,7 +5,6 @@
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/run/RadioSetup.h"
 #include "sbsim/storyboard/CanvasFrame.h"
-#include "sbsim/storyboard/conditions/V2xSource.h"
 #include "sbsim/traffic/EquippedView.h"
 
 namespace sbsim::app {
@@ -36,8 +35,6 @@ Scenario::Scenario(const CommandLine& options, traffic::SumoSettings settings, u
     // The parameters that set options (CommandLine::complete applied them) count as read.
     for (const auto& [name, option] : CommandLine::optionParameters()) (void)sim_.parameters().get(name);
     vehicles_.attach(sumo_);
-    // The stories' V2X conditions take the registry current when the script creates them.
-    storyboard::V2xSource::use(stations_);
 }
 
 void Scenario::loadSumo() {
@@ -52,6 +49,7 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
                                                  std::optional<traffic::Penetration> equippedOnly) {
     if (!python_) python_.emplace();
     board_ = &sim_.emplaceModule<storyboard::Storyboard>(vehicles_, log);
+    board_->hearStations(stations_);
     std::optional<traffic::EquippedView> view;
     if (equippedOnly) view.emplace(*equippedOnly);
     feed_ = std::make_unique<storyboard::BoardFeed>(sumo_, sumo_.snapshot(), *board_, std::move(view));

@@ -4,13 +4,13 @@
 
 namespace sbsim::storyboard {
 
-CamCondition::CamCondition(std::shared_ptr<const facilities::StationRegistry> stations, std::optional<double> distance,
-                           std::optional<kernel::SimTime> maxAge)
-    : stations_(std::move(stations)), distance_(distance), maxAge_(maxAge) {}
+CamCondition::CamCondition(std::optional<double> distance, std::optional<kernel::SimTime> maxAge)
+    : distance_(distance), maxAge_(maxAge) {}
 
 ConditionResult CamCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     const auto& snapshot = ctx.snapshot();
-    const facilities::StationFacilities* station = stations_->find(snapshot.ids()[ego]);
+    const facilities::StationFacilities* station =
+        ctx.stations() == nullptr ? nullptr : ctx.stations()->find(snapshot.ids()[ego]);
     if (station == nullptr) return false;
     const kernel::SimTime now = ctx.now();
     const Eigen::Vector2d here = snapshot.positions().col(ego);

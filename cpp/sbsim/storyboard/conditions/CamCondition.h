@@ -16,17 +16,15 @@ namespace sbsim::storyboard {
 /// when none is (roadside units), plainly true. Reads the vehicle's position.
 class CamCondition : public Condition {
 public:
-    CamCondition(std::shared_ptr<const facilities::StationRegistry> stations, std::optional<double> distance,
-                 std::optional<kernel::SimTime> maxAge);
+    CamCondition(std::optional<double> distance, std::optional<kernel::SimTime> maxAge);
 
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     traffic::SnapshotColumns columns() const override { return traffic::SnapshotColumns::Position; }
     bool pure() const override { return true; }
-    /// "CamCondition(within 50 m, max age 0.5 s)"; the board's describe() hook at merge.
-    std::string describe() const;
+    /// "CamCondition(within 50 m, max age 0.5 s)".
+    std::string describe() const override;
 
 private:
-    std::shared_ptr<const facilities::StationRegistry> stations_;
     std::optional<double> distance_;
     std::optional<kernel::SimTime> maxAge_;
 };

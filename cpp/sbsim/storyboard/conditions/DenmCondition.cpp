@@ -4,13 +4,13 @@
 
 namespace sbsim::storyboard {
 
-DenmCondition::DenmCondition(std::shared_ptr<const facilities::StationRegistry> stations, std::optional<int> cause,
-                             std::optional<kernel::SimTime> maxAge)
-    : stations_(std::move(stations)), cause_(cause), maxAge_(maxAge) {}
+DenmCondition::DenmCondition(std::optional<int> cause, std::optional<kernel::SimTime> maxAge)
+    : cause_(cause), maxAge_(maxAge) {}
 
 ConditionResult DenmCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     const auto& snapshot = ctx.snapshot();
-    const facilities::StationFacilities* station = stations_->find(snapshot.ids()[ego]);
+    const facilities::StationFacilities* station =
+        ctx.stations() == nullptr ? nullptr : ctx.stations()->find(snapshot.ids()[ego]);
     if (station == nullptr) return false;
     const kernel::SimTime now = ctx.now();
     bool any = false;

@@ -30,7 +30,6 @@
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
-#include "sbsim/storyboard/conditions/V2xSource.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/PythonCondition.h"
 
@@ -208,7 +207,7 @@ void bindConditions(py::module_& m) {
     py::class_<AnyCondition, Condition, py::smart_holder>(m, "AnyCondition").def(py::init([](const py::args& args) {
         return std::make_shared<AnyCondition>(operands(args, "AnyCondition"));
     }));
-    // V2X: what a vehicle heard, read from the run's station registry (V2xSource).
+    // V2X: what a vehicle heard (the evaluation context's stations).
     py::class_<DenmCondition, Condition, py::smart_holder>(m, "DenmCondition")
         .def(py::init([](const py::object& cause, const py::object& maxAge) {
                  std::optional<int> c;
@@ -227,7 +226,7 @@ void bindConditions(py::module_& m) {
                      age = toSimTime(maxAge, "DenmCondition max_age");
                      if (*age < SimTime::zero()) throw py::value_error("DenmCondition needs max_age >= 0");
                  }
-                 return std::make_shared<DenmCondition>(V2xSource::current(), c, age);
+                 return std::make_shared<DenmCondition>(c, age);
              }),
              py::arg("cause") = py::none(), py::arg("max_age") = py::none())
         .def("describe", &DenmCondition::describe);
@@ -238,7 +237,7 @@ void bindConditions(py::module_& m) {
                      age = toSimTime(maxAge, "CamCondition max_age");
                      if (*age < SimTime::zero()) throw py::value_error("CamCondition needs max_age >= 0");
                  }
-                 return std::make_shared<CamCondition>(V2xSource::current(), optionalDistance(distance), age);
+                 return std::make_shared<CamCondition>(optionalDistance(distance), age);
              }),
              py::arg("distance") = py::none(), py::arg("max_age") = py::none())
         .def("describe", &CamCondition::describe);
