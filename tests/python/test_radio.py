@@ -137,13 +137,23 @@ def test_trace_counts_agree_with_the_summary(tmp_path: Path, radio_file: Path) -
 
 
 def test_traces_are_identical_with_one_thread_and_two(tmp_path: Path, radio_file: Path) -> None:
-    # Dense enough that a frame's links are split over the pool (more than 256 within the cutoff).
+    # Dense enough, with small chunks, that a frame's links are split over the pool.
     cfg = highway(tmp_path / "road", [5.0 + 5.0 * k for k in range(490)], 5.0, building=False, length=2500.0, lanes=4)
     digests = []
     for threads in ("1", "2"):
         messages = tmp_path / f"messages{threads}.jsonl"
         beacon_run(
-            cfg, tmp_path, "--messages", str(messages), "--threads", threads, "--param", "radio_trace_range=30", end=0.4
+            cfg,
+            tmp_path,
+            "--messages",
+            str(messages),
+            "--threads",
+            threads,
+            "--param",
+            "radio_trace_range=30",
+            "--param",
+            "radio_links_per_chunk=64",
+            end=0.4,
         )
         digests.append(hashlib.sha256(messages.read_bytes()).hexdigest())
         assert messages.stat().st_size > 1_000_000

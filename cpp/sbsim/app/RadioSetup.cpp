@@ -56,6 +56,8 @@ const std::map<std::string, NumberKey, std::less<>>& numberKeys() {
         {"queue_limit",
          {"mac", [](Settings& s, double v) { s.queueLimit = static_cast<std::size_t>(std::max(v, 0.0)); }}},
         {"trace_range", {"trace", [](Settings& s, double v) { s.traceRange = v; }}},
+        {"links_per_chunk",
+         {"performance", [](Settings& s, double v) { s.linksPerChunk = static_cast<std::size_t>(std::max(v, 0.0)); }}},
     };
     return keys;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "sbsim/kernel/Simulation.h"
@@ -13,7 +14,8 @@ namespace sbsim::radio {
 namespace {
 enum TimerKind { kAccess = 1, kEnd = 2, kLoad = 3 };
 
-double toMw(double dbm) { return std::pow(10.0, dbm / 10.0); }
+// exp is cheaper than pow, and this runs once per link.
+double toMw(double dbm) { return std::exp(dbm * (std::numbers::ln10 / 10.0)); }
 double toDb(double mw) { return 10.0 * std::log10(mw); }
 }  // namespace
 
@@ -129,6 +131,7 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     countStart_.push_back(simTime());
     idleSince_.push_back(kernel::SimTime::zero());
     timers_.push_back(std::make_unique<StationTimer>(s));
+    module_.push_back(nullptr);
     return s;
 }
 
@@ -136,6 +139,7 @@ void ChannelMedium::refreshStations() {
     if (refreshedAt_ == snapshot_.time() && slotOfIndex_.size() == static_cast<std::size_t>(snapshot_.size())) return;
     refreshedAt_ = snapshot_.time();
     std::fill(present_.begin(), present_.end(), 0);
+    std::fill(module_.begin(), module_.end(), nullptr);
     slotOfIndex_.assign(static_cast<std::size_t>(snapshot_.size()), -1);
     const auto& positions = snapshot_.positions();
     for (traffic::VehicleSnapshot::Index i = 0; i < snapshot_.size(); ++i) {
@@ -150,6 +154,8 @@ void ChannelMedium::refreshStations() {
         }
         slotOfIndex_[i] = s;
         present_[s] = 1;
+        // Looked up once a step, not once a link: modules come and go only with SUMO's steps.
+        module_[s] = receiverOf(id);
         x_[s] = positions(0, i);
         y_[s] = positions(1, i);
     }
@@ -242,7 +248,8 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
             if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) candidates_.push_back(r);
         });
     }
-    std::sort(candidates_.begin(), candidates_.end());
+    // The grid's order (by cell, then vehicle index) is the same whatever the thread count, so
+    // the candidates need no sorting.
     links.resize(candidates_.size());
     const std::uint64_t senderKey = keys_[s];
     const std::uint64_t sequence = tx.message->sequence();
@@ -275,7 +282,7 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
                 link.powerMw = toMw(dbm);
             }
         },
-        256);
+        settings_.linksPerChunk);
     linksComputed_ += links.size();
 }
 
@@ -342,7 +349,9 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     active_.erase(found);
     const V2xMessage& message = *tx->message;
     const double delay = (simTime() - message.sentAt()).seconds();
-    const double ratio = settings_.bandwidthHz / (settings_.rateMbps * 1e6);
+    const double ratioDb = toDb(settings_.bandwidthHz / (settings_.rateMbps * 1e6));
+    refreshStations();  // the receivers' modules as of the last step
+    Counts* counts = countsOf(message);
 
     for (Link& link : tx->links) {
         const Slot r = link.receiver;
@@ -366,8 +375,8 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         } else {
             sinrDb = toDb(link.powerMw / (noiseMw_ + link.maxInterferenceMw));
             const double snrDb = toDb(link.powerMw / noiseMw_);
-            const double ferWith = fer_.ferAtEbN0Db(sinrDb + toDb(ratio));
-            const double ferWithout = fer_.ferAtEbN0Db(snrDb + toDb(ratio));
+            const double ferWith = fer_.ferAtEbN0Db(sinrDb + ratioDb);
+            const double ferWithout = fer_.ferAtEbN0Db(snrDb + ratioDb);
             CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Decode);
             const double u = random.uniform01();
             if (u < ferWithout) {
@@ -376,8 +385,8 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
                 loss = LossReason::Collision;
             }
         }
-        kernel::Module* receiver = receiverOf(ids_[r]);
-        countLink(message, link.distance, !loss && receiver != nullptr);
+        kernel::Module* receiver = module_[r];
+        if (counts != nullptr) countLink(*counts, link.distance, !loss && receiver != nullptr);
         if (receiver == nullptr) continue;  // left the simulation during the frame
         if (loss) {
             if (trace() != nullptr && link.distance <= settings_.traceRange) traceLost(*tx, r, link.distance, *loss);

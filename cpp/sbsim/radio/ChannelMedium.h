@@ -117,6 +117,7 @@ private:
     std::vector<std::int32_t> backoff_;  // slots left
     std::vector<kernel::SimTime> countStart_, idleSince_;
     std::vector<std::unique_ptr<StationTimer>> timers_;
+    std::vector<kernel::Module*> module_;  // the station's receiving module as of the last step; null: gone
 
     std::optional<kernel::SimTime> refreshedAt_;
     std::vector<Slot> slotOfIndex_;  // per snapshot index, -1 = not a station

@@ -61,6 +61,10 @@ struct SBSIM_API ChannelSettings {
     std::vector<std::pair<double, double>> ferTable = {{0, 1},     {5, 1},     {10, 0.4},  {15, 1.5e-2},
                                                        {20, 4e-3}, {25, 3e-3}, {30, 2e-3}, {35, 1e-3}};
 
+    /// A frame's links are computed on the thread pool in chunks of this many (fewer links stay on
+    /// the calling thread): waking a worker costs more than a few hundred links.
+    std::size_t linksPerChunk = 1024;
+
     /// Lost receptions are traced (--messages) only for stations this close to the sender.
     double traceRange = 500;
 

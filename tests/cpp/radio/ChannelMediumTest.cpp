@@ -219,6 +219,7 @@ TEST(ChannelMedium, ResultsDoNotDependOnTheThreadCount) {
     for (int k = 0; k < 600; ++k) stations.emplace_back(fmt::format("v{:03}", k), k * 5.0);
     ChannelSettings s;
     s.fading = ChannelSettings::Fading::NakagamiVeins;
+    s.linksPerChunk = 64;  // several chunks per frame
     std::vector<std::string> traces[2];
     for (unsigned threads : {1u, 2u}) {
         Bench b(stations, s, threads);
