@@ -132,6 +132,7 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     idleSince_.push_back(kernel::SimTime::zero());
     timers_.push_back(std::make_unique<StationTimer>(s));
     module_.push_back(nullptr);
+    near_.emplace_back();
     return s;
 }
 
@@ -241,16 +242,25 @@ void ChannelMedium::setCbrBusy(Slot s) {
 }
 
 void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links) {
-    candidates_.clear();
-    const auto index = snapshot_.indexOf(ids_[s]);
-    if (index) {
-        grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
-            if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) candidates_.push_back(r);
-        });
+    // Who is in range, how far, and the mean power (path loss and obstacles) stay the same for
+    // all of a sender's frames within one SUMO step: computed at its first frame of the step.
+    Neighbourhood& near = near_[s];
+    const bool fresh = near.at != refreshedAt_;
+    if (fresh) {
+        near.at = refreshedAt_;
+        near.receivers.clear();
+        const auto index = snapshot_.indexOf(ids_[s]);
+        if (index) {
+            // The grid's order (by cell, then vehicle index) is the same whatever the thread
+            // count, so the receivers need no sorting.
+            grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
+                if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
+            });
+        }
+        near.distance.resize(near.receivers.size());
+        near.meanDbm.resize(near.receivers.size());
     }
-    // The grid's order (by cell, then vehicle index) is the same whatever the thread count, so
-    // the candidates need no sorting.
-    links.resize(candidates_.size());
+    links.resize(near.receivers.size());
     const std::uint64_t senderKey = keys_[s];
     const std::uint64_t sequence = tx.message->sequence();
     const Eigen::Vector2d from(x_[s], y_[s]);
@@ -259,17 +269,22 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
     const bool obstacles = obstacles_ && obstacles_->size() > 0;
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     simulation().parallel().run(
-        candidates_.size(),
+        near.receivers.size(),
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k) {
-                const Slot r = candidates_[k];
+                const Slot r = near.receivers[k];
+                if (fresh) {
+                    const Eigen::Vector2d to(x_[r], y_[r]);
+                    near.distance[k] = (to - from).norm();
+                    double mean = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
+                    if (obstacles) mean -= obstacles_->lossDb(from, to);
+                    near.meanDbm[k] = mean;
+                }
                 Link& link = links[k];
                 link = Link{};
                 link.receiver = r;
-                const Eigen::Vector2d to(x_[r], y_[r]);
-                link.distance = (to - from).norm();
-                double dbm = settings_.powerDbm - pathLoss_->lossDb(link.distance);
-                if (obstacles) dbm -= obstacles_->lossDb(from, to);
+                link.distance = near.distance[k];
+                double dbm = near.meanDbm[k];
                 if (shadowing) {
                     CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
