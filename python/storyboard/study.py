@@ -5,13 +5,14 @@
 The TOML names the scenario, the seeds and the parameter values (paths relative to the TOML)::
 
     sumocfg = "grid-rain.sumocfg"
-    story = "story.py"                  # optional; also: services = "services.xml"
+    story = "story.py"                  # optional; also: services = "services.xml", radio = "radio.toml"
     seeds = { first = 1, count = 10 }   # or a list: seeds = [1, 2, 3]
     end = 600                           # optional; also: args = ["--threads", "1"]
     [parameters]
     rain_speed = [5, 10, 15]
     [outputs]
     directory = "results/rain"
+    messages = false                    # true: every run's --messages trace, and messages.parquet
 
 Each run is one ``sbsim`` process (crash isolation; SUMO is not re-entrant) started by a Dask task,
 on a ``distributed.LocalCluster`` with one single-threaded worker process per core, or on an
@@ -19,7 +20,8 @@ existing cluster (``--scheduler``; workers must see the same file system). Every
 own folder ``runs/<id>/`` (events.jsonl, summary.json, stderr, result.json, written last); a run whose
 result.json says it succeeded is not run again, so an interrupted study resumes where it stopped.
 At the end ``runs.parquet`` (one row per run) and ``events.parquet`` (every event with its run's
-parameters and seed) are written beside them.
+parameters and seed) are written beside them, and with ``messages = true`` ``messages.parquet`` (every
+line of the runs' message traces, likewise).
 """
 
 from __future__ import annotations
@@ -82,6 +84,8 @@ class StudySpec:
     parameters: dict[str, list[Value]] = field(default_factory=dict)
     story: Path | None = None
     services: Path | None = None
+    radio: Path | None = None
+    messages: bool = False
     end: float | None = None
     args: tuple[str, ...] = ()
 
@@ -96,7 +100,7 @@ class StudySpec:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], base: Path = Path("."), source: str = "study") -> StudySpec:
-        known = {"sumocfg", "story", "services", "seeds", "end", "args", "parameters", "outputs"}
+        known = {"sumocfg", "story", "services", "radio", "seeds", "end", "args", "parameters", "outputs"}
         for key in data:
             if key not in known:
                 raise StudyError(f"{source}: unknown key '{key}' (known: {', '.join(sorted(known))})")
@@ -120,6 +124,9 @@ class StudySpec:
                 raise StudyError(f"{source}: parameter '{name}' needs a non-empty list of values")
         outputs = data.get("outputs", {})
         directory = base / outputs.get("directory", "results")
+        messages = outputs.get("messages", False)
+        if not isinstance(messages, bool):
+            raise StudyError(f"{source}: [outputs] messages must be true or false")
         end = data.get("end")
         if end is not None and not isinstance(end, int | float):
             raise StudyError(f"{source}: 'end' must be a number of seconds")
@@ -130,6 +137,8 @@ class StudySpec:
             parameters={k: list(v) for k, v in parameters.items()},
             story=file("story"),
             services=file("services"),
+            radio=file("radio"),
+            messages=messages,
             end=None if end is None else float(end),
             args=tuple(str(a) for a in data.get("args", [])),
         )
@@ -147,6 +156,10 @@ class StudySpec:
             cmd += ["--story", str(self.story)]
         if self.services is not None:
             cmd += ["--services", str(self.services)]
+        if self.radio is not None:
+            cmd += ["--radio", str(self.radio)]
+        if self.messages:
+            cmd += ["--messages", str(folder / "messages.jsonl")]
         if self.end is not None:
             cmd += ["--end", repr(self.end)]
         return cmd + run.arguments() + list(self.args)
@@ -165,6 +178,11 @@ def summary_columns(summary: dict[str, Any]) -> dict[str, Any]:
     for kind, counts in summary.get("messages", {}).items():
         row[f"sent:{kind}"] = counts["sent"]
         row[f"delivered:{kind}"] = counts["delivered"]
+        if "mean_receivers" in counts:
+            row[f"mean_receivers:{kind}"] = counts["mean_receivers"]
+    if "channel_busy_ratio" in summary:
+        row["cbr_mean"] = summary["channel_busy_ratio"]["mean"]
+        row["cbr_max"] = summary["channel_busy_ratio"]["max"]
     timing = summary.get("timing", {})
     row["sumo_s"] = timing.get("sumo_s")
     row["storyboard_s"] = timing.get("storyboard_s")
@@ -286,23 +304,25 @@ def _progress(total: int, enabled: bool) -> Any:
 
 
 def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
-    """runs.parquet (one row per run) and events.parquet (the successful runs' events)."""
+    """runs.parquet (one row per run), events.parquet (the successful runs' events) and, when the
+    study keeps them, messages.parquet (their message traces)."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
     spec.directory.mkdir(parents=True, exist_ok=True)
     pq.write_table(pa.Table.from_pylist(list(rows)), spec.directory / "runs.parquet")
-    events: list[dict[str, Any]] = []
-    for r, row in zip(runs, rows, strict=True):
-        if row["exit_code"] != 0:
-            continue
-        path = spec.directory / "runs" / r.id / "events.jsonl"
-        if not path.exists():
-            continue
-        context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
-        with path.open(encoding="utf-8") as f:
-            events.extend({**context, **json.loads(line)} for line in f if line.strip())
-    pq.write_table(pa.Table.from_pylist(events), spec.directory / "events.parquet")
+    for name in ("events", "messages") if spec.messages else ("events",):
+        lines: list[dict[str, Any]] = []
+        for r, row in zip(runs, rows, strict=True):
+            if row["exit_code"] != 0:
+                continue
+            path = spec.directory / "runs" / r.id / f"{name}.jsonl"
+            if not path.exists():
+                continue
+            context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
+            with path.open(encoding="utf-8") as f:
+                lines.extend({**context, **json.loads(line)} for line in f if line.strip())
+        pq.write_table(pa.Table.from_pylist(lines), spec.directory / f"{name}.parquet")
 
 
 def plot(directory: Path, spec: StudySpec) -> list[Path]:

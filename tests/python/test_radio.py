@@ -216,3 +216,34 @@ def test_the_disc_model_traces_range_and_fade_losses(tmp_path: Path) -> None:
     sent, delivered = message_counts(result.stdout)["ClearLane"]
     assert delivered == len(rx)
     assert sent == sum(line["event"] == "tx" for line in lines)
+
+
+def test_a_study_sweeps_radio_power_and_keeps_the_messages(tmp_path: Path, radio_file: Path) -> None:
+    import pandas as pd
+    from storyboard import study
+    from storyboard.runner import executable
+
+    cfg = highway(tmp_path / "road", [50.0 + 40.0 * k for k in range(10)], 10.0, building=False)
+    spec = study.StudySpec.from_dict(
+        {
+            "sumocfg": str(cfg),
+            "services": str(cfg.parent / "h.services.xml"),
+            "radio": str(radio_file),
+            "seeds": [1],
+            "end": 1.5,
+            "parameters": {"radio_power_dbm": [10, 30]},
+            "outputs": {"directory": str(tmp_path / "results"), "messages": True},
+        }
+    )
+    runs = spec.runs()
+    rows = [study.execute(spec, r, str(executable()), timeout=120) for r in runs]
+    assert [row["exit_code"] for row in rows] == [0, 0], [row["stderr_tail"] for row in rows]
+    study.write_tables(spec, runs, rows)
+    table = pd.read_parquet(tmp_path / "results" / "runs.parquet")
+    assert set(table.columns) >= {"sent:Beacon", "delivered:Beacon", "mean_receivers:Beacon", "cbr_mean", "cbr_max"}
+    low, high = (table[table["radio_power_dbm"] == p].iloc[0] for p in (10, 30))
+    assert high["mean_receivers:Beacon"] > low["mean_receivers:Beacon"]  # more power, more range
+    messages = pd.read_parquet(tmp_path / "results" / "messages.parquet")
+    assert set(messages["event"]) >= {"tx", "rx"}
+    per_run = messages[messages["event"] == "rx"].groupby("radio_power_dbm").size()
+    assert per_run[10] == low["delivered:Beacon"] and per_run[30] == high["delivered:Beacon"]
