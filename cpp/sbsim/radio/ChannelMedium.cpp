@@ -408,21 +408,32 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             continue;
         }
         ++receptions_;
+        kernel::SimTime extra;
+        if (settings_.extraDelay != ChannelSettings::ExtraDelay::None) {
+            CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Delay);
+            double seconds = settings_.delay;
+            if (settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform) {
+                seconds = settings_.delayMin + (settings_.delayMax - settings_.delayMin) * random.uniform01();
+            } else if (settings_.extraDelay == ChannelSettings::ExtraDelay::Gamma) {
+                seconds = random.gamma(settings_.delayShape) * settings_.delay / settings_.delayShape;
+            }
+            extra = kernel::SimTime::fromSeconds(seconds);
+        }
         if (trace() != nullptr) {
             TraceLine line;
             line.event = TraceLine::Event::Rx;
-            line.t = simTime();
+            line.t = simTime() + extra;
             line.message = &message;
             line.station = ids_[r];
             line.sender = ids_[tx->sender];
             line.seq = message.sequence();
             line.distance = link.distance;
-            line.delay = delay;
+            line.delay = delay + extra.seconds();
             line.powerDbm = link.powerDbm;
             line.sinrDb = sinrDb;
             trace()->record(line, simTime());
         }
-        sendDirect(std::make_unique<Delivery>(tx->message), kernel::SimTime::zero(), *receiver);
+        sendDirect(std::make_unique<Delivery>(tx->message), extra, *receiver);
     }
 
     const Slot s = tx->sender;

@@ -19,6 +19,10 @@ namespace sbsim::radio {
 struct SBSIM_API ChannelSettings {
     enum class PathLossModel { FreeSpace, LogDistance, TwoRayGround, WinnerB1 };
     enum class Fading { None, Nakagami, NakagamiVeins };
+    /// Extra delay per reception for abstracted stacks (as Eclipse MOSAIC's delay models), added to
+    /// the airtime and channel access: none, constant `delay`, uniform in [`delayMin`, `delayMax`],
+    /// or gamma with mean `delay` and shape `delayShape`.
+    enum class ExtraDelay { None, Constant, Uniform, Gamma };
 
     double powerDbm = 23;
     double rateMbps = 6;  ///< one of 802.11p's 10 MHz rates: 3, 4.5, 6, 9, 12, 18, 24, 27
@@ -64,6 +68,12 @@ struct SBSIM_API ChannelSettings {
     /// A frame's links are computed on the thread pool in chunks of this many (fewer links stay on
     /// the calling thread): waking a worker costs more than a few hundred links.
     std::size_t linksPerChunk = 1024;
+
+    ExtraDelay extraDelay = ExtraDelay::None;
+    double delay = 0;     ///< s: constant, or the gamma mean
+    double delayMin = 0;  ///< s, uniform
+    double delayMax = 0;  ///< s, uniform
+    double delayShape = 2;
 
     /// Lost receptions are traced (--messages) only for stations this close to the sender.
     double traceRange = 500;
