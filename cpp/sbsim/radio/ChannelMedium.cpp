@@ -160,6 +160,11 @@ void ChannelMedium::refreshStations() {
         x_[s] = positions(0, i);
         y_[s] = positions(1, i);
     }
+    // A station that left keeps its slot (frames may still be on the air) but not its
+    // neighbourhood: a long run sees tens of thousands of vehicles.
+    for (Slot s = 0; s < static_cast<Slot>(near_.size()); ++s) {
+        if (!present_[s] && near_[s].at) near_[s] = Neighbourhood{};
+    }
     // Cells of half the cutoff: a query touches about 5x5 cells around the sender.
     grid_.build(snapshot_, std::max(cutoff_ / 2, 1.0));
 }
