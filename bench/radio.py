@@ -111,7 +111,7 @@ def make_highway(folder: Path, c: Config) -> Path:
     return cfg
 
 
-def run(c: Config, seconds: float, folder: Path, threads: int) -> dict:
+def run(c: Config, seconds: float, folder: Path, threads: int, seed: int) -> dict:
     cfg = make_highway(folder, c)
     services = folder / f"{c.name}.services.xml"
     fifo = Path(tempfile.mkdtemp()) / "messages.jsonl"
@@ -136,6 +136,8 @@ def run(c: Config, seconds: float, folder: Path, threads: int) -> dict:
         str(fifo),
         "--threads",
         str(threads),
+        "--seed",
+        str(seed),
         "--quiet",
     ]
     proc = subprocess.Popen(cmd, stderr=subprocess.PIPE, text=True)
@@ -256,6 +258,7 @@ def main() -> None:
     parser.add_argument("--configs", nargs="+", default=list(CONFIGS), choices=list(CONFIGS))
     parser.add_argument("--seconds", type=float, default=4.0, help="simulated seconds per run (default 4)")
     parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--seed", type=int, default=23423, help="sbsim's seed: beacon phases and every radio draw")
     parser.add_argument("--json", type=Path, help="write the curves here")
     parser.add_argument("--plot", type=Path, help="draw the curves and the published points (PNG)")
     parser.add_argument("--scale", metavar="PRESET", help="time this grid preset instead (e.g. bench5k)")
@@ -273,7 +276,7 @@ def main() -> None:
     curves = []
     for name in args.configs:
         c = CONFIGS[name]
-        curve = run(c, args.seconds, folder, args.threads)
+        curve = run(c, args.seconds, folder, args.threads, args.seed)
         curves.append(curve)
         print(
             f"\n{c.power_dbm:g} dBm, {c.rate_mbps:g} Mbit/s, β = {c.density:g} veh/m, {c.hz:g} Hz: "
