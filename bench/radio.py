@@ -10,6 +10,10 @@ busy ratio is the mean of those senders' CBR at their transmissions.
 
     PYTHONPATH=python:tools .venv/bin/python bench/radio.py [--json FILE] [--plot FILE.png]
         [--seconds 4] [--configs base p15 p30 r18 dense]
+
+`--scale PRESET` instead times the grid benchmark (tools/make_grid.py presets, e.g. bench5k) with
+every vehicle beaconing at 10 Hz: plain `sumo`, sbsim with the disc model and sbsim with the
+channel model (defaults), interleaved runs, medians, receptions per second of wall time.
 """
 
 from __future__ import annotations
@@ -17,6 +21,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -25,7 +30,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from benchlib import sbsim  # noqa: E402
+from benchlib import alternate, median, paired_ratio, sbsim, scenario, sumo  # noqa: E402
 from sbsim.sumo import sumo_binary  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -106,7 +111,7 @@ def make_highway(folder: Path, c: Config) -> Path:
     return cfg
 
 
-def run(c: Config, seconds: float, folder: Path, threads: int) -> dict:
+def run(c: Config, seconds: float, folder: Path, threads: int, seed: int) -> dict:
     cfg = make_highway(folder, c)
     services = folder / f"{c.name}.services.xml"
     fifo = Path(tempfile.mkdtemp()) / "messages.jsonl"
@@ -131,6 +136,8 @@ def run(c: Config, seconds: float, folder: Path, threads: int) -> dict:
         str(fifo),
         "--threads",
         str(threads),
+        "--seed",
+        str(seed),
         "--quiet",
     ]
     proc = subprocess.Popen(cmd, stderr=subprocess.PIPE, text=True)
@@ -218,20 +225,58 @@ def plot(curves: list[dict], path: Path) -> None:
     fig.savefig(path, dpi=120)
 
 
+def scale(preset: str, end: float, runs: int, threads: int, floor_dbm: list[float]) -> None:
+    cfg = scenario(preset)
+    services = cfg.parent / "beacon.services.xml"
+    services.write_text('<services><service type="Beacon" interval="0.1" bytes="190"/></services>\n')
+    defaults = cfg.parent / "radio-defaults.toml"
+    defaults.write_text("# the channel model's defaults\n")
+    base = [sbsim(), "--sumocfg", str(cfg), "--end", f"{end:g}", "--services", str(services), "--threads", str(threads)]
+    commands = {"sumo": [sumo(), "-c", str(cfg), "--end", f"{end:g}"], "sbsim disc": base}
+    for floor in floor_dbm:
+        name = "sbsim channel" + ("" if floor == -105 else f" floor {floor:g} dBm")
+        commands[name] = [*base, "--radio", str(defaults), "--param", f"radio_interference_floor_dbm={floor:g}"]
+    print(f"{preset}, {end:g} s simulated, every vehicle beaconing at 10 Hz, {runs} runs each, interleaved")
+    results = alternate(commands, runs)
+    print(f"\n{'command':<36} {'wall s':>8} {'cpu s':>8} {'x sumo':>7} {'delivered':>11} {'rx/s wall':>10}")
+    for name, rs in results.items():
+        wall = median([r.wall for r in rs])
+        cpu = median([r.cpu for r in rs])
+        ratio = paired_ratio(results, name)[0] if name != "sumo" else 1.0
+        delivered = ""
+        rate = ""
+        for line in rs[0].stdout.splitlines():
+            m = re.fullmatch(r"messages Beacon: sent (\d+), delivered (\d+)", line.strip())
+            if m:
+                delivered = m.group(2)
+                rate = f"{int(m.group(2)) / wall:,.0f}"
+        print(f"{name:<36} {wall:8.2f} {cpu:8.2f} {ratio:7.2f} {delivered:>11} {rate:>10}")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--configs", nargs="+", default=list(CONFIGS), choices=list(CONFIGS))
     parser.add_argument("--seconds", type=float, default=4.0, help="simulated seconds per run (default 4)")
     parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--seed", type=int, default=23423, help="sbsim's seed: beacon phases and every radio draw")
     parser.add_argument("--json", type=Path, help="write the curves here")
     parser.add_argument("--plot", type=Path, help="draw the curves and the published points (PNG)")
+    parser.add_argument("--scale", metavar="PRESET", help="time this grid preset instead (e.g. bench5k)")
+    parser.add_argument("--end", type=float, default=110.0, help="--scale: simulated seconds (default 110)")
+    parser.add_argument("--runs", type=int, default=3, help="--scale: runs per command (default 3)")
+    parser.add_argument(
+        "--floor", type=float, nargs="+", default=[-105.0], help="--scale: interference floors to time (dBm)"
+    )
     args = parser.parse_args()
+    if args.scale:
+        scale(args.scale, args.end, args.runs, args.threads, args.floor)
+        return
 
     folder = ROOT / "bench" / "out" / "radio"
     curves = []
     for name in args.configs:
         c = CONFIGS[name]
-        curve = run(c, args.seconds, folder, args.threads)
+        curve = run(c, args.seconds, folder, args.threads, args.seed)
         curves.append(curve)
         print(
             f"\n{c.power_dbm:g} dBm, {c.rate_mbps:g} Mbit/s, β = {c.density:g} veh/m, {c.hz:g} Hz: "

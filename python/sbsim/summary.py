@@ -123,6 +123,11 @@ def table_columns(summary: Summary) -> dict[str, Any]:
     for kind, counts in summary.get("messages", {}).items():
         row[f"sent:{kind}"] = counts["sent"]
         row[f"delivered:{kind}"] = counts["delivered"]
+        if "mean_receivers" in counts:
+            row[f"mean_receivers:{kind}"] = counts["mean_receivers"]
+    if "channel_busy_ratio" in summary:
+        row["cbr_mean"] = summary["channel_busy_ratio"]["mean"]
+        row["cbr_max"] = summary["channel_busy_ratio"]["max"]
     timing = summary.get("timing", {})
     row["sumo_s"] = timing.get("sumo_s")
     row["storyboard_s"] = timing.get("storyboard_s")

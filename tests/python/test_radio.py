@@ -137,13 +137,23 @@ def test_trace_counts_agree_with_the_summary(tmp_path: Path, radio_file: Path) -
 
 
 def test_traces_are_identical_with_one_thread_and_two(tmp_path: Path, radio_file: Path) -> None:
-    # Dense enough that a frame's links are split over the pool (more than 256 within the cutoff).
+    # Dense enough, with small chunks, that a frame's links are split over the pool.
     cfg = highway(tmp_path / "road", [5.0 + 5.0 * k for k in range(490)], 5.0, building=False, length=2500.0, lanes=4)
     digests = []
     for threads in ("1", "2"):
         messages = tmp_path / f"messages{threads}.jsonl"
         beacon_run(
-            cfg, tmp_path, "--messages", str(messages), "--threads", threads, "--param", "radio_trace_range=30", end=0.4
+            cfg,
+            tmp_path,
+            "--messages",
+            str(messages),
+            "--threads",
+            threads,
+            "--param",
+            "radio_trace_range=30",
+            "--param",
+            "radio_links_per_chunk=64",
+            end=0.4,
         )
         digests.append(hashlib.sha256(messages.read_bytes()).hexdigest())
         assert messages.stat().st_size > 1_000_000
@@ -206,3 +216,34 @@ def test_the_disc_model_traces_range_and_fade_losses(tmp_path: Path) -> None:
     sent, delivered = message_counts(result.stdout)["ClearLane"]
     assert delivered == len(rx)
     assert sent == sum(line["event"] == "tx" for line in lines)
+
+
+def test_a_study_sweeps_radio_power_and_keeps_the_messages(tmp_path: Path, radio_file: Path) -> None:
+    import pandas as pd
+    from storyboard import study
+    from storyboard.runner import executable
+
+    cfg = highway(tmp_path / "road", [50.0 + 40.0 * k for k in range(10)], 10.0, building=False)
+    spec = study.StudySpec.from_dict(
+        {
+            "sumocfg": str(cfg),
+            "services": str(cfg.parent / "h.services.xml"),
+            "radio": str(radio_file),
+            "seeds": [1],
+            "end": 1.5,
+            "parameters": {"radio_power_dbm": [10, 30]},
+            "outputs": {"directory": str(tmp_path / "results"), "messages": True},
+        }
+    )
+    runs = spec.runs()
+    rows = [study.execute(spec, r, str(executable()), timeout=120) for r in runs]
+    assert [row["exit_code"] for row in rows] == [0, 0], [row["stderr_tail"] for row in rows]
+    study.write_tables(spec, runs, rows)
+    table = pd.read_parquet(tmp_path / "results" / "runs.parquet")
+    assert set(table.columns) >= {"sent:Beacon", "delivered:Beacon", "mean_receivers:Beacon", "cbr_mean", "cbr_max"}
+    low, high = (table[table["radio_power_dbm"] == p].iloc[0] for p in (10, 30))
+    assert high["mean_receivers:Beacon"] > low["mean_receivers:Beacon"]  # more power, more range
+    messages = pd.read_parquet(tmp_path / "results" / "messages.parquet")
+    assert set(messages["event"]) >= {"tx", "rx"}
+    per_run = messages[messages["event"] == "rx"].groupby("radio_power_dbm").size()
+    assert per_run[10] == low["delivered:Beacon"] and per_run[30] == high["delivered:Beacon"]

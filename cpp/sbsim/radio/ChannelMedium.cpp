@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "sbsim/kernel/Simulation.h"
@@ -13,7 +14,8 @@ namespace sbsim::radio {
 namespace {
 enum TimerKind { kAccess = 1, kEnd = 2, kLoad = 3 };
 
-double toMw(double dbm) { return std::pow(10.0, dbm / 10.0); }
+// exp is cheaper than pow, and this runs once per link.
+double toMw(double dbm) { return std::exp(dbm * (std::numbers::ln10 / 10.0)); }
 double toDb(double mw) { return 10.0 * std::log10(mw); }
 }  // namespace
 
@@ -129,6 +131,8 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     countStart_.push_back(simTime());
     idleSince_.push_back(kernel::SimTime::zero());
     timers_.push_back(std::make_unique<StationTimer>(s));
+    module_.push_back(nullptr);
+    near_.emplace_back();
     return s;
 }
 
@@ -136,6 +140,7 @@ void ChannelMedium::refreshStations() {
     if (refreshedAt_ == snapshot_.time() && slotOfIndex_.size() == static_cast<std::size_t>(snapshot_.size())) return;
     refreshedAt_ = snapshot_.time();
     std::fill(present_.begin(), present_.end(), 0);
+    std::fill(module_.begin(), module_.end(), nullptr);
     slotOfIndex_.assign(static_cast<std::size_t>(snapshot_.size()), -1);
     const auto& positions = snapshot_.positions();
     for (traffic::VehicleSnapshot::Index i = 0; i < snapshot_.size(); ++i) {
@@ -150,8 +155,15 @@ void ChannelMedium::refreshStations() {
         }
         slotOfIndex_[i] = s;
         present_[s] = 1;
+        // Looked up once a step, not once a link: modules come and go only with SUMO's steps.
+        module_[s] = receiverOf(id);
         x_[s] = positions(0, i);
         y_[s] = positions(1, i);
+    }
+    // A station that left keeps its slot (frames may still be on the air) but not its
+    // neighbourhood: a long run sees tens of thousands of vehicles.
+    for (Slot s = 0; s < static_cast<Slot>(near_.size()); ++s) {
+        if (!present_[s] && near_[s].at) near_[s] = Neighbourhood{};
     }
     // Cells of half the cutoff: a query touches about 5x5 cells around the sender.
     grid_.build(snapshot_, std::max(cutoff_ / 2, 1.0));
@@ -235,15 +247,25 @@ void ChannelMedium::setCbrBusy(Slot s) {
 }
 
 void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links) {
-    candidates_.clear();
-    const auto index = snapshot_.indexOf(ids_[s]);
-    if (index) {
-        grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
-            if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) candidates_.push_back(r);
-        });
+    // Who is in range, how far, and the mean power (path loss and obstacles) stay the same for
+    // all of a sender's frames within one SUMO step: computed at its first frame of the step.
+    Neighbourhood& near = near_[s];
+    const bool fresh = near.at != refreshedAt_;
+    if (fresh) {
+        near.at = refreshedAt_;
+        near.receivers.clear();
+        const auto index = snapshot_.indexOf(ids_[s]);
+        if (index) {
+            // The grid's order (by cell, then vehicle index) is the same whatever the thread
+            // count, so the receivers need no sorting.
+            grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
+                if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
+            });
+        }
+        near.distance.resize(near.receivers.size());
+        near.meanDbm.resize(near.receivers.size());
     }
-    std::sort(candidates_.begin(), candidates_.end());
-    links.resize(candidates_.size());
+    links.resize(near.receivers.size());
     const std::uint64_t senderKey = keys_[s];
     const std::uint64_t sequence = tx.message->sequence();
     const Eigen::Vector2d from(x_[s], y_[s]);
@@ -252,17 +274,22 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
     const bool obstacles = obstacles_ && obstacles_->size() > 0;
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     simulation().parallel().run(
-        candidates_.size(),
+        near.receivers.size(),
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k) {
-                const Slot r = candidates_[k];
+                const Slot r = near.receivers[k];
+                if (fresh) {
+                    const Eigen::Vector2d to(x_[r], y_[r]);
+                    near.distance[k] = (to - from).norm();
+                    double mean = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
+                    if (obstacles) mean -= obstacles_->lossDb(from, to);
+                    near.meanDbm[k] = mean;
+                }
                 Link& link = links[k];
                 link = Link{};
                 link.receiver = r;
-                const Eigen::Vector2d to(x_[r], y_[r]);
-                link.distance = (to - from).norm();
-                double dbm = settings_.powerDbm - pathLoss_->lossDb(link.distance);
-                if (obstacles) dbm -= obstacles_->lossDb(from, to);
+                link.distance = near.distance[k];
+                double dbm = near.meanDbm[k];
                 if (shadowing) {
                     CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
@@ -275,7 +302,7 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
                 link.powerMw = toMw(dbm);
             }
         },
-        256);
+        settings_.linksPerChunk);
     linksComputed_ += links.size();
 }
 
@@ -342,7 +369,9 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     active_.erase(found);
     const V2xMessage& message = *tx->message;
     const double delay = (simTime() - message.sentAt()).seconds();
-    const double ratio = settings_.bandwidthHz / (settings_.rateMbps * 1e6);
+    const double ratioDb = toDb(settings_.bandwidthHz / (settings_.rateMbps * 1e6));
+    refreshStations();  // the receivers' modules as of the last step
+    Counts* counts = countsOf(message);
 
     for (Link& link : tx->links) {
         const Slot r = link.receiver;
@@ -366,8 +395,8 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         } else {
             sinrDb = toDb(link.powerMw / (noiseMw_ + link.maxInterferenceMw));
             const double snrDb = toDb(link.powerMw / noiseMw_);
-            const double ferWith = fer_.ferAtEbN0Db(sinrDb + toDb(ratio));
-            const double ferWithout = fer_.ferAtEbN0Db(snrDb + toDb(ratio));
+            const double ferWith = fer_.ferAtEbN0Db(sinrDb + ratioDb);
+            const double ferWithout = fer_.ferAtEbN0Db(snrDb + ratioDb);
             CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Decode);
             const double u = random.uniform01();
             if (u < ferWithout) {
@@ -376,29 +405,40 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
                 loss = LossReason::Collision;
             }
         }
-        kernel::Module* receiver = receiverOf(ids_[r]);
-        countLink(message, link.distance, !loss && receiver != nullptr);
+        kernel::Module* receiver = module_[r];
+        if (counts != nullptr) countLink(*counts, link.distance, !loss && receiver != nullptr);
         if (receiver == nullptr) continue;  // left the simulation during the frame
         if (loss) {
             if (trace() != nullptr && link.distance <= settings_.traceRange) traceLost(*tx, r, link.distance, *loss);
             continue;
         }
         ++receptions_;
+        kernel::SimTime extra;
+        if (settings_.extraDelay != ChannelSettings::ExtraDelay::None) {
+            CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Delay);
+            double seconds = settings_.delay;
+            if (settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform) {
+                seconds = settings_.delayMin + (settings_.delayMax - settings_.delayMin) * random.uniform01();
+            } else if (settings_.extraDelay == ChannelSettings::ExtraDelay::Gamma) {
+                seconds = random.gamma(settings_.delayShape) * settings_.delay / settings_.delayShape;
+            }
+            extra = kernel::SimTime::fromSeconds(seconds);
+        }
         if (trace() != nullptr) {
             TraceLine line;
             line.event = TraceLine::Event::Rx;
-            line.t = simTime();
+            line.t = simTime() + extra;
             line.message = &message;
             line.station = ids_[r];
             line.sender = ids_[tx->sender];
             line.seq = message.sequence();
             line.distance = link.distance;
-            line.delay = delay;
+            line.delay = delay + extra.seconds();
             line.powerDbm = link.powerDbm;
             line.sinrDb = sinrDb;
             trace()->record(line, simTime());
         }
-        sendDirect(std::make_unique<Delivery>(tx->message), kernel::SimTime::zero(), *receiver);
+        sendDirect(std::make_unique<Delivery>(tx->message), extra, *receiver);
     }
 
     const Slot s = tx->sender;

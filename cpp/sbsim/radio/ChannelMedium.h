@@ -117,6 +117,14 @@ private:
     std::vector<std::int32_t> backoff_;  // slots left
     std::vector<kernel::SimTime> countStart_, idleSince_;
     std::vector<std::unique_ptr<StationTimer>> timers_;
+    /// A sender's receivers within the cutoff and their distance and mean power, for one step.
+    struct Neighbourhood {
+        std::optional<kernel::SimTime> at;  // the snapshot they were computed for
+        std::vector<Slot> receivers;
+        std::vector<double> distance, meanDbm;
+    };
+    std::vector<Neighbourhood> near_;
+    std::vector<kernel::Module*> module_;  // the station's receiving module as of the last step; null: gone
 
     std::optional<kernel::SimTime> refreshedAt_;
     std::vector<Slot> slotOfIndex_;  // per snapshot index, -1 = not a station
@@ -128,7 +136,6 @@ private:
     std::optional<LoadFigures> load_;
     double cbrSum_ = 0;
     std::uint64_t transmissions_ = 0, receptions_ = 0, linksComputed_ = 0;
-    std::vector<Slot> candidates_;  // scratch
 };
 
 }  // namespace sbsim::radio

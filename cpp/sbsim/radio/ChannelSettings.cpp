@@ -36,6 +36,9 @@ void ChannelSettings::validate() const {
     require(aifsn >= 1 && aifsn <= 15, "aifsn must be 1 to 15");
     require(contentionWindow >= 0 && contentionWindow <= 1023, "contention_window must be 0 to 1023");
     require(queueLimit >= 1, "queue_limit must be >= 1");
+    require(delay >= 0 && delayMin >= 0 && delayMax >= delayMin && delayShape > 0,
+            "delays must be >= 0 s, delay_max_s >= delay_min_s, delay_shape > 0");
+    require(linksPerChunk >= 1, "links_per_chunk must be >= 1");
     require(traceRange >= 0, "trace_range must be >= 0 m");
     (void)FrameErrorTable(ferTable);  // throws on a malformed table
     (void)makePathLoss();

@@ -19,6 +19,10 @@ namespace sbsim::radio {
 struct SBSIM_API ChannelSettings {
     enum class PathLossModel { FreeSpace, LogDistance, TwoRayGround, WinnerB1 };
     enum class Fading { None, Nakagami, NakagamiVeins };
+    /// Extra delay per reception for abstracted stacks (as Eclipse MOSAIC's delay models), added to
+    /// the airtime and channel access: none, constant `delay`, uniform in [`delayMin`, `delayMax`],
+    /// or gamma with mean `delay` and shape `delayShape`.
+    enum class ExtraDelay { None, Constant, Uniform, Gamma };
 
     double powerDbm = 23;
     double rateMbps = 6;  ///< one of 802.11p's 10 MHz rates: 3, 4.5, 6, 9, 12, 18, 24, 27
@@ -60,6 +64,16 @@ struct SBSIM_API ChannelSettings {
     /// Goubet et al.'s 6 Mbit/s table.
     std::vector<std::pair<double, double>> ferTable = {{0, 1},     {5, 1},     {10, 0.4},  {15, 1.5e-2},
                                                        {20, 4e-3}, {25, 3e-3}, {30, 2e-3}, {35, 1e-3}};
+
+    /// A frame's links are computed on the thread pool in chunks of this many (fewer links stay on
+    /// the calling thread): waking a worker costs more than a few hundred links.
+    std::size_t linksPerChunk = 1024;
+
+    ExtraDelay extraDelay = ExtraDelay::None;
+    double delay = 0;     ///< s: constant, or the gamma mean
+    double delayMin = 0;  ///< s, uniform
+    double delayMax = 0;  ///< s, uniform
+    double delayShape = 2;
 
     /// Lost receptions are traced (--messages) only for stations this close to the sender.
     double traceRange = 500;

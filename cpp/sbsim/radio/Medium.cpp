@@ -9,11 +9,18 @@ void Medium::stamp(V2xMessage& message, const std::string& sender) {
     ++counts_[std::string(message.typeName())].sent;
 }
 
-void Medium::countLink(const V2xMessage& message, double distance, bool received) {
+Medium::Counts* Medium::countsOf(const V2xMessage& message) {
     const auto it = counts_.find(message.typeName());
-    if (it == counts_.end() || !(distance >= 0)) return;
+    return it == counts_.end() ? nullptr : &it->second;
+}
+
+void Medium::countLink(const V2xMessage& message, double distance, bool received) {
+    if (Counts* c = countsOf(message)) countLink(*c, distance, received);
+}
+
+void Medium::countLink(Counts& c, double distance, bool received) {
+    if (!(distance >= 0)) return;
     const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
-    Counts& c = it->second;
     if (c.linkStations.size() <= bin) {
         c.linkStations.resize(bin + 1);
         c.linkReceptions.resize(bin + 1);

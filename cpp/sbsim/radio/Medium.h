@@ -65,6 +65,9 @@ protected:
     void stamp(V2xMessage& message, const std::string& sender);
     /// Counts one station the medium considered for `message` at `distance` m, and whether it received it.
     void countLink(const V2xMessage& message, double distance, bool received);
+    /// The counts of `message`'s type (stamped before), to count many links with one lookup.
+    Counts* countsOf(const V2xMessage& message);
+    static void countLink(Counts& counts, double distance, bool received);
     MessageTrace* trace() const { return trace_; }
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
 

@@ -5,13 +5,14 @@
 The TOML names the scenario, the seeds and the parameter values (paths relative to the TOML)::
 
     sumocfg = "grid-rain.sumocfg"
-    story = "story.py"                  # optional; also: services = "services.xml"
+    story = "story.py"                  # optional; also: services = "services.xml", radio = "radio.toml"
     seeds = { first = 1, count = 10 }   # or a list: seeds = [1, 2, 3]
     end = 600                           # optional; also: args = ["--threads", "1"]
     [parameters]
     rain_speed = [5, 10, 15]
     [outputs]
     directory = "results/rain"
+    messages = false                    # true: every run's --messages trace, and messages.parquet
 
 Each run is one ``sbsim`` process (crash isolation; SUMO is not re-entrant) started by a Dask task,
 on a ``distributed.LocalCluster`` with one single-threaded worker process per core, or on an
@@ -19,7 +20,8 @@ existing cluster (``--scheduler``; workers must see the same file system). Every
 own folder ``runs/<id>/`` (events.jsonl, summary.json, stderr, result.json, written last); a run whose
 result.json says it succeeded is not run again, so an interrupted study resumes where it stopped.
 At the end ``runs.parquet`` (one row per run) and ``events.parquet`` (every event with its run's
-parameters and seed) are written beside them.
+parameters and seed) are written beside them, and with ``messages = true`` ``messages.parquet`` (every
+line of the runs' message traces, likewise).
 
 The package, one job a module: :mod:`~sbsim.study.spec` (the TOML file and its runs),
 :mod:`~sbsim.study.execution` (the runs on Dask), :mod:`~sbsim.study.tables` (Parquet tables and

@@ -49,6 +49,8 @@ class StudySpec:
     parameters: dict[str, list[Value]] = field(default_factory=dict)
     story: Path | None = None
     services: Path | None = None
+    radio: Path | None = None
+    messages: bool = False
     end: float | None = None
     args: tuple[str, ...] = ()
 
@@ -63,7 +65,7 @@ class StudySpec:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], base: Path = Path("."), source: str = "study") -> StudySpec:
-        known = {"sumocfg", "story", "services", "seeds", "end", "args", "parameters", "outputs"}
+        known = {"sumocfg", "story", "services", "radio", "seeds", "end", "args", "parameters", "outputs"}
         for key in data:
             if key not in known:
                 raise StudyError(f"{source}: unknown key '{key}' (known: {', '.join(sorted(known))})")
@@ -87,6 +89,9 @@ class StudySpec:
                 raise StudyError(f"{source}: parameter '{name}' needs a non-empty list of values")
         outputs = data.get("outputs", {})
         directory = base / outputs.get("directory", "results")
+        messages = outputs.get("messages", False)
+        if not isinstance(messages, bool):
+            raise StudyError(f"{source}: [outputs] messages must be true or false")
         end = data.get("end")
         if end is not None and not isinstance(end, int | float):
             raise StudyError(f"{source}: 'end' must be a number of seconds")
@@ -97,6 +102,8 @@ class StudySpec:
             parameters={k: list(v) for k, v in parameters.items()},
             story=file("story"),
             services=file("services"),
+            radio=file("radio"),
+            messages=messages,
             end=None if end is None else float(end),
             args=tuple(str(a) for a in data.get("args", [])),
         )
@@ -114,6 +121,10 @@ class StudySpec:
             cmd += ["--story", str(self.story)]
         if self.services is not None:
             cmd += ["--services", str(self.services)]
+        if self.radio is not None:
+            cmd += ["--radio", str(self.radio)]
+        if self.messages:
+            cmd += ["--messages", str(folder / "messages.jsonl")]
         if self.end is not None:
             cmd += ["--end", repr(self.end)]
         return cmd + run.arguments() + list(self.args)

@@ -7,26 +7,30 @@ from pathlib import Path
 from typing import Any
 
 from sbsim.events import read_events
+from sbsim.messages import read_messages
 from sbsim.study.spec import Run, StudySpec
 
 
 def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
-    """runs.parquet (one row per run) and events.parquet (the successful runs' events)."""
+    """runs.parquet (one row per run), events.parquet (the successful runs' events) and, when the
+    study keeps them, messages.parquet (their message traces)."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
     spec.directory.mkdir(parents=True, exist_ok=True)
     pq.write_table(pa.Table.from_pylist(list(rows)), spec.directory / "runs.parquet")
-    events: list[dict[str, Any]] = []
-    for r, row in zip(runs, rows, strict=True):
-        if row["exit_code"] != 0:
-            continue
-        path = spec.directory / "runs" / r.id / "events.jsonl"
-        if not path.exists():
-            continue
-        context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
-        events.extend({**context, **event} for event in read_events(path))
-    pq.write_table(pa.Table.from_pylist(events), spec.directory / "events.parquet")
+    readers = {"events": read_events, "messages": read_messages} if spec.messages else {"events": read_events}
+    for name, read in readers.items():
+        lines: list[dict[str, Any]] = []
+        for r, row in zip(runs, rows, strict=True):
+            if row["exit_code"] != 0:
+                continue
+            path = spec.directory / "runs" / r.id / f"{name}.jsonl"
+            if not path.exists():
+                continue
+            context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
+            lines.extend({**context, **line} for line in read(path))
+        pq.write_table(pa.Table.from_pylist(lines), spec.directory / f"{name}.parquet")
 
 
 def plot(directory: Path, spec: StudySpec) -> list[Path]:

@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,10 @@ struct Station : kernel::Module {
     explicit Station(std::string id) : kernel::Module(std::move(id)) {}
     void handleMessage(kernel::Message& msg) override {
         received.push_back(static_cast<Delivery&>(msg).message->sender());
+        times.push_back(simTime());
     }
     std::vector<std::string> received;
+    std::vector<SimTime> times;
 };
 
 /// Calls the medium at given times.
@@ -202,6 +205,37 @@ TEST(ChannelMedium, ABuildingBlocksALink) {
     EXPECT_EQ(walled.trace.losses["b<a"], "sensing");
 }
 
+TEST(ChannelMedium, ExtraDelayModelsPostponeDeliveries) {
+    ChannelSettings s = Bench::quiet();
+    s.extraDelay = ChannelSettings::ExtraDelay::Constant;
+    s.delay = 0.05;
+    Bench constant({{"a", 0}, {"b", 50}}, s);
+    constant.send(SimTime::zero(), "a");
+    constant.run(SimTime::fromMilliseconds(100));
+    ASSERT_EQ(constant.modules["b"]->times.size(), 1u);
+    const SimTime end = constant.trace.txTimes["a"][0] + s.airtime(190);
+    EXPECT_EQ(constant.modules["b"]->times[0], end + SimTime::fromMilliseconds(50));
+
+    s.extraDelay = ChannelSettings::ExtraDelay::Uniform;
+    s.delayMin = 0.01;
+    s.delayMax = 0.02;
+    std::vector<std::pair<std::string, double>> ring{{"a", 0}};
+    for (int k = 1; k <= 20; ++k) ring.emplace_back(fmt::format("r{:02}", k), 10.0 * k);
+    Bench uniform(ring, s);
+    uniform.send(SimTime::zero(), "a");
+    uniform.run(SimTime::fromMilliseconds(100));
+    const SimTime frameEnd = uniform.trace.txTimes["a"][0] + s.airtime(190);
+    std::set<SimTime> distinct;
+    for (int k = 1; k <= 20; ++k) {
+        for (const SimTime t : uniform.modules[fmt::format("r{:02}", k)]->times) {
+            EXPECT_GE(t, frameEnd + SimTime::fromMilliseconds(10));
+            EXPECT_LT(t, frameEnd + SimTime::fromMilliseconds(20));
+            distinct.insert(t);
+        }
+    }
+    EXPECT_GT(distinct.size(), 10u);  // drawn per receiver
+}
+
 TEST(ChannelMedium, BusyRatioAndDccFollowTheLoad) {
     Bench b({{"a", 0}, {"b", 50}});
     // a sends every ms for 300 ms: 333 µs of 1000 busy at b.
@@ -219,6 +253,7 @@ TEST(ChannelMedium, ResultsDoNotDependOnTheThreadCount) {
     for (int k = 0; k < 600; ++k) stations.emplace_back(fmt::format("v{:03}", k), k * 5.0);
     ChannelSettings s;
     s.fading = ChannelSettings::Fading::NakagamiVeins;
+    s.linksPerChunk = 64;  // several chunks per frame
     std::vector<std::string> traces[2];
     for (unsigned threads : {1u, 2u}) {
         Bench b(stations, s, threads);

@@ -56,6 +56,12 @@ const std::map<std::string, NumberKey, std::less<>>& numberKeys() {
         {"queue_limit",
          {"mac", [](Settings& s, double v) { s.queueLimit = static_cast<std::size_t>(std::max(v, 0.0)); }}},
         {"trace_range", {"trace", [](Settings& s, double v) { s.traceRange = v; }}},
+        {"delay_s", {"latency", [](Settings& s, double v) { s.delay = v; }}},
+        {"delay_min_s", {"latency", [](Settings& s, double v) { s.delayMin = v; }}},
+        {"delay_max_s", {"latency", [](Settings& s, double v) { s.delayMax = v; }}},
+        {"delay_shape", {"latency", [](Settings& s, double v) { s.delayShape = v; }}},
+        {"links_per_chunk",
+         {"performance", [](Settings& s, double v) { s.linksPerChunk = static_cast<std::size_t>(std::max(v, 0.0)); }}},
     };
     return keys;
 }
@@ -87,6 +93,18 @@ const std::map<std::string, TextKey, std::less<>>& textKeys() {
               } else {
                   throw std::invalid_argument("must be none, nakagami or nakagami-veins");
               }
+          }}},
+        {"delay_model",
+         {"latency",
+          [](Settings& s, const std::string& v) {
+              static const std::map<std::string, Settings::ExtraDelay, std::less<>> models{
+                  {"none", Settings::ExtraDelay::None},
+                  {"constant", Settings::ExtraDelay::Constant},
+                  {"uniform", Settings::ExtraDelay::Uniform},
+                  {"gamma", Settings::ExtraDelay::Gamma}};
+              const auto it = models.find(v);
+              if (it == models.end()) throw std::invalid_argument("must be none, constant, uniform or gamma");
+              s.extraDelay = it->second;
           }}},
         {"polygon_type", {"obstacles", [](Settings& s, const std::string& v) { s.obstacleType = v; }}},
     };
