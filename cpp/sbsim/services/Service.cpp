@@ -25,6 +25,14 @@ void Service::send(std::unique_ptr<radio::V2xMessage> message) {
     hostOf(middleware_).manager().medium().broadcast(vehicleId(), std::move(message));
 }
 
+void Service::recordScalar(std::string_view name, double value) { emit(name, value); }
+
+void Service::emit(std::string_view name, double value) {
+    const Middleware& host = hostOf(middleware_);
+    host.manager().statistics().record(host.vehicleId(), spec_ == nullptr ? std::string_view{} : spec_->type, name,
+                                       simTime(), value);
+}
+
 void Service::listenToAllSignals() { hostOf(middleware_).manager().listenToAllSignals(*this); }
 
 std::optional<kernel::StudyParameters::Value> Service::studyParameter(const std::string& name) const {

@@ -53,6 +53,11 @@ radio::Medium& ServiceManager::medium() const {
     return *medium_;
 }
 
+kernel::Statistics& ServiceManager::statistics() const {
+    if (statistics_ == nullptr) throw std::logic_error("no statistics recorder in this simulation");
+    return *statistics_;
+}
+
 Middleware* ServiceManager::middlewareOf(const std::string& vehicleId) const {
     const auto it = middlewares_.find(vehicleId);
     return it == middlewares_.end() ? nullptr : it->second;

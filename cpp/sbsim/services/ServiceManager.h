@@ -9,6 +9,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/services/Middleware.h"
 #include "sbsim/services/ServicesConfig.h"
@@ -38,6 +39,10 @@ public:
     static traffic::SnapshotColumns columns() { return traffic::SnapshotColumns::all(); }
     traffic::VehicleRegistry& registry() const { return *registry_; }
     void setMedium(radio::Medium& medium) { medium_ = &medium; }
+    /// Where the services' recordScalar and emit go (the run's, owned by its Scenario).
+    void setStatistics(kernel::Statistics& statistics) { statistics_ = &statistics; }
+    /// Throws std::logic_error if none was set.
+    kernel::Statistics& statistics() const;
     /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
     /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
     void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
@@ -64,6 +69,7 @@ private:
     kernel::SimTime interval_;
     const traffic::VehicleSnapshot& snapshot_;
     radio::Medium* medium_ = nullptr;
+    kernel::Statistics* statistics_ = nullptr;
     traffic::Penetration penetration_;
     std::unordered_map<std::string, Middleware*> middlewares_;
     std::vector<Middleware*> departureOrder_;

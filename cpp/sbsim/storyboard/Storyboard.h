@@ -12,6 +12,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/RandomStream.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/storyboard/ActivationObserver.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/NetworkStack.h"
@@ -56,6 +57,10 @@ public:
     /// Artery's warm-up period, as scripts ask for it (getWarmupEndTime); it changes nothing else.
     void setWarmupEndTime(kernel::SimTime t) { warmupEnd_ = t; }
     kernel::SimTime warmupEndTime() const { return warmupEnd_; }
+    /// Where scripts' board.record goes (the run's, owned by its Scenario).
+    void setStatistics(kernel::Statistics& statistics) { statistics_ = &statistics; }
+    /// Null if none was set.
+    kernel::Statistics* statistics() const { return statistics_; }
 
     void registerStory(StoryPtr story);
     const std::vector<StoryPtr>& stories() const { return stories_; }
@@ -98,6 +103,7 @@ private:
     VehiclePass vehicles_;
     double updateSeconds_ = 0;
     kernel::SimTime warmupEnd_;
+    kernel::Statistics* statistics_ = nullptr;
 };
 
 }  // namespace sbsim::storyboard

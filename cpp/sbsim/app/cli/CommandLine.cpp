@@ -161,6 +161,9 @@ void CommandLine::declareOptions(CLI::App& app) {
     app.option_defaults()->group("Run and output");
     app.add_option("--events", events, "write storyboard events as JSON Lines")->type_name("FILE.jsonl");
     app.add_option("--summary", summary, "also write the summary as one JSON document")->type_name("FILE.json");
+    app.add_option("--statistics", statistics,
+                   "write what services and stories recorded (vehicle, source,\nname, time, value) as Parquet")
+        ->type_name("FILE.parquet");
     app.add_option("--threads", threads, "threads reading vehicle states after each step (0: all\ncores)")
         ->type_name("N")
         ->check(numberWhere<unsigned>("0 (all cores) to 256", [](unsigned n) { return n <= 256; }))

@@ -28,9 +28,10 @@ struct CommandLine {
     std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
     std::optional<std::filesystem::path> story;
     std::optional<std::filesystem::path> events;
-    std::optional<std::filesystem::path> summary;  ///< the summary as JSON
-    std::vector<std::string> arguments;            ///< the command line as given (for the JSON summary)
-    std::optional<double> end;                     ///< seconds
+    std::optional<std::filesystem::path> summary;     ///< the summary as JSON
+    std::optional<std::filesystem::path> statistics;  ///< what services and stories recorded, as Parquet
+    std::vector<std::string> arguments;               ///< the command line as given (for the JSON summary)
+    std::optional<double> end;                        ///< seconds
     std::optional<std::int64_t> seed;
     double warmup = 0;                              ///< s; what board.getWarmupEndTime() returns
     std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`

@@ -47,6 +47,12 @@ void printSummary(const RunFigures& f) {
             fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
         }
     }
+    if (f.statistics != nullptr) {
+        for (const auto& [name, a] : f.statistics->aggregates()) {
+            fmt::print("statistic {}: count {}, mean {:g}, min {:g}, max {:g}, sum {:g}\n", name, a.count, a.mean(),
+                       a.min, a.max, a.sum);
+        }
+    }
     if (const std::size_t warnings = f.sumo.warnings().total(); warnings > 0) {
         const auto kinds = f.sumo.warnings().kinds();
         fmt::print("sumo warnings: {} of {} kind{}, most: {} × {}\n", warnings, kinds.size(),
@@ -100,6 +106,13 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         }
     }
     out["messages"] = std::move(messages);
+    ordered_json statistics = ordered_json::object();
+    if (f.statistics != nullptr) {
+        for (const auto& [name, a] : f.statistics->aggregates()) {
+            statistics[name] = {{"count", a.count}, {"sum", a.sum}, {"mean", a.mean()}, {"min", a.min}, {"max", a.max}};
+        }
+    }
+    out["statistics"] = std::move(statistics);
     ordered_json warningKinds = ordered_json::array();
     for (const auto& kind : f.sumo.warnings().kinds()) {
         warningKinds.push_back({{"kind", kind.pattern}, {"count", kind.count}});

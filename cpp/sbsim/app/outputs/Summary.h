@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/storyboard/Storyboard.h"
@@ -22,6 +23,7 @@ struct RunFigures {
     const storyboard::Storyboard* board;
     const services::ServiceManager* services;
     const radio::Medium* medium;
+    const kernel::Statistics* statistics;       ///< what services and stories recorded
     double wall;                                ///< s
     const std::vector<std::string>& arguments;  ///< the command line
 };

@@ -73,6 +73,8 @@ int RunCommand::run(const CommandLine& cl) {
     if (cl.events) events.emplace("--events", *cl.events, files);
     std::optional<OutputFile> summary;
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
+    std::optional<OutputFile> statisticsFile;
+    if (cl.statistics) statisticsFile.emplace("--statistics", *cl.statistics, files);
     std::optional<OutputFile> sumoLog;
     if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
     std::optional<GuiWatch> gui;
@@ -98,6 +100,7 @@ int RunCommand::run(const CommandLine& cl) {
     Scenario scenario(cl, settings, cl.threads);
     kernel::Simulation& sim = scenario.simulation();
     traffic::SumoBridge& sumo = scenario.sumo();
+    if (statisticsFile) scenario.requireStatisticsFile();  // pyarrow missing: fail before the run
     const traffic::Penetration penetration(cl.penetration, sim.seed());
     if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
     scenario.loadSumo();
@@ -166,6 +169,10 @@ int RunCommand::run(const CommandLine& cl) {
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
+    if (statisticsFile) {
+        statisticsFile->stream() << scenario.statisticsFile();
+        if (!Interruption::requested()) statisticsFile->commit();
+    }
 
     const RunFigures figures{sumocfg,
                              sim,
@@ -173,6 +180,7 @@ int RunCommand::run(const CommandLine& cl) {
                              board,
                              scenario.services(),
                              scenario.medium(),
+                             &scenario.statistics(),
                              std::chrono::duration<double>(Clock::now() - started).count(),
                              cl.arguments};
     if (summary) {

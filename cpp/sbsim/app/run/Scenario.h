@@ -8,6 +8,7 @@
 
 #include "sbsim/app/cli/CommandLine.h"
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/DiscMedium.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
@@ -15,6 +16,7 @@
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
+#include "sbsim/storyboard/python/StatisticsParquet.h"
 #include "sbsim/storyboard/python/StoryScript.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/SumoBridge.h"
@@ -40,6 +42,12 @@ public:
     /// those vehicles) and loads the story script, whose createStories() is still to run.
     storyboard::StoryScript& addStoryboard(const std::filesystem::path& story, storyboard::EventLog* log,
                                            std::optional<traffic::Penetration> equippedOnly = std::nullopt);
+    /// Starts the interpreter (if no story did) and makes sure the statistics file can be written
+    /// (pyarrow); throws UsageError naming --statistics if not.
+    void requireStatisticsFile();
+    /// The run's statistics as the --statistics file's bytes (after requireStatisticsFile()).
+    std::string statisticsFile() const;
+
     /// Adds the services with the disc medium.
     void addServices(services::ServicesConfig config, kernel::SimTime interval, const radio::DiscSettings& disc,
                      const traffic::Penetration& penetration);
@@ -50,6 +58,8 @@ public:
     storyboard::Storyboard* board() { return board_; }
     services::ServiceManager* services() { return services_; }
     radio::Medium* medium() { return medium_; }
+    /// What the services and the stories recorded (recordScalar, emit, board.record).
+    const kernel::Statistics& statistics() const { return statistics_; }
     /// Threads the story script left running, abandoned after a grace period (their names).
     std::vector<std::string> abandonLingeringThreads();
 
@@ -59,6 +69,8 @@ private:
     // the registry its modules hold entries of, the interpreter last.
     std::optional<storyboard::PythonRuntime> python_;  // outlives the stories' Python objects
     traffic::VehicleRegistry vehicles_;                // outlives the simulation, whose modules hold its entries
+    kernel::Statistics statistics_;                    // outlives the simulation: services record in finish()
+    std::optional<storyboard::StatisticsParquet> parquet_;
     kernel::Simulation sim_;
     traffic::SumoBridge& sumo_;
     storyboard::Storyboard* board_ = nullptr;
