@@ -25,10 +25,11 @@ Storyboard::Storyboard(traffic::VehicleRegistry& registry, EventLog* log)
 Storyboard::~Storyboard() = default;
 
 traffic::SnapshotColumns Storyboard::columns() const {
-    if (stories_.empty()) return {};
+    if (stories_.empty() && criteria_.empty()) return {};
     // Speed for the stacks that hold a vehicle's speed (settle()), whatever the conditions read.
     traffic::SnapshotColumns columns = traffic::SnapshotColumns::Speed;
     for (const Condition* c : conditions_) columns |= c->columns();
+    for (const CriterionPtr& c : criteria_) columns |= c->columns();
     return columns;
 }
 
@@ -57,6 +58,19 @@ void Storyboard::registerStory(StoryPtr story) {
     if (columnsChanged_) columnsChanged_(columns());
 }
 
+void Storyboard::registerCriterion(CriterionPtr criterion) {
+    if (!criterion) throw std::invalid_argument("registerCriterion needs a criterion, got None");
+    criteria_.push_back(std::move(criterion));
+    if (columnsChanged_) columnsChanged_(columns());
+}
+
+std::vector<std::pair<std::string, CriterionVerdict>> Storyboard::verdicts() const {
+    std::vector<std::pair<std::string, CriterionVerdict>> out;
+    out.reserve(criteria_.size());
+    for (const CriterionPtr& c : criteria_) out.emplace_back(c->name(), c->verdict(stories_));
+    return out;
+}
+
 std::size_t Storyboard::maxConditionStates() const {
     std::size_t most = 0;
     for (const Condition* c : conditions_) most = std::max(most, c->heldVehicles());
@@ -83,6 +97,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     for (Condition* c : conditions_) c->prepare(ctx);
     if (!world_.empty()) world_.run(now_);
     vehicles_.run(ctx, simulation().parallel());
+    for (const CriterionPtr& c : criteria_) c->observe(ctx);
     if (log_ != nullptr) log_->flush();
     updateSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }

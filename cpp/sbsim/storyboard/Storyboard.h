@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
@@ -14,6 +15,7 @@
 #include "sbsim/kernel/RandomStream.h"
 #include "sbsim/kernel/Statistics.h"
 #include "sbsim/storyboard/ActivationObserver.h"
+#include "sbsim/storyboard/Criterion.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/NetworkStack.h"
 #include "sbsim/storyboard/Story.h"
@@ -63,6 +65,11 @@ public:
     kernel::Statistics* statistics() const { return statistics_; }
 
     void registerStory(StoryPtr story);
+    /// Adds a criterion: it observes every step after the stories and judges at the run's end.
+    void registerCriterion(CriterionPtr criterion);
+    const std::vector<CriterionPtr>& criteria() const { return criteria_; }
+    /// Each criterion's verdict now (at the run's end: over the whole run), in registration order.
+    std::vector<std::pair<std::string, CriterionVerdict>> verdicts() const;
     const std::vector<StoryPtr>& stories() const { return stories_; }
     /// Random stream k of the simulation (Artery scripts pass the generator index).
     std::shared_ptr<kernel::RandomStream> randomStream(unsigned k) { return simulation().randomStream(k); }
@@ -93,6 +100,7 @@ private:
     kernel::SimTime now_;
     bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;
+    std::vector<CriterionPtr> criteria_;
     std::vector<Condition*> conditions_;  // every distinct node of every tree, for prepare/forget
     std::unordered_set<Condition*> knownConditions_;
     std::optional<double> neighbourRadius_;
