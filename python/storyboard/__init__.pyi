@@ -1,6 +1,6 @@
 # Types of the story API that sbsim provides to story scripts (implemented in C++).
 from collections.abc import Iterable, Iterator, Sequence
-from typing import Protocol
+from typing import Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -296,10 +296,39 @@ class Parameters:
     def keys(self) -> list[str]: ...
     def items(self) -> list[tuple[str, bool | int | float | str]]: ...
 
+class _RunRecord(Protocol):  # what a custom Criterion.evaluate(run) receives
+    events: list[dict[str, Any]]  # the event log's lines
+    statistics: dict[str, dict[str, float]]  # per name: count, sum, mean, min, max
+    activations: dict[str, int]  # per story
+
+class Criterion:
+    """Base of custom criteria: override evaluate(self, run) -> bool | (passed, actual, expected); run.events is
+    the event log (dicts), run.statistics the aggregates per name, run.activations per story."""
+
+    name: str
+    def __init__(self) -> None: ...
+
+class NoCollision(Criterion):
+    def __init__(self) -> None: ...
+
+class MaxSpeed(Criterion):
+    def __init__(self, mps: float, vehicles: str | Iterable[str] | None = None) -> None: ...
+
+class ReachedRegion(Criterion):
+    def __init__(self, vehicle: str, area: Iterable[Point], by: Seconds) -> None: ...
+
+class KeepsLane(Criterion):
+    def __init__(self, vehicles: str | Iterable[str] | None = None) -> None: ...
+
+class StoryActivated(Criterion):
+    def __init__(self, story: str, at_least: int = 1) -> None: ...
+
 class Storyboard:
     stories: list[Story]
     warmup_end_time: SimTime
     def registerStory(self, story: Story) -> None: ...
+    def registerCriterion(self, criterion: Criterion, name: str | None = None) -> None: ...
+    def register_criterion(self, criterion: Criterion, name: str | None = None) -> None: ...
     def register_story(self, story: Story) -> None: ...
     def getRandomNumberGenerator(self, k: int = 0) -> RandomNumberGenerator: ...
     def random_generator(self, k: int = 0) -> RandomNumberGenerator: ...

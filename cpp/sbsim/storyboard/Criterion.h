@@ -2,9 +2,11 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/storyboard/EvaluationContext.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/traffic/SnapshotColumns.h"
@@ -19,6 +21,14 @@ struct CriterionVerdict {
     std::string expected;
 };
 
+/// What a criterion judges at the end besides what it observed: the board's stories, the run's
+/// statistics, and the event log's lines (JSON Lines; empty unless a criterion needsEvents()).
+struct CriterionRun {
+    const std::vector<StoryPtr>& stories;
+    const kernel::Statistics* statistics = nullptr;
+    std::string_view events;
+};
+
 /// A pass/fail test of a whole run (ScenarioRunner's criteria): it observes every step after the
 /// stories acted, and judges at the end. Registered with Storyboard::registerCriterion.
 class SBSIM_API Criterion {
@@ -31,8 +41,10 @@ public:
     virtual traffic::SnapshotColumns columns() const { return {}; }
     /// After each step's stories: what this step shows.
     virtual void observe(const EvaluationContext& /*ctx*/) {}
-    /// At the end of the run, over what it observed and the board's stories.
-    virtual CriterionVerdict verdict(const std::vector<StoryPtr>& stories) const = 0;
+    /// Whether verdict() reads the event log (the board then keeps its lines in memory).
+    virtual bool needsEvents() const { return false; }
+    /// At the end of the run, over what it observed and `run`.
+    virtual CriterionVerdict verdict(const CriterionRun& run) const = 0;
 
     /// The name given, else describe().
     std::string name() const { return name_.empty() ? describe() : name_; }

@@ -60,6 +60,16 @@ void Storyboard::registerStory(StoryPtr story) {
 
 void Storyboard::registerCriterion(CriterionPtr criterion) {
     if (!criterion) throw std::invalid_argument("registerCriterion needs a criterion, got None");
+    if (criterion->needsEvents()) {
+        // Without --events the board keeps a log of its own, in memory only.
+        if (log_ == nullptr) {
+            ownLog_ = std::make_unique<EventLog>(discarded_);
+            log_ = ownLog_.get();
+            vehicles_.setLog(log_);
+            world_.setLog(log_);
+        }
+        log_->keepLines();
+    }
     criteria_.push_back(std::move(criterion));
     if (columnsChanged_) columnsChanged_(columns());
 }
@@ -67,7 +77,8 @@ void Storyboard::registerCriterion(CriterionPtr criterion) {
 std::vector<std::pair<std::string, CriterionVerdict>> Storyboard::verdicts() const {
     std::vector<std::pair<std::string, CriterionVerdict>> out;
     out.reserve(criteria_.size());
-    for (const CriterionPtr& c : criteria_) out.emplace_back(c->name(), c->verdict(stories_));
+    const CriterionRun run{stories_, statistics_, log_ != nullptr ? std::string_view(log_->keptLines()) : ""};
+    for (const CriterionPtr& c : criteria_) out.emplace_back(c->name(), c->verdict(run));
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <unordered_set>
 #include <utility>
@@ -97,6 +98,8 @@ private:
     void collectConditions(Condition& root);
 
     EventLog* log_;
+    std::ostream discarded_{nullptr};   // where ownLog_ writes (nowhere) besides the lines it keeps
+    std::unique_ptr<EventLog> ownLog_;  // when no log was given and a criterion reads events
     kernel::SimTime now_;
     bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;

@@ -42,7 +42,7 @@ CriterionVerdict over(Criterion& c, const std::vector<std::vector<Vehicle>>& ste
         grid.build(snapshot, 100);
         c.observe(EvaluationContext(snapshot, grid, queries));
     }
-    return c.verdict(stories);
+    return c.verdict(CriterionRun{stories});
 }
 
 TEST(Criteria, NoCollisionFailsNamingTheFirstCollision) {
@@ -105,14 +105,15 @@ TEST(Criteria, StoryActivatedCountsTheNamedStory) {
         std::make_shared<Story>(std::make_shared<TimeCondition>(SimTime::zero()), std::vector<EffectPtr>{}, "rain");
     story->counters().activated();
     story->counters().activated();
+    const std::vector<StoryPtr> stories{story};
     StoryActivated twice("rain", 2);
-    EXPECT_TRUE(twice.verdict({story}).passed);
+    EXPECT_TRUE(twice.verdict(CriterionRun{stories}).passed);
     StoryActivated thrice("rain", 3);
-    const CriterionVerdict v = thrice.verdict({story});
+    const CriterionVerdict v = thrice.verdict(CriterionRun{stories});
     EXPECT_FALSE(v.passed);
     EXPECT_EQ(v.actual, "2 activations");
     EXPECT_EQ(v.expected, ">= 3 activations");
-    EXPECT_EQ(StoryActivated("fog", 1).verdict({story}).actual, "no story named fog");
+    EXPECT_EQ(StoryActivated("fog", 1).verdict(CriterionRun{stories}).actual, "no story named fog");
     EXPECT_THROW(StoryActivated("rain", 0), std::invalid_argument);
 }
 

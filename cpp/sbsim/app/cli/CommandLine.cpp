@@ -164,6 +164,8 @@ void CommandLine::declareOptions(CLI::App& app) {
     app.add_option("--statistics", statistics,
                    "write what services and stories recorded (vehicle, source,\nname, time, value) as Parquet")
         ->type_name("FILE.parquet");
+    app.add_option("--junit", junit, "write the story's criteria as JUnit XML (a test case each)")
+        ->type_name("FILE.xml");
     app.add_option("--threads", threads, "threads reading vehicle states after each step (0: all\ncores)")
         ->type_name("N")
         ->check(numberWhere<unsigned>("0 (all cores) to 256", [](unsigned n) { return n <= 256; }))

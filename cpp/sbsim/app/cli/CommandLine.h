@@ -30,6 +30,7 @@ struct CommandLine {
     std::optional<std::filesystem::path> events;
     std::optional<std::filesystem::path> summary;     ///< the summary as JSON
     std::optional<std::filesystem::path> statistics;  ///< what services and stories recorded, as Parquet
+    std::optional<std::filesystem::path> junit;       ///< the criteria's verdicts as JUnit XML
     std::vector<std::string> arguments;               ///< the command line as given (for the JSON summary)
     std::optional<double> end;                        ///< seconds
     std::optional<std::int64_t> seed;

@@ -53,6 +53,10 @@ void printSummary(const RunFigures& f) {
                        a.min, a.max, a.sum);
         }
     }
+    for (const auto& [name, v] : f.verdicts) {
+        fmt::print("criterion {}: {} (actual: {}; expected: {})\n", name, v.passed ? "passed" : "FAILED", v.actual,
+                   v.expected);
+    }
     if (const std::size_t warnings = f.sumo.warnings().total(); warnings > 0) {
         const auto kinds = f.sumo.warnings().kinds();
         fmt::print("sumo warnings: {} of {} kind{}, most: {} × {}\n", warnings, kinds.size(),
@@ -113,6 +117,15 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         }
     }
     out["statistics"] = std::move(statistics);
+    ordered_json criteria = ordered_json::array();
+    bool allPassed = true;
+    for (const auto& [name, v] : f.verdicts) {
+        criteria.push_back({{"name", name}, {"passed", v.passed}, {"actual", v.actual}, {"expected", v.expected}});
+        allPassed = allPassed && v.passed;
+    }
+    out["criteria"] = std::move(criteria);
+    // null: no criteria, so no verdict.
+    out["verdict"] = f.verdicts.empty() ? ordered_json(nullptr) : ordered_json(allPassed ? "passed" : "failed");
     ordered_json warningKinds = ordered_json::array();
     for (const auto& kind : f.sumo.warnings().kinds()) {
         warningKinds.push_back({{"kind", kind.pattern}, {"count", kind.count}});

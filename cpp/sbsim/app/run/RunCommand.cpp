@@ -5,6 +5,7 @@
 #include <libsumo/TraCIDefs.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "sbsim/app/inputs/ScenarioInputs.h"
 #include "sbsim/app/inputs/SumoOptions.h"
 #include "sbsim/app/inputs/SumoStateFile.h"
+#include "sbsim/app/outputs/JUnitReport.h"
 #include "sbsim/app/outputs/OutputFile.h"
 #include "sbsim/app/outputs/Summary.h"
 #include "sbsim/app/run/AfterEachStep.h"
@@ -75,6 +77,8 @@ int RunCommand::run(const CommandLine& cl) {
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
     std::optional<OutputFile> statisticsFile;
     if (cl.statistics) statisticsFile.emplace("--statistics", *cl.statistics, files);
+    std::optional<OutputFile> junit;
+    if (cl.junit) junit.emplace("--junit", *cl.junit, files);
     std::optional<OutputFile> sumoLog;
     if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
     std::optional<GuiWatch> gui;
@@ -164,11 +168,21 @@ int RunCommand::run(const CommandLine& cl) {
         // A service reads its parameters when its first vehicle departs: still bad input.
         throw InputError(fmt::format("--services: {}", e.what()));
     }
+    // Judged once, at the end: a Python criterion's error is the story's (exit 2).
+    std::vector<std::pair<std::string, storyboard::CriterionVerdict>> verdicts;
+    if (board != nullptr) untilInterrupted([&] { verdicts = board->verdicts(); });
+    const bool criterionFailed =
+        std::any_of(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.second.passed; });
     if (progress) progress->clear();
     if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
+    if (junit) {
+        writeJUnit(junit->stream(), story ? story->filename().string() : sumocfg.filename().string(), verdicts,
+                   std::chrono::duration<double>(Clock::now() - started).count());
+        if (!Interruption::requested()) junit->commit();
+    }
     if (statisticsFile) {
         statisticsFile->stream() << scenario.statisticsFile();
         if (!Interruption::requested()) statisticsFile->commit();
@@ -181,6 +195,7 @@ int RunCommand::run(const CommandLine& cl) {
                              scenario.services(),
                              scenario.medium(),
                              &scenario.statistics(),
+                             verdicts,
                              std::chrono::duration<double>(Clock::now() - started).count(),
                              cl.arguments};
     if (summary) {
@@ -203,7 +218,8 @@ int RunCommand::run(const CommandLine& cl) {
         if (Interruption::requested()) break;
         fmt::print(stderr, "sbsim: warning: --param {} was never read by the story or a service\n", name);
     }
-    const int exitCode = Interruption::requested() ? 130 : 0;  // 130: the shell's convention for SIGINT
+    // 130: the shell's convention for SIGINT; 3: a criterion failed (the run itself went well).
+    const int exitCode = Interruption::requested() ? 130 : criterionFailed ? 3 : 0;
     if (Interruption::requested()) fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());
     if (gui) GuiWatch::closeWithin(sumo, std::chrono::seconds(10), exitCode);
     return exitCode;

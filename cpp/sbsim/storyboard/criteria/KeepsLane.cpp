@@ -22,7 +22,7 @@ void KeepsLane::observe(const EvaluationContext& ctx) {
     last_ = std::move(now);  // vehicles that left are forgotten
 }
 
-CriterionVerdict KeepsLane::verdict(const std::vector<StoryPtr>& /*stories*/) const {
+CriterionVerdict KeepsLane::verdict(const CriterionRun& /*run*/) const {
     if (changes_ == 0) return {true, "0 lane changes", "0 lane changes"};
     return {false, fmt::format("{} lane change{}, first {}", changes_, changes_ == 1 ? "" : "s", first_),
             "0 lane changes"};

@@ -18,7 +18,7 @@ public:
     std::string describe() const override { return "KeepsLane(" + vehicles_.argument() + ")"; }
     traffic::SnapshotColumns columns() const override { return traffic::SnapshotColumns::Lane; }
     void observe(const EvaluationContext& ctx) override;
-    CriterionVerdict verdict(const std::vector<StoryPtr>& stories) const override;
+    CriterionVerdict verdict(const CriterionRun& run) const override;
 
 private:
     struct Where {

@@ -28,7 +28,7 @@ void MaxSpeed::observe(const EvaluationContext& ctx) {
     }
 }
 
-CriterionVerdict MaxSpeed::verdict(const std::vector<StoryPtr>& /*stories*/) const {
+CriterionVerdict MaxSpeed::verdict(const CriterionRun& /*run*/) const {
     const std::string expected = fmt::format("<= {:g} m/s", limit_);
     if (fastest_ < 0) return {true, "no vehicle seen", expected};
     // A margin for SUMO's rounding of speeds to its output precision.

@@ -16,7 +16,7 @@ public:
     std::string describe() const override;
     traffic::SnapshotColumns columns() const override { return traffic::SnapshotColumns::Speed; }
     void observe(const EvaluationContext& ctx) override;
-    CriterionVerdict verdict(const std::vector<StoryPtr>& stories) const override;
+    CriterionVerdict verdict(const CriterionRun& run) const override;
 
 private:
     double limit_;

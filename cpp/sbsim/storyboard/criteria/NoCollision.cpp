@@ -10,7 +10,7 @@ void NoCollision::observe(const EvaluationContext& ctx) {
     }
 }
 
-CriterionVerdict NoCollision::verdict(const std::vector<StoryPtr>& /*stories*/) const {
+CriterionVerdict NoCollision::verdict(const CriterionRun& /*run*/) const {
     if (collisions_ == 0) return {true, "0 collisions", "0 collisions"};
     return {false, fmt::format("{} collision{}, first {}", collisions_, collisions_ == 1 ? "" : "s", first_),
             "0 collisions"};

@@ -13,7 +13,7 @@ class NoCollision : public Criterion {
 public:
     std::string describe() const override { return "NoCollision()"; }
     void observe(const EvaluationContext& ctx) override;
-    CriterionVerdict verdict(const std::vector<StoryPtr>& stories) const override;
+    CriterionVerdict verdict(const CriterionRun& run) const override;
 
 private:
     std::size_t collisions_ = 0;

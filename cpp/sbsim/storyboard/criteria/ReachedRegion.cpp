@@ -19,7 +19,7 @@ void ReachedRegion::observe(const EvaluationContext& ctx) {
     if (area_.contains(ctx.snapshot().positions().col(*i))) reached_ = ctx.now();
 }
 
-CriterionVerdict ReachedRegion::verdict(const std::vector<StoryPtr>& /*stories*/) const {
+CriterionVerdict ReachedRegion::verdict(const CriterionRun& /*run*/) const {
     const std::string expected = fmt::format("in the area by t={} s", by_.str());
     if (reached_) return {*reached_ <= by_, fmt::format("reached at t={} s", reached_->str()), expected};
     return {false, seen_ ? "never reached" : fmt::format("no vehicle {} seen", vehicle_), expected};

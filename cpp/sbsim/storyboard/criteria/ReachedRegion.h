@@ -17,7 +17,7 @@ public:
     std::string describe() const override;
     traffic::SnapshotColumns columns() const override { return traffic::SnapshotColumns::Position; }
     void observe(const EvaluationContext& ctx) override;
-    CriterionVerdict verdict(const std::vector<StoryPtr>& stories) const override;
+    CriterionVerdict verdict(const CriterionRun& run) const override;
 
 private:
     std::string vehicle_;

@@ -15,9 +15,9 @@ std::string StoryActivated::describe() const {
     return fmt::format("StoryActivated({}, at_least={})", story_, atLeast_);
 }
 
-CriterionVerdict StoryActivated::verdict(const std::vector<StoryPtr>& stories) const {
+CriterionVerdict StoryActivated::verdict(const CriterionRun& run) const {
     const std::string expected = fmt::format(">= {} activations", atLeast_);
-    for (const StoryPtr& s : stories) {
+    for (const StoryPtr& s : run.stories) {
         if (s->name() != story_) continue;
         const std::uint64_t n = s->counters().activations();
         return {n >= atLeast_, fmt::format("{} activations", n), expected};

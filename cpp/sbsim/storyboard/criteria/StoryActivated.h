@@ -14,7 +14,7 @@ public:
     /// Throws std::invalid_argument for at_least below 1.
     StoryActivated(std::string story, std::int64_t atLeast);
     std::string describe() const override;
-    CriterionVerdict verdict(const std::vector<StoryPtr>& stories) const override;
+    CriterionVerdict verdict(const CriterionRun& run) const override;
 
 private:
     std::string story_;

@@ -6,6 +6,7 @@
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/kernel/Statistics.h"
+#include "sbsim/storyboard/Criterion.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/WorldEffect.h"
@@ -155,7 +156,14 @@ void bindBoard(py::module_& m) {
             throw py::value_error(std::string("board.record: ") + e.what());
         }
     };
+    const auto registerCriterion = [](const BoardHandle& h, CriterionPtr criterion, std::optional<std::string> name) {
+        if (!criterion) throw py::type_error("registerCriterion needs a Criterion, got None");
+        if (name) criterion->setName(std::move(*name));
+        h.board().registerCriterion(std::move(criterion));
+    };
     py::class_<BoardHandle>(m, "Storyboard")
+        .def("registerCriterion", registerCriterion, py::arg("criterion"), py::arg("name") = py::none())
+        .def("register_criterion", registerCriterion, py::arg("criterion"), py::arg("name") = py::none())
         .def("record", record, py::arg("name"), py::arg("value"), py::kw_only(), py::arg("vehicle") = py::none(),
              py::arg("story") = py::none())
         .def("registerStory", registerStory, py::arg("story"))
