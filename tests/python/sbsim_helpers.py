@@ -16,6 +16,8 @@ from sbsim.runner import RunResult, read_events, run
 #: The repository's root and its ready scenarios.
 REPO = Path(__file__).resolve().parents[2]
 STORIES = REPO / "stories"
+#: Test-local service modules (SpeedStatisticsService, ThrowingService), built by conftest.services_module.
+SERVICES_SOURCE = REPO / "tests" / "python" / "plugins" / "services"
 
 #: convBoundary written into the offset scenario's net (conftest.offset_cfg): xmin, ymin, xmax, ymax.
 OFFSET_BOUNDARY = (-100.0, -50.0, 700.0, 650.0)

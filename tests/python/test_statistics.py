@@ -5,17 +5,14 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 import subprocess
 from pathlib import Path
 
 import pandas as pd
 import pytest
-from sbsim.runner import cmake_prefix, executable, run
+from sbsim.runner import executable, run
 from sbsim.summary import table_columns
-from sbsim_helpers import REPO, assert_no_crash, write_story
-
-PLUGIN_SOURCE = REPO / "tests" / "python" / "plugins" / "statistics"
+from sbsim_helpers import SERVICES_SOURCE, assert_no_crash, write_story
 
 STORY = """
 from storyboard import CarSetCondition, Effect, Story, TimeCondition, AndCondition
@@ -37,44 +34,13 @@ def createStories(board):
 """
 
 
-def sdk_prefix(directory: Path) -> Path:
-    """The C++ SDK of the sbsim under test: installed from its build folder when it is one (so a
-    plugin sees this build's headers), else the one pip installed."""
-    build = executable().parent
-    if not (build / "CMakeCache.txt").is_file():
-        return cmake_prefix()
-    prefix = directory / "sdk"
-    done = subprocess.run(
-        ["cmake", "--install", str(build), "--prefix", str(prefix)], capture_output=True, text=True, check=False
-    )
-    if done.returncode != 0:
-        pytest.fail(f"installing the SDK failed:\n{done.stdout}\n{done.stderr}")
-    return prefix
-
-
-@pytest.fixture(scope="module")
-def plugin(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    if shutil.which("cmake") is None:
-        pytest.skip("cmake is not installed")
-    root = tmp_path_factory.mktemp("statistics-plugin")
-    build = root / "build"
-    for args in (
-        ["-S", str(PLUGIN_SOURCE), "-B", str(build), f"-DCMAKE_PREFIX_PATH={sdk_prefix(root)}"],
-        ["--build", str(build), "-j2"],
-    ):
-        done = subprocess.run(["cmake", *args], capture_output=True, text=True, timeout=600, check=False)
-        if done.returncode != 0:
-            pytest.fail(f"cmake {args[0]} failed:\n{done.stdout}\n{done.stderr}")
-    library = build / "libstatistics_service.so"
-    assert library.is_file()
-    return library
-
-
-def test_service_and_story_statistics_agree_with_the_summary(plugin: Path, loops_cfg: Path, tmp_path: Path) -> None:
+def test_service_and_story_statistics_agree_with_the_summary(
+    services_module: Path, loops_cfg: Path, tmp_path: Path
+) -> None:
     story = write_story(tmp_path, STORY)
     parquet = tmp_path / "stats.parquet"
     summary_path = tmp_path / "summary.json"
-    extra = ["--plugin", str(plugin), "--services", str(PLUGIN_SOURCE / "services.xml")]
+    extra = ["--plugin", str(services_module), "--services", str(SERVICES_SOURCE / "services.xml")]
     extra += ["--statistics", str(parquet), "--summary", str(summary_path)]
     result = run(loops_cfg, story=story, end=60.0, seed=4, extra=extra, timeout=180)
     assert_no_crash(result)

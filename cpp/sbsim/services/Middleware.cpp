@@ -32,20 +32,38 @@ void Middleware::trigger() {
     // A vehicle departing in the step at a grid time has just been initialized: its first
     // trigger is the next one.
     if (simTime() <= departedAt_) return;
-    for (Service* s : services_) s->trigger();
+    for (Service* s : services_) {
+        try {
+            s->trigger();
+        } catch (...) {
+            s->failed();
+        }
+    }
 }
 
 void Middleware::handleMessage(kernel::Message& msg) {
     if (auto* delivery = dynamic_cast<radio::Delivery*>(&msg)) {
         manager_.medium().delivered(*delivery->message);
-        for (Service* s : services_) s->indicate(*delivery->message);
+        for (Service* s : services_) {
+            try {
+                s->indicate(*delivery->message);
+            } catch (...) {
+                s->failed();
+            }
+        }
     } else {
         kernel::Module::handleMessage(msg);
     }
 }
 
 void Middleware::signal(const traffic::StoryboardSignal& signal) {
-    for (Service* s : services_) s->receiveSignal(signal);
+    for (Service* s : services_) {
+        try {
+            s->receiveSignal(signal);
+        } catch (...) {
+            s->failed();
+        }
+    }
 }
 
 }  // namespace sbsim::services

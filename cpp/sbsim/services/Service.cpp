@@ -1,8 +1,11 @@
 #include "sbsim/services/Service.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 
 #include "sbsim/services/Middleware.h"
+#include "sbsim/services/ServiceError.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
 
@@ -23,6 +26,23 @@ std::optional<traffic::VehicleSnapshot::Index> Service::selfIndex() const { retu
 
 void Service::send(std::unique_ptr<radio::V2xMessage> message) {
     hostOf(middleware_).manager().medium().broadcast(vehicleId(), std::move(message));
+}
+
+void Service::failed() {
+    const std::string where =
+        fmt::format("service {} on vehicle {} at t={} s", spec_ == nullptr ? name() : spec_->type,
+                    middleware_ == nullptr ? std::string("?") : middleware_->vehicleId(), simTime().str());
+    try {
+        throw;
+    } catch (const ServiceError&) {
+        throw;
+    } catch (const ServicesConfigError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw ServiceError(fmt::format("{}: {}", where, e.what()));
+    } catch (...) {
+        throw ServiceError(fmt::format("{}: an exception that is not a std::exception", where));
+    }
 }
 
 void Service::recordScalar(std::string_view name, double value) { emit(name, value); }

@@ -40,6 +40,10 @@ public:
 
     const std::string& vehicleId() const;
 
+    /// Rethrows what this service's code threw as a ServiceError naming the service type, the
+    /// vehicle and the time (a ServicesConfigError, a bad parameter, stays as it is).
+    [[noreturn]] void failed() override;
+
 protected:
     /// Commands and live queries for this service's vehicle; a max speed set here composes with
     /// the stories' caps (ServiceVehicle).

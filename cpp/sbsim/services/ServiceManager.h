@@ -53,6 +53,8 @@ public:
     Middleware* middlewareOf(const std::string& vehicleId) const;
     void listenToAllSignals(Service& service);
     std::size_t servicesCreated() const { return servicesCreated_; }
+    /// Storyboard signals fired for a vehicle that has no services (the first is warned of).
+    std::size_t signalsWithoutServices() const { return signalsWithoutServices_; }
     /// Vehicles with a middleware now (each running vehicle its filters selected).
     std::size_t middlewares() const { return middlewares_.size(); }
 
@@ -76,6 +78,7 @@ private:
     kernel::Message triggerTimer_{"service trigger"};
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;
+    std::size_t signalsWithoutServices_ = 0;
     traffic::VehicleRegistry* registry_;
 };
 

@@ -48,6 +48,12 @@ void Storyboard::collectConditions(Condition& root) {
 void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
     story->setDefaultName(fmt::format("story{}", stories_.size()));
+    // One name, one story: the summary, the event log and every table key stories by name.
+    for (const StoryPtr& s : stories_) {
+        if (s->name() == story->name()) {
+            throw std::invalid_argument(fmt::format("two stories are named '{}'; give each its own name", s->name()));
+        }
+    }
     collectConditions(story->condition());
     if (story->isWorldStory()) {
         world_.addStory(*story);

@@ -222,6 +222,8 @@ void CommandLine::complete(std::vector<std::string> sumoArgs) {
     }
     sumoOptions.insert(sumoOptions.end(), sumoArgs.begin(), sumoArgs.end());
     applyOptionParameters();
+    if (const auto it = optionsByParameter_.find("middleware_interval"); it != optionsByParameter_.end())
+        middlewareIntervalGiven = it->second->count() > 0;
     if (guiDelay && std::any_of(sumoOptions.begin(), sumoOptions.end(),
                                 [](const std::string& w) { return w == "--delay" || w == "-d"; })) {
         throw UsageError("--gui-delay: SUMO's --delay is given too (through --sumo-option or after --); give one");

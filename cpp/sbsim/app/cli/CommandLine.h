@@ -40,6 +40,7 @@ struct CommandLine {
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
     std::vector<std::string> params;                ///< study parameters, NAME=VALUE
     double middlewareInterval = 0.1;                ///< s between service triggers
+    bool middlewareIntervalGiven = false;           ///< by --middleware-interval or --param (not the default)
     double v2xRange = 500;                          ///< m
     double v2xLatency = 0.001;                      ///< s
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors

@@ -43,6 +43,8 @@ void printSummary(const RunFigures& f) {
     }
     if (f.services != nullptr) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
+        if (f.services->signalsWithoutServices() > 0)
+            fmt::print("signals without services: {}\n", f.services->signalsWithoutServices());
         for (const auto& [type, counts] : f.medium->counts()) {
             fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
         }
@@ -105,6 +107,7 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
     ordered_json messages = ordered_json::object();
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();
+        out["signals_without_services"] = f.services->signalsWithoutServices();
         for (const auto& [type, counts] : f.medium->counts()) {
             messages[type] = {{"sent", counts.sent}, {"delivered", counts.delivered}};
         }

@@ -26,6 +26,7 @@
 #include "sbsim/app/run/Scenario.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/DiscMedium.h"
+#include "sbsim/services/ServiceError.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/StoryError.h"
@@ -144,6 +145,14 @@ int RunCommand::run(const CommandLine& cl) {
         disc.fadeStart = cl.v2xFadeStart;
         scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval), disc,
                              penetration);
+        // Only when asked for: the default 0.1 s stays as it was, whatever the step length.
+        if (cl.middlewareIntervalGiven && kernel::SimTime::fromSeconds(cl.middlewareInterval) < sumo.stepLength()) {
+            fmt::print(
+                stderr,
+                "sbsim: warning: --middleware-interval {:g} s is shorter than SUMO's step length ({} s): services "
+                "see the same vehicle positions several times\n",
+                cl.middlewareInterval, sumo.stepLength().str());
+        }
     }
 
     std::unique_ptr<ProgressDisplay> progress;
@@ -164,6 +173,8 @@ int RunCommand::run(const CommandLine& cl) {
         throw InputError(fmt::format("SUMO error in '{}' at t={} s: {}", sumocfg.string(), sim.now().str(), e.what()));
     } catch (const libsumo::TraCIException& e) {
         throw InputError(fmt::format("SUMO error at t={} s: {}", sim.now().str(), e.what()));
+    } catch (const services::ServiceError& e) {
+        throw InputError(e.what());  // the user's code, like a story's error
     } catch (const services::ServicesConfigError& e) {
         // A service reads its parameters when its first vehicle departs: still bad input.
         throw InputError(fmt::format("--services: {}", e.what()));
