@@ -198,7 +198,8 @@ class Effect:
 
 class SpeedEffect(Effect):
     speed: float
-    def __init__(self, mps: float) -> None: ...
+    over: float
+    def __init__(self, mps: float, over: Seconds | None = None) -> None: ...
 
 class StopEffect(Effect):
     def __init__(self) -> None: ...

@@ -6,8 +6,9 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
 from sbsim.runner import RunResult, run
-from sbsim_helpers import assert_no_crash, write_story
+from sbsim_helpers import assert_no_crash, run_story, write_story
 
 
 def services_file(directory: Path, body: str) -> Path:
@@ -109,3 +110,40 @@ def test_a_signal_for_a_vehicle_without_services_is_counted_and_warned_once(
     assert len(warnings) == 1, result.stderr
     assert "story 'ice'" in warnings[0] and "vehicle veh02" in warnings[0], warnings[0]
     assert "signals without services: 4" in result.stdout.splitlines(), result.stdout
+
+
+GRADUAL = """
+from storyboard import AndCondition, CarSetCondition, SpeedEffect, Story, TimeCondition
+
+def createStories(board):
+    # From t = 60 s (the loop traffic runs at ~13 m/s), down to 2 m/s: at once, or over 10 s.
+    board.registerStory(Story(AndCondition(TimeCondition(60), CarSetCondition(["veh05", "veh06", "veh07"])),
+                              [SpeedEffect(2.0{over})], name="rain"))
+"""
+
+
+def test_a_gradual_speed_effect_ramps_down_by_slow_down(loops_cfg: Path, tmp_path: Path) -> None:
+    runs = {}
+    for label, over in (("plain", ""), ("gradual", ", over=10")):
+        runs[label] = run_story(loops_cfg, GRADUAL.format(over=over), tmp_path / label, end=90.0, seed=1, fcd=True)
+    for vehicle in ("veh05", "veh06", "veh07"):
+        before = runs["gradual"].fcd.speeds(vehicle, 60, 60)[60.0]
+        assert before > 8.0, before  # driving when the story starts
+        gradual = runs["gradual"].fcd.speeds(vehicle, 60, 90)
+        plain = runs["plain"].fcd.speeds(vehicle, 60, 90)
+        # At once: down to the cap within the next steps, braking as hard as it must.
+        assert plain[62.0] <= 2.0 + 1e-6, plain
+        # Gradually: by SUMO's linear slowDown, (before - 2) / 10 per second (the traffic ahead may
+        # ask for more later on: a junction, a leader), then capped.
+        for t in (61.0, 62.0):
+            expected = before - (before - 2.0) * (t - 60.0) / 10.0
+            assert gradual[t] == pytest.approx(expected, abs=0.3), (vehicle, t, gradual)
+            assert gradual[t] > plain[t] + 2.0, (vehicle, t, gradual, plain)
+        assert max(v for t, v in gradual.items() if t >= 72.0) <= 2.0 + 1e-6, gradual
+    # A cap far below the speed makes SUMO warn of emergency braking; the ramp does not.
+    assert "emergency braking" not in runs["gradual"].result.stderr + runs["gradual"].result.stdout
+
+
+def test_a_speed_effect_over_negative_seconds_is_an_error(loops_cfg: Path, tmp_path: Path) -> None:
+    result = run_story(loops_cfg, GRADUAL.format(over=", over=-1"), tmp_path, end=5.0, check=False).result
+    assert result.returncode == 2 and "over" in result.stderr, result.stderr
