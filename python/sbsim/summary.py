@@ -9,6 +9,8 @@ The program writes one JSON object at the end of a run::
      "signals": {"cause": count}, "services_created": 3,
      "messages": {"Type": {"sent": 10, "delivered": 8}},
      "statistics": {"name": {"count": 3, "sum": 9.0, "mean": 3.0, "min": -2.0, "max": 7.0}},
+     "criteria": [{"name": "NoCollision()", "passed": true, "actual": "...", "expected": "..."}],
+     "verdict": "passed",
      "sumo_warnings": {"total": 2, "kinds": [{"kind": "...", "count": 2}]},
      "held_at_end": {...}, "timing": {"wall_s": ..., "sumo_s": ..., "storyboard_s": ..., ...}}
 
@@ -128,6 +130,10 @@ def table_columns(summary: Summary) -> dict[str, Any]:
     for name, aggregate in summary.get("statistics", {}).items():
         for figure in ("count", "sum", "mean", "min", "max"):
             row[f"stat:{name}:{figure}"] = aggregate.get(figure)
+    if summary.get("criteria"):
+        row["verdict"] = summary.get("verdict")
+        for criterion in summary["criteria"]:
+            row[f"criterion:{criterion['name']}"] = criterion["passed"]
     timing = summary.get("timing", {})
     row["sumo_s"] = timing.get("sumo_s")
     row["storyboard_s"] = timing.get("storyboard_s")

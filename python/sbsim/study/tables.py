@@ -9,24 +9,36 @@ from typing import Any
 from sbsim.events import read_events
 from sbsim.study.spec import Run, StudySpec
 
+#: Exit codes of runs that went to their end: 0, and 3 (a scenario criterion failed; the verdict is a column).
+COMPLETE = (0, 3)
+
+
+def table_of(records: Sequence[dict[str, Any]]) -> Any:
+    """A pyarrow table with a column for every key of any record (first seen first), None where a
+    record lacks it: pyarrow's from_pylist takes the columns from the first record only, so a
+    signal's cause or a deactivation's reason would vanish behind a first activation."""
+    import pyarrow as pa
+
+    keys = list(dict.fromkeys(k for record in records for k in record))
+    return pa.table({k: [record.get(k) for record in records] for k in keys})
+
 
 def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
-    """runs.parquet (one row per run) and events.parquet (the successful runs' events)."""
-    import pyarrow as pa
+    """runs.parquet (one row per run) and events.parquet (the complete runs' events, every field)."""
     import pyarrow.parquet as pq
 
     spec.directory.mkdir(parents=True, exist_ok=True)
-    pq.write_table(pa.Table.from_pylist(list(rows)), spec.directory / "runs.parquet")
+    pq.write_table(table_of(list(rows)), spec.directory / "runs.parquet")
     events: list[dict[str, Any]] = []
     for r, row in zip(runs, rows, strict=True):
-        if row["exit_code"] != 0:
+        if row["exit_code"] not in COMPLETE:
             continue
         path = spec.directory / "runs" / r.id / "events.jsonl"
         if not path.exists():
             continue
         context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
         events.extend({**context, **event} for event in read_events(path))
-    pq.write_table(pa.Table.from_pylist(events), spec.directory / "events.parquet")
+    pq.write_table(table_of(events), spec.directory / "events.parquet")
 
 
 def plot(directory: Path, spec: StudySpec) -> list[Path]:
@@ -38,7 +50,7 @@ def plot(directory: Path, spec: StudySpec) -> list[Path]:
     import pandas as pd
 
     table = pd.read_parquet(directory / "runs.parquet")
-    table = table[table["exit_code"] == 0]
+    table = table[table["exit_code"].isin(COMPLETE)]
     names = list(spec.parameters)
     labels = table[names].astype(str).agg(", ".join, axis=1) if names else pd.Series("all", index=table.index)
     out = []
