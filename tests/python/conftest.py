@@ -8,9 +8,8 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from sbsim.runner import cmake_prefix, executable
 from sbsim.scenarios.grid import make_grid
-from sbsim_helpers import OFFSET_BOUNDARY, SERVICES_SOURCE
+from sbsim_helpers import OFFSET_BOUNDARY, SERVICES_SOURCE, sdk_prefix
 
 
 @pytest.fixture(scope="session")
@@ -44,21 +43,6 @@ def offset_cfg(trips_cfg: Path, tmp_path_factory: pytest.TempPathFactory) -> Pat
     assert n == 1
     net.write_text(text, encoding="utf-8")
     return out / trips_cfg.name
-
-
-def sdk_prefix(directory: Path) -> Path:
-    """The C++ SDK of the sbsim under test: installed from its build folder when it is one (so a
-    plugin sees this build's headers), else the one pip installed."""
-    build = executable().parent
-    if not (build / "CMakeCache.txt").is_file():
-        return cmake_prefix()
-    prefix = directory / "sdk"
-    done = subprocess.run(
-        ["cmake", "--install", str(build), "--prefix", str(prefix)], capture_output=True, text=True, check=False
-    )
-    if done.returncode != 0:
-        pytest.fail(f"installing the SDK failed:\n{done.stdout}\n{done.stderr}")
-    return prefix
 
 
 @pytest.fixture(scope="session")
