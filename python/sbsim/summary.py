@@ -8,6 +8,9 @@ The program writes one JSON object at the end of a run::
      "stories": [{"name": "rain", "activations": 12, "active_vehicle_seconds": 340.0}],
      "signals": {"cause": count}, "services_created": 3,
      "messages": {"Type": {"sent": 10, "delivered": 8}},
+     "statistics": {"name": {"count": 3, "sum": 9.0, "mean": 3.0, "min": -2.0, "max": 7.0}},
+     "criteria": [{"name": "NoCollision()", "passed": true, "actual": "...", "expected": "..."}],
+     "verdict": "passed",
      "sumo_warnings": {"total": 2, "kinds": [{"kind": "...", "count": 2}]},
      "held_at_end": {...}, "timing": {"wall_s": ..., "sumo_s": ..., "storyboard_s": ..., ...}}
 
@@ -111,7 +114,8 @@ def run_figures(summary: Summary) -> dict[str, Any]:
 
 def table_columns(summary: Summary) -> dict[str, Any]:
     """The summary as one table row: counts, per-story activations and active vehicle-seconds,
-    signals per cause, messages per type, the time in SUMO and in the storyboard."""
+    signals per cause, messages per type, per statistic ``stat:<name>:<count|sum|mean|min|max>``,
+    the time in SUMO and in the storyboard."""
     row: dict[str, Any] = {k: summary[k] for k in ("steps", "vehicles_seen", "peak_running") if k in summary}
     end = summary.get("end")
     row["end_reason"] = end.get("reason") if isinstance(end, dict) else None
@@ -128,6 +132,13 @@ def table_columns(summary: Summary) -> dict[str, Any]:
     if "channel_busy_ratio" in summary:
         row["cbr_mean"] = summary["channel_busy_ratio"]["mean"]
         row["cbr_max"] = summary["channel_busy_ratio"]["max"]
+    for name, aggregate in summary.get("statistics", {}).items():
+        for figure in ("count", "sum", "mean", "min", "max"):
+            row[f"stat:{name}:{figure}"] = aggregate.get(figure)
+    if summary.get("criteria"):
+        row["verdict"] = summary.get("verdict")
+        for criterion in summary["criteria"]:
+            row[f"criterion:{criterion['name']}"] = criterion["passed"]
     timing = summary.get("timing", {})
     row["sumo_s"] = timing.get("sumo_s")
     row["storyboard_s"] = timing.get("storyboard_s")

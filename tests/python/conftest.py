@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import re
 import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
 from sbsim.scenarios.grid import make_grid
-from sbsim_helpers import OFFSET_BOUNDARY
+from sbsim_helpers import OFFSET_BOUNDARY, SERVICES_SOURCE, sdk_prefix
 
 
 @pytest.fixture(scope="session")
@@ -42,3 +43,21 @@ def offset_cfg(trips_cfg: Path, tmp_path_factory: pytest.TempPathFactory) -> Pat
     assert n == 1
     net.write_text(text, encoding="utf-8")
     return out / trips_cfg.name
+
+
+@pytest.fixture(scope="session")
+def services_module(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    if shutil.which("cmake") is None:
+        pytest.skip("cmake is not installed")
+    root = tmp_path_factory.mktemp("test-services")
+    build = root / "build"
+    for args in (
+        ["-S", str(SERVICES_SOURCE), "-B", str(build), f"-DCMAKE_PREFIX_PATH={sdk_prefix(root)}"],
+        ["--build", str(build), "-j2"],
+    ):
+        done = subprocess.run(["cmake", *args], capture_output=True, text=True, timeout=600, check=False)
+        if done.returncode != 0:
+            pytest.fail(f"cmake {args[0]} failed:\n{done.stdout}\n{done.stderr}")
+    library = build / "libtest_services.so"
+    assert library.is_file()
+    return library

@@ -4,18 +4,22 @@ from __future__ import annotations
 
 import os
 import re
+import subprocess
 import textwrap
 from collections import defaultdict
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import pytest
 from sbsim.fcd import read_timesteps
-from sbsim.runner import RunResult, read_events, run
+from sbsim.runner import RunResult, cmake_prefix, executable, read_events, run
 
 #: The repository's root and its ready scenarios.
 REPO = Path(__file__).resolve().parents[2]
 STORIES = REPO / "stories"
+#: Test-local service modules (SpeedStatisticsService, ThrowingService), built by conftest.services_module.
+SERVICES_SOURCE = REPO / "tests" / "python" / "plugins" / "services"
 
 #: convBoundary written into the offset scenario's net (conftest.offset_cfg): xmin, ymin, xmax, ymax.
 OFFSET_BOUNDARY = (-100.0, -50.0, 700.0, 650.0)
@@ -224,3 +228,18 @@ def assert_bad_input(result: RunResult, *needles: str) -> str:
         assert needle in line, f"{needle!r} not in {line!r}"
     assert result.stdout == "", f"unexpected stdout:\n{result.stdout}"
     return line
+
+
+def sdk_prefix(directory: Path) -> Path:
+    """The C++ SDK of the sbsim under test: installed from its build folder when it is one (so a
+    plugin sees this build's headers), else the one pip installed."""
+    build = executable().parent
+    if not (build / "CMakeCache.txt").is_file():
+        return cmake_prefix()
+    prefix = directory / "sdk"
+    done = subprocess.run(
+        ["cmake", "--install", str(build), "--prefix", str(prefix)], capture_output=True, text=True, check=False
+    )
+    if done.returncode != 0:
+        pytest.fail(f"installing the SDK failed:\n{done.stdout}\n{done.stderr}")
+    return prefix

@@ -70,6 +70,8 @@ OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--plugin": (None, None),
     "--param": (None, None),
     "--summary": (None, None),
+    "--statistics": (None, None),
+    "--junit": (None, None),
     "--middleware-interval": (None, "0.1"),
     "--v2x-range": (None, "500"),
     "--v2x-latency": (None, "0.001"),

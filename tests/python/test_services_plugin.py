@@ -10,8 +10,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from sbsim.runner import RunResult, cmake_prefix, run
-from sbsim_helpers import REPO, STORIES, assert_no_crash, message_counts
+from sbsim.runner import RunResult, run
+from sbsim_helpers import REPO, STORIES, assert_no_crash, message_counts, sdk_prefix
 
 EXAMPLE = REPO / "examples" / "service-module"
 #: The accident scenario: the queue behind the wreck brakes hard, so brake lights go on.
@@ -36,9 +36,10 @@ def module(tmp_path_factory: pytest.TempPathFactory) -> Module:
     source = root / "service-module"
     shutil.copytree(EXAMPLE, source, ignore=shutil.ignore_patterns("build", "CMakeCache.txt", "CMakeFiles"))
     build = root / "build"
-    # Where pip put sbsim's SDK in the environment these tests run with.
+    # The SDK of the sbsim under test (its build folder's, installed; else the one pip installed):
+    # a module built against other headers may not match its classes' layout.
     # pytest.fail, not assert: a failed build is a broken environment, not a failed check.
-    configure = cmake("-S", str(source), "-B", str(build), f"-DCMAKE_PREFIX_PATH={cmake_prefix()}")
+    configure = cmake("-S", str(source), "-B", str(build), f"-DCMAKE_PREFIX_PATH={sdk_prefix(root)}")
     if configure.returncode != 0:
         pytest.fail(f"configuring the example failed:\n{configure.stdout}\n{configure.stderr}")
     built = cmake("--build", str(build), "-j2")

@@ -16,7 +16,7 @@ STORY = """
 
     def createStories(board):
         fast = storyboard.SpeedConditionGreater(float(board.parameter("threshold", 5)))
-        board.registerStory(storyboard.Story(fast, [storyboard.SignalEffect("fast")], name="fast"))
+        board.registerStory(storyboard.Story(fast, [storyboard.SignalEffect("fast", on_exit="slow")], name="fast"))
         picked = storyboard.LikelihoodCondition(board.getRandomNumberGenerator(), 0.3)
         board.registerStory(storyboard.Story(picked, [storyboard.SpeedEffect(4.0)], name="picked"))
 """
@@ -75,6 +75,11 @@ def test_study_on_two_workers_writes_both_tables_like_sequential_runs(
 
     events = pd.read_parquet(spec.directory / "events.parquet")
     assert {"run", "threshold", "seed", "t", "type", "story", "vehicle"} <= set(events.columns)
+    # Every field of every event, not only the first event's (an activation has no cause).
+    assert {"cause", "others", "reason", "phase"} <= set(events.columns), events.columns
+    signals = events[events["type"] == "signal"]
+    assert set(signals["cause"]) == {"fast", "slow"} and set(signals["phase"].dropna()) == {"exit"}
+    assert set(events[events["type"] == "deactivate"]["reason"]) >= {"condition"}
     assert set(events["run"]) == set(runs["run"])
 
     # Every run's event log is byte for byte that of the same run made by hand, one after another.

@@ -37,6 +37,11 @@ public:
     virtual void handleMessage(Message& msg);
     virtual void finish() {}
 
+    /// Called inside the handler of an exception that this module's initialize(), handleMessage()
+    /// or finish() threw: a module running a user's code (a service) throws an error naming
+    /// itself instead. The default rethrows the exception as it is.
+    [[noreturn]] virtual void failed() { throw; }
+
 protected:
     /// For modules named after construction (services are named for their vehicle).
     void setName(std::string name) { name_ = std::move(name); }

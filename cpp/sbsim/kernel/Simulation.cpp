@@ -31,7 +31,11 @@ Module& Simulation::addModule(std::unique_ptr<Module> module) {
     modules_.push_back(std::move(module));
     if (initialized_ && !finished_) {
         m.initialized_ = true;
-        m.initialize();
+        try {
+            m.initialize();
+        } catch (...) {
+            m.failed();
+        }
     }
     return m;
 }
@@ -39,7 +43,13 @@ Module& Simulation::addModule(std::unique_ptr<Module> module) {
 void Simulation::removeModule(Module& module) {
     const auto it = std::find_if(modules_.begin(), modules_.end(), [&](const auto& p) { return p.get() == &module; });
     if (it == modules_.end()) throw std::logic_error("module '" + module.name() + "' is not part of this simulation");
-    if (module.initialized_ && !finished_) module.finish();
+    if (module.initialized_ && !finished_) {
+        try {
+            module.finish();
+        } catch (...) {
+            module.failed();
+        }
+    }
     fes_.removeAllFor(module);
     modules_.erase(it);
 }
@@ -53,7 +63,11 @@ void Simulation::initialize() {
         Module& m = *modules_[i];
         if (!m.initialized_) {
             m.initialized_ = true;
-            m.initialize();
+            try {
+                m.initialize();
+            } catch (...) {
+                m.failed();
+            }
         }
     }
 }
@@ -73,7 +87,12 @@ Simulation::StopReason Simulation::run(SimTime limit) {
         Message& msg = fes_.pop(owned);
         now_ = msg.arrivalTime();
         ++events_;
-        msg.arrivalModule()->handleMessage(msg);
+        Module& target = *msg.arrivalModule();
+        try {
+            target.handleMessage(msg);
+        } catch (...) {
+            target.failed();
+        }
     }
 }
 
@@ -81,7 +100,12 @@ void Simulation::finish() {
     if (finished_) return;
     finished_ = true;
     for (const auto& m : modules_) {
-        if (m->initialized_) m->finish();
+        if (!m->initialized_) continue;
+        try {
+            m->finish();
+        } catch (...) {
+            m->failed();
+        }
     }
 }
 

@@ -49,7 +49,13 @@ void Middleware::trigger() {
     // trigger is the next one.
     if (simTime() <= departedAt_) return;
     manager_.stations().dropExpired(vehicleId_, simTime());
-    for (Service* s : services_) s->trigger();
+    for (Service* s : services_) {
+        try {
+            s->trigger();
+        } catch (...) {
+            s->failed();
+        }
+    }
 }
 
 void Middleware::handleMessage(kernel::Message& msg) {
@@ -63,9 +69,21 @@ void Middleware::handleMessage(kernel::Message& msg) {
             if (!its->reaches(position())) return;
             its->store(manager_.stations(), vehicleId_, simTime());
         }
-        for (Service* s : services_) s->indicate(message);
+        for (Service* s : services_) {
+            try {
+                s->indicate(message);
+            } catch (...) {
+                s->failed();
+            }
+        }
         if (its != nullptr) {
-            for (Service* s : services_) its->dispatch(*s);
+            for (Service* s : services_) {
+                try {
+                    its->dispatch(*s);
+                } catch (...) {
+                    s->failed();
+                }
+            }
         }
     } else {
         kernel::Module::handleMessage(msg);
@@ -73,7 +91,13 @@ void Middleware::handleMessage(kernel::Message& msg) {
 }
 
 void Middleware::signal(const traffic::StoryboardSignal& signal) {
-    for (Service* s : services_) s->receiveSignal(signal);
+    for (Service* s : services_) {
+        try {
+            s->receiveSignal(signal);
+        } catch (...) {
+            s->failed();
+        }
+    }
 }
 
 }  // namespace sbsim::services

@@ -1,8 +1,11 @@
 #include "sbsim/services/Service.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 
 #include "sbsim/services/Middleware.h"
+#include "sbsim/services/ServiceError.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
 
@@ -28,6 +31,31 @@ radio::Medium& Service::medium() const { return hostOf(middleware_).manager().me
 
 void Service::send(std::unique_ptr<radio::V2xMessage> message) {
     hostOf(middleware_).manager().medium().broadcast(vehicleId(), std::move(message));
+}
+
+void Service::failed() {
+    const std::string where =
+        fmt::format("service {} on vehicle {} at t={} s", spec_ == nullptr ? name() : spec_->type,
+                    middleware_ == nullptr ? std::string("?") : middleware_->vehicleId(), simTime().str());
+    try {
+        throw;
+    } catch (const ServiceError&) {
+        throw;
+    } catch (const ServicesConfigError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw ServiceError(fmt::format("{}: {}", where, e.what()));
+    } catch (...) {
+        throw ServiceError(fmt::format("{}: an exception that is not a std::exception", where));
+    }
+}
+
+void Service::recordScalar(std::string_view name, double value) { emit(name, value); }
+
+void Service::emit(std::string_view name, double value) {
+    const Middleware& host = hostOf(middleware_);
+    host.manager().statistics().record(host.vehicleId(), spec_ == nullptr ? std::string_view{} : spec_->type, name,
+                                       simTime(), value);
 }
 
 void Service::listenToAllSignals() { hostOf(middleware_).manager().listenToAllSignals(*this); }

@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -52,6 +53,10 @@ public:
     /// The station's id: its vehicle's, or the roadside unit's.
     const std::string& stationId() const { return vehicleId(); }
 
+    /// Rethrows what this service's code threw as a ServiceError naming the service type, the
+    /// vehicle and the time (a ServicesConfigError, a bad parameter, stays as it is).
+    [[noreturn]] void failed() override;
+
 protected:
     /// Commands and live queries for this service's vehicle; a max speed set here composes with
     /// the stories' caps (ServiceVehicle).
@@ -76,6 +81,16 @@ protected:
     void send(std::unique_ptr<radio::V2xMessage> message);
     /// From now on, also receive storyboard signals meant for other vehicles.
     void listenToAllSignals();
+
+    /// Records a scalar of this service (OMNeT++'s recordScalar), typically once in finish(): a row
+    /// (this vehicle, this service's type, `name`, now, `value`) of the run's statistics
+    /// (--statistics) and a value of `name`'s aggregate in the summary. Throws
+    /// std::invalid_argument for an empty name or a value that is not finite.
+    void recordScalar(std::string_view name, double value);
+    /// Records one value of the time series `name` at the current time (OMNeT++'s emit of a
+    /// statistic): the same row as recordScalar, once per call.
+    void emit(std::string_view name, double value);
+    using kernel::Module::emit;  // the kernel's signals stay reachable
 
     /// A study parameter of the run (`--param NAME=VALUE`), or nothing; reading it counts as
     /// used. Lets a sweep vary a service's threshold or range without editing the services file.

@@ -1,5 +1,7 @@
 #include "sbsim/services/ServiceManager.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -53,6 +55,11 @@ radio::Medium& ServiceManager::medium() const {
     return *medium_;
 }
 
+kernel::Statistics& ServiceManager::statistics() const {
+    if (statistics_ == nullptr) throw std::logic_error("no statistics recorder in this simulation");
+    return *statistics_;
+}
+
 Middleware* ServiceManager::middlewareOf(const std::string& vehicleId) const {
     const auto it = middlewares_.find(vehicleId);
     return it == middlewares_.end() ? nullptr : it->second;
@@ -70,12 +77,25 @@ void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, const k
     if (id != traffic::StoryboardSignal::id) return;
     const auto& signal = dynamic_cast<const traffic::StoryboardSignal&>(value);
     Middleware* ego = middlewareOf(signal.ego);
-    if (ego != nullptr) ego->signal(signal);
+    if (ego != nullptr) {
+        ego->signal(signal);
+    } else if (signalsWithoutServices_++ == 0) {
+        // Likely a filter in the services file that leaves the story's vehicles out.
+        fmt::print(stderr,
+                   "sbsim: warning: t={} s: story '{}' signalled '{}' to vehicle {}, which has no services; further "
+                   "such signals are only counted (summary: signals without services)\n",
+                   simTime().str(), signal.story, signal.cause, signal.ego);
+    }
     // Index loop over the listeners present now: a listener may start listening to all meanwhile.
     const std::size_t listeners = allSignals_.size();
     for (std::size_t i = 0; i < listeners && i < allSignals_.size(); ++i) {
         Service* s = allSignals_[i];
-        if (ego == nullptr || s->vehicleId() != signal.ego) s->receiveSignal(signal);
+        if (ego != nullptr && s->vehicleId() == signal.ego) continue;
+        try {
+            s->receiveSignal(signal);
+        } catch (...) {
+            s->failed();
+        }
     }
 }
 

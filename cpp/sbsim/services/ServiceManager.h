@@ -10,6 +10,7 @@
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/services/Middleware.h"
 #include "sbsim/services/ServicesConfig.h"
@@ -43,6 +44,10 @@ public:
     /// (default: a registry of the manager's own). A station's entry goes when it leaves.
     void useStations(std::shared_ptr<facilities::StationRegistry> stations) { stations_ = std::move(stations); }
     facilities::StationRegistry& stations() const { return *stations_; }
+    /// Where the services' recordScalar and emit go (the run's, owned by its Scenario).
+    void setStatistics(kernel::Statistics& statistics) { statistics_ = &statistics; }
+    /// Throws std::logic_error if none was set.
+    kernel::Statistics& statistics() const;
     /// Which vehicles are equipped (--penetration); by default all. Unequipped vehicles get only
     /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
     void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
@@ -53,6 +58,8 @@ public:
     Middleware* middlewareOf(const std::string& vehicleId) const;
     void listenToAllSignals(Service& service);
     std::size_t servicesCreated() const { return servicesCreated_; }
+    /// Storyboard signals fired for a vehicle that has no services (the first is warned of).
+    std::size_t signalsWithoutServices() const { return signalsWithoutServices_; }
     /// Vehicles with a middleware now (each running vehicle its filters selected).
     std::size_t middlewares() const { return middlewares_.size(); }
 
@@ -69,12 +76,14 @@ private:
     kernel::SimTime interval_;
     const traffic::VehicleSnapshot& snapshot_;
     radio::Medium* medium_ = nullptr;
+    kernel::Statistics* statistics_ = nullptr;
     traffic::Penetration penetration_;
     std::unordered_map<std::string, Middleware*> middlewares_;
     std::vector<Middleware*> departureOrder_;
     kernel::Message triggerTimer_{"service trigger"};
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;
+    std::size_t signalsWithoutServices_ = 0;
     traffic::VehicleRegistry* registry_;
     std::shared_ptr<facilities::StationRegistry> stations_ = std::make_shared<facilities::StationRegistry>();
 };

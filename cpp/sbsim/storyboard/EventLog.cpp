@@ -32,21 +32,24 @@ Event event(kernel::SimTime t, std::string_view type, std::string_view story, st
 
 // One line. Invalid UTF-8 (story names and causes come from scripts, ids from SUMO files) is
 // replaced rather than thrown mid-run.
-void write(std::ostream& out, const Event& e) {
-    out << e.dump(-1, ' ', false, Event::error_handler_t::replace) << '\n';
-}
+std::string line(const Event& e) { return e.dump(-1, ' ', false, Event::error_handler_t::replace) + '\n'; }
 
 }  // namespace
 
+void EventLog::write(const std::string& text) {
+    out_ << text;
+    if (keep_) kept_ += text;
+}
+
 void EventLog::activate(kernel::SimTime t, std::string_view story, std::optional<std::string_view> vehicle) {
-    write(out_, event(t, "activate", story, vehicle));
+    write(line(event(t, "activate", story, vehicle)));
 }
 
 void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::optional<std::string_view> vehicle,
                           std::string_view reason) {
     Event e = event(t, "deactivate", story, vehicle);
     e["reason"] = reason;
-    write(out_, e);
+    write(line(e));
 }
 
 void EventLog::signal(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view cause,
@@ -55,7 +58,7 @@ void EventLog::signal(kernel::SimTime t, std::string_view story, std::string_vie
     e["cause"] = cause;
     e["others"] = others;
     if (onExit) e["phase"] = "exit";
-    write(out_, e);
+    write(line(e));
 }
 
 }  // namespace sbsim::storyboard

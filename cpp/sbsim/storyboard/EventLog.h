@@ -27,9 +27,17 @@ public:
     void signal(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view cause,
                 const std::vector<std::string>& others, bool onExit = false);
     void flush() { out_.flush(); }
+    /// From now on, also keep the lines in memory (for criteria that read the event log).
+    void keepLines() { keep_ = true; }
+    /// The lines written since keepLines().
+    const std::string& keptLines() const { return kept_; }
 
 private:
+    void write(const std::string& text);
+
     std::ostream& out_;
+    bool keep_ = false;
+    std::string kept_;
 };
 
 }  // namespace sbsim::storyboard

@@ -25,10 +25,11 @@ Storyboard::Storyboard(traffic::VehicleRegistry& registry, EventLog* log)
 Storyboard::~Storyboard() = default;
 
 traffic::SnapshotColumns Storyboard::columns() const {
-    if (stories_.empty()) return {};
+    if (stories_.empty() && criteria_.empty()) return {};
     // Speed for the stacks that hold a vehicle's speed (settle()), whatever the conditions read.
     traffic::SnapshotColumns columns = traffic::SnapshotColumns::Speed;
     for (const Condition* c : conditions_) columns |= c->columns();
+    for (const CriterionPtr& c : criteria_) columns |= c->columns();
     return columns;
 }
 
@@ -47,6 +48,12 @@ void Storyboard::collectConditions(Condition& root) {
 void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
     story->setDefaultName(fmt::format("story{}", stories_.size()));
+    // One name, one story: the summary, the event log and every table key stories by name.
+    for (const StoryPtr& s : stories_) {
+        if (s->name() == story->name()) {
+            throw std::invalid_argument(fmt::format("two stories are named '{}'; give each its own name", s->name()));
+        }
+    }
     collectConditions(story->condition());
     if (story->isWorldStory()) {
         world_.addStory(*story);
@@ -55,6 +62,30 @@ void Storyboard::registerStory(StoryPtr story) {
     }
     stories_.push_back(std::move(story));
     if (columnsChanged_) columnsChanged_(columns());
+}
+
+void Storyboard::registerCriterion(CriterionPtr criterion) {
+    if (!criterion) throw std::invalid_argument("registerCriterion needs a criterion, got None");
+    if (criterion->needsEvents()) {
+        // Without --events the board keeps a log of its own, in memory only.
+        if (log_ == nullptr) {
+            ownLog_ = std::make_unique<EventLog>(discarded_);
+            log_ = ownLog_.get();
+            vehicles_.setLog(log_);
+            world_.setLog(log_);
+        }
+        log_->keepLines();
+    }
+    criteria_.push_back(std::move(criterion));
+    if (columnsChanged_) columnsChanged_(columns());
+}
+
+std::vector<std::pair<std::string, CriterionVerdict>> Storyboard::verdicts() const {
+    std::vector<std::pair<std::string, CriterionVerdict>> out;
+    out.reserve(criteria_.size());
+    const CriterionRun run{stories_, statistics_, log_ != nullptr ? std::string_view(log_->keptLines()) : ""};
+    for (const CriterionPtr& c : criteria_) out.emplace_back(c->name(), c->verdict(run));
+    return out;
 }
 
 std::size_t Storyboard::maxConditionStates() const {
@@ -83,6 +114,7 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     for (Condition* c : conditions_) c->prepare(ctx);
     if (!world_.empty()) world_.run(now_);
     vehicles_.run(ctx, simulation().parallel());
+    for (const CriterionPtr& c : criteria_) c->observe(ctx);
     if (log_ != nullptr) log_->flush();
     updateSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }

@@ -5,14 +5,18 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/RandomStream.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/storyboard/ActivationObserver.h"
+#include "sbsim/storyboard/Criterion.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/NetworkStack.h"
 #include "sbsim/storyboard/Story.h"
@@ -58,8 +62,17 @@ public:
     /// Artery's warm-up period, as scripts ask for it (getWarmupEndTime); it changes nothing else.
     void setWarmupEndTime(kernel::SimTime t) { warmupEnd_ = t; }
     kernel::SimTime warmupEndTime() const { return warmupEnd_; }
+    /// Where scripts' board.record goes (the run's, owned by its Scenario).
+    void setStatistics(kernel::Statistics& statistics) { statistics_ = &statistics; }
+    /// Null if none was set.
+    kernel::Statistics* statistics() const { return statistics_; }
 
     void registerStory(StoryPtr story);
+    /// Adds a criterion: it observes every step after the stories and judges at the run's end.
+    void registerCriterion(CriterionPtr criterion);
+    const std::vector<CriterionPtr>& criteria() const { return criteria_; }
+    /// Each criterion's verdict now (at the run's end: over the whole run), in registration order.
+    std::vector<std::pair<std::string, CriterionVerdict>> verdicts() const;
     const std::vector<StoryPtr>& stories() const { return stories_; }
     /// Random stream k of the simulation (Artery scripts pass the generator index).
     std::shared_ptr<kernel::RandomStream> randomStream(unsigned k) { return simulation().randomStream(k); }
@@ -87,9 +100,12 @@ private:
     void collectConditions(Condition& root);
 
     EventLog* log_;
+    std::ostream discarded_{nullptr};   // where ownLog_ writes (nowhere) besides the lines it keeps
+    std::unique_ptr<EventLog> ownLog_;  // when no log was given and a criterion reads events
     kernel::SimTime now_;
     bool updated_ = false;  ///< a pass has run: now_ is a step's time
     std::vector<StoryPtr> stories_;
+    std::vector<CriterionPtr> criteria_;
     std::vector<Condition*> conditions_;  // every distinct node of every tree, for prepare/forget
     std::unordered_set<Condition*> knownConditions_;
     std::optional<double> neighbourRadius_;
@@ -101,6 +117,7 @@ private:
     VehiclePass vehicles_;
     double updateSeconds_ = 0;
     kernel::SimTime warmupEnd_;
+    kernel::Statistics* statistics_ = nullptr;
 };
 
 }  // namespace sbsim::storyboard

@@ -159,7 +159,7 @@ void VehiclePass::run(const EvaluationContext& ctx, kernel::ParallelFor& paralle
         // A vehicle's state is kept until it leaves, even while idle: stories that flip often
         // (a speed threshold) would otherwise rebuild it again and again.
         if (changed) row.settling = row.state->vehicle->stack.settling();
-        if (row.settling) row.state->vehicle->stack.settle(snapshot.speeds()[i]);
+        if (row.settling) row.state->vehicle->stack.settle(snapshot.speeds()[i], snapshot.time());
     }
     stateIds_ = ids;
 }

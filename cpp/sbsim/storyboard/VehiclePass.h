@@ -29,6 +29,8 @@ namespace sbsim::storyboard {
 /// nothing but the time, since only the ordered pass acts on the results.
 class SBSIM_API VehiclePass {
 public:
+    /// Events go to `log` from now on (a log the board made when a criterion reads events).
+    void setLog(EventLog* log) { log_ = log; }
     /// Where SignalEffects' signals go (the board emits them as kernel signals).
     struct SignalOutlet {
         std::function<bool()> listened;  ///< whether anyone would hear one (else none is built)

@@ -26,6 +26,8 @@ namespace sbsim::storyboard {
 /// world apart from any vehicle's.
 class SBSIM_API WorldPass {
 public:
+    /// Events go to `log` from now on (a log the board made when a criterion reads events).
+    void setLog(EventLog* log) { log_ = log; }
     /// Effect activations take their tokens from `registry` (unique across everything that acts).
     WorldPass(traffic::VehicleRegistry& registry, EventLog* log);
     ~WorldPass();

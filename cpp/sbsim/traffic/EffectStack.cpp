@@ -17,10 +17,11 @@ std::optional<EffectStack::Hold> EffectStack::effectiveHold() const {
     return holds_.back().second;
 }
 
-void EffectStack::pushSpeedCap(Token token, double mps) {
+void EffectStack::pushSpeedCap(Token token, double mps, double overSeconds) {
     const auto before = effectiveCap();
     if (!before) recordedMaxSpeed_ = vehicle_->maxSpeed();
     caps_.emplace_back(token, mps);
+    if (overSeconds > 0) capRamps_.emplace_back(token, overSeconds);
     applyCap(before);
 }
 
@@ -84,6 +85,7 @@ void EffectStack::remove(Token token) {
     if (const auto it = std::find_if(caps_.begin(), caps_.end(), matches); it != caps_.end()) {
         const auto before = effectiveCap();
         caps_.erase(it);
+        std::erase_if(capRamps_, matches);
         applyCap(before);
     } else if (const auto h = std::find_if(holds_.begin(), holds_.end(), matches); h != holds_.end()) {
         const auto before = effectiveHold();
@@ -147,7 +149,31 @@ void EffectStack::warn(const std::string& message) const {
 void EffectStack::applyCap(std::optional<double> before) {
     const auto now = effectiveCap();
     if (now == before) return;
+    if (ramp_) {
+        // Another cap (or none) rules now: SUMO's ramp ends here, unless a hold commands the speed.
+        ramp_.reset();
+        if (holds_.empty()) vehicle_->setSpeed(-1);
+    }
+    if (now && !capRamps_.empty() && capRamps_.back().first == caps_.back().first) {
+        const double speed = vehicle_->speed();
+        if (speed > *now) {
+            // Down to the cap along SUMO's ramp; the cap itself follows once the ramp has run.
+            vehicle_->slowDown(*now, capRamps_.back().second);
+            ramp_ = Ramp{*now, capRamps_.back().second, std::nullopt};
+            return;
+        }
+    }
     vehicle_->setMaxSpeed(now ? *now : recordedMaxSpeed_);
+}
+
+void EffectStack::settleRamp(kernel::SimTime now) {
+    if (!ramp_->start) {
+        ramp_->start = now;
+        return;
+    }
+    if ((now - *ramp_->start).seconds() + 1e-9 < ramp_->seconds) return;
+    vehicle_->setMaxSpeed(ramp_->cap);
+    ramp_.reset();
 }
 
 void EffectStack::settleHold(double speed) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/SimTime.h"
 #include "sbsim/traffic/Color.h"
 #include "sbsim/traffic/LatestWins.h"
 #include "sbsim/traffic/VehicleController.h"
@@ -48,7 +49,10 @@ public:
     /// Without `warn`, warnings go to stderr.
     explicit EffectStack(VehicleController& vehicle, Warn warn = {}) : vehicle_(&vehicle), warn_(std::move(warn)) {}
 
-    void pushSpeedCap(Token token, double mps);
+    /// A cap on the max speed; with `overSeconds` > 0 a vehicle faster than the cap slows down to
+    /// it linearly over that time (SUMO's slowDown) and the cap is set after it, so SUMO brakes no
+    /// harder than the ramp asks. It composes like any cap: the latest rules.
+    void pushSpeedCap(Token token, double mps, double overSeconds = 0);
     void pushHold(Token token, Hold hold);
     void pushSpeedFactor(Token token, double factor);
     void pushType(Token token, std::string typeId);
@@ -61,17 +65,19 @@ public:
     /// Called each step with the vehicle's speed while settling(): an EmergencyStop braking with
     /// slowDown() is turned into a hold once the vehicle stands, since SUMO lets it drive on after
     /// slowDown; a lane is renewed.
-    void settle(double speed) {
+    /// `now`: the step's time (a gradual cap is set once its ramp has run).
+    void settle(double speed, kernel::SimTime now = kernel::SimTime::zero()) {
         if (!holds_.empty()) settleHold(speed);
         if (!lanes_.empty()) holdLane();
+        if (ramp_) settleRamp(now);
     }
 
     bool empty() const {
         return caps_.empty() && holds_.empty() && factors_.empty() && types_.empty() && colors_.empty() &&
                lanes_.empty() && routes_.empty();
     }
-    /// Whether settle() has work: a Stop, EmergencyStop or lane is active.
-    bool settling() const { return !holds_.empty() || !lanes_.empty(); }
+    /// Whether settle() has work: a Stop, EmergencyStop or lane is active, or a gradual cap ramps.
+    bool settling() const { return !holds_.empty() || !lanes_.empty() || ramp_.has_value(); }
     std::optional<double> effectiveCap() const;
     std::optional<Hold> effectiveHold() const;
     std::optional<double> effectiveSpeedFactor() const { return factors_.effective(); }
@@ -82,6 +88,7 @@ public:
 
 private:
     void settleHold(double speed);
+    void settleRamp(kernel::SimTime now);
     void applyCap(std::optional<double> before);
     void applyHold(std::optional<Hold> before);
     void applyType(const std::string& typeId);
@@ -94,8 +101,17 @@ private:
 
     VehicleController* vehicle_;
     Warn warn_;
-    std::vector<std::pair<Token, double>> caps_;  // activation order
-    std::vector<std::pair<Token, Hold>> holds_;   // activation order
+    std::vector<std::pair<Token, double>> caps_;      // activation order
+    std::vector<std::pair<Token, double>> capRamps_;  // s, of the gradual caps in caps_
+    /// A gradual cap slowing the vehicle down: set as max speed when its ramp has run (the first
+    /// settle() after the push gives the start).
+    struct Ramp {
+        double cap = 0;
+        double seconds = 0;
+        std::optional<kernel::SimTime> start;
+    };
+    std::optional<Ramp> ramp_;
+    std::vector<std::pair<Token, Hold>> holds_;  // activation order
     double recordedMaxSpeed_ = 0;
     std::optional<int> recordedSpeedMode_;
     bool emergencyHeld_ = false;  // the EmergencyStop's vehicle stands and is held at 0

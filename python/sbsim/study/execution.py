@@ -14,7 +14,7 @@ from typing import Any
 
 from sbsim.runner import executable
 from sbsim.study.spec import Run, StudySpec
-from sbsim.study.tables import write_tables
+from sbsim.study.tables import COMPLETE, write_tables
 from sbsim.summary import read_summary, table_columns
 
 #: How much of a failed run's stderr its row keeps.
@@ -49,9 +49,9 @@ def execute(spec: StudySpec, run: Run, program: str, timeout: float | None = Non
     (folder / "stderr.txt").write_text(stderr, encoding="utf-8")
     row: dict[str, Any] = {"run": run.id, **dict(run.parameters), "seed": run.seed, "exit_code": code}
     row["wall_s"] = round(wall, 3)
-    row["stderr_tail"] = stderr[-STDERR_TAIL:] if code != 0 else ""
+    row["stderr_tail"] = stderr[-STDERR_TAIL:] if code not in COMPLETE else ""
     summary = folder / "summary.json"
-    if code == 0 and summary.exists():
+    if code in COMPLETE and summary.exists():
         row.update(table_columns(read_summary(summary)))
     # Written last, through a rename: its presence says the run is finished.
     tmp = folder / "result.json.tmp"
@@ -68,7 +68,7 @@ class StudyResult:
 
     @property
     def failed(self) -> list[dict[str, Any]]:
-        return [r for r in self.rows if r["exit_code"] != 0]
+        return [r for r in self.rows if r["exit_code"] not in COMPLETE]
 
 
 @contextmanager
@@ -104,7 +104,7 @@ def run(
     todo = []
     for r in runs:
         done = result_of(spec.directory / "runs" / r.id)
-        if done is not None and done.get("exit_code") == 0:
+        if done is not None and done.get("exit_code") in COMPLETE:
             rows[r.id] = done
         else:
             todo.append(r)

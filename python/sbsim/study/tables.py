@@ -10,27 +10,39 @@ from sbsim.events import read_events
 from sbsim.messages import read_messages
 from sbsim.study.spec import Run, StudySpec
 
+#: Exit codes of runs that went to their end: 0, and 3 (a scenario criterion failed; the verdict is a column).
+COMPLETE = (0, 3)
+
+
+def table_of(records: Sequence[dict[str, Any]]) -> Any:
+    """A pyarrow table with a column for every key of any record (first seen first), None where a
+    record lacks it: pyarrow's from_pylist takes the columns from the first record only, so a
+    signal's cause or a deactivation's reason would vanish behind a first activation."""
+    import pyarrow as pa
+
+    keys = list(dict.fromkeys(k for record in records for k in record))
+    return pa.table({k: [record.get(k) for record in records] for k in keys})
+
 
 def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
-    """runs.parquet (one row per run), events.parquet (the successful runs' events) and, when the
-    study keeps them, messages.parquet (their message traces)."""
-    import pyarrow as pa
+    """runs.parquet (one row per run), events.parquet (the complete runs' events, every field) and, when
+    the study keeps them, messages.parquet (their message traces, every field)."""
     import pyarrow.parquet as pq
 
     spec.directory.mkdir(parents=True, exist_ok=True)
-    pq.write_table(pa.Table.from_pylist(list(rows)), spec.directory / "runs.parquet")
+    pq.write_table(table_of(list(rows)), spec.directory / "runs.parquet")
     readers = {"events": read_events, "messages": read_messages} if spec.messages else {"events": read_events}
     for name, read in readers.items():
         lines: list[dict[str, Any]] = []
         for r, row in zip(runs, rows, strict=True):
-            if row["exit_code"] != 0:
+            if row["exit_code"] not in COMPLETE:
                 continue
             path = spec.directory / "runs" / r.id / f"{name}.jsonl"
             if not path.exists():
                 continue
             context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
             lines.extend({**context, **line} for line in read(path))
-        pq.write_table(pa.Table.from_pylist(lines), spec.directory / f"{name}.parquet")
+        pq.write_table(table_of(lines), spec.directory / f"{name}.parquet")
 
 
 def plot(directory: Path, spec: StudySpec) -> list[Path]:
@@ -42,7 +54,7 @@ def plot(directory: Path, spec: StudySpec) -> list[Path]:
     import pandas as pd
 
     table = pd.read_parquet(directory / "runs.parquet")
-    table = table[table["exit_code"] == 0]
+    table = table[table["exit_code"].isin(COMPLETE)]
     names = list(spec.parameters)
     labels = table[names].astype(str).agg(", ".join, axis=1) if names else pd.Series("all", index=table.index)
     out = []

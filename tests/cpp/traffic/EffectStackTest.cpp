@@ -15,6 +15,8 @@
 namespace sbsim::traffic {
 namespace {
 
+kernel::SimTime SimTimeOf(double s) { return kernel::SimTime::fromSeconds(s); }
+
 constexpr double kOwnMaxSpeed = 33.0;
 constexpr int kOwnSpeedMode = 31;
 constexpr double kSpeed = 12.0;
@@ -498,6 +500,47 @@ TEST(EffectStack, UnknownTokensAreIgnored) {
     stack.remove(42);
     EXPECT_EQ(v.commands, commands);
     EXPECT_DOUBLE_EQ(v.maxSpeed_, 5.0);
+}
+
+TEST(EffectStack, AGradualCapSlowsDownOverItsTimeThenCaps) {
+    ModelVehicle v;  // at kSpeed = 12 m/s
+    EffectStack stack(v);
+    stack.pushSpeedCap(1, 5, 10);
+    ASSERT_TRUE(v.slowingTo_.has_value());
+    EXPECT_DOUBLE_EQ(*v.slowingTo_, 5.0);
+    EXPECT_DOUBLE_EQ(v.slowDownSeconds, 10.0);
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, kOwnMaxSpeed) << "no cap before the ramp has run";
+    EXPECT_TRUE(stack.settling());
+    stack.settle(12, SimTimeOf(100));  // the step the story activated in
+    stack.settle(9, SimTimeOf(105));
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, kOwnMaxSpeed);
+    stack.settle(5, SimTimeOf(110));
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, 5.0);
+    EXPECT_FALSE(stack.settling());
+    stack.remove(1);
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, kOwnMaxSpeed);
+}
+
+TEST(EffectStack, AGradualCapComposesLikeAPlainOne) {
+    ModelVehicle v;
+    EffectStack stack(v);
+    stack.pushSpeedCap(1, 5, 10);
+    stack.settle(12, SimTimeOf(0));
+    stack.pushSpeedCap(2, 8);  // the latest rules at once; the ramp ends
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, 8.0);
+    EXPECT_FALSE(v.slowingTo_.has_value()) << "setSpeed(-1) handed the speed back to SUMO";
+    stack.remove(2);  // back to the gradual cap: ramps again from the current speed
+    EXPECT_DOUBLE_EQ(*v.slowingTo_, 5.0);
+    stack.remove(1);
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, kOwnMaxSpeed);
+}
+
+TEST(EffectStack, AGradualCapBelowTheSpeedIsSetAtOnce) {
+    ModelVehicle v;  // 12 m/s: nothing to slow down from
+    EffectStack stack(v);
+    stack.pushSpeedCap(1, 20, 10);
+    EXPECT_FALSE(v.slowingTo_.has_value());
+    EXPECT_DOUBLE_EQ(v.maxSpeed_, 20.0);
 }
 
 }  // namespace

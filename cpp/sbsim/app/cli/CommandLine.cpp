@@ -178,6 +178,11 @@ void CommandLine::declareOptions(CLI::App& app) {
                    "receiver) as JSON Lines")
         ->type_name("FILE.jsonl");
     app.add_option("--summary", summary, "also write the summary as one JSON document")->type_name("FILE.json");
+    app.add_option("--statistics", statistics,
+                   "write what services and stories recorded (vehicle, source,\nname, time, value) as Parquet")
+        ->type_name("FILE.parquet");
+    app.add_option("--junit", junit, "write the story's criteria as JUnit XML (a test case each)")
+        ->type_name("FILE.xml");
     app.add_option("--threads", threads, "threads reading vehicle states after each step (0: all\ncores)")
         ->type_name("N")
         ->check(numberWhere<unsigned>("0 (all cores) to 256", [](unsigned n) { return n <= 256; }))
@@ -234,6 +239,8 @@ void CommandLine::complete(std::vector<std::string> sumoArgs) {
     }
     sumoOptions.insert(sumoOptions.end(), sumoArgs.begin(), sumoArgs.end());
     applyOptionParameters();
+    if (const auto it = optionsByParameter_.find("middleware_interval"); it != optionsByParameter_.end())
+        middlewareIntervalGiven = it->second->count() > 0;
     if (guiDelay && std::any_of(sumoOptions.begin(), sumoOptions.end(),
                                 [](const std::string& w) { return w == "--delay" || w == "-d"; })) {
         throw UsageError("--gui-delay: SUMO's --delay is given too (through --sumo-option or after --); give one");

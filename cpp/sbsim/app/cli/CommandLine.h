@@ -29,9 +29,11 @@ struct CommandLine {
     std::optional<std::filesystem::path> story;
     std::optional<std::filesystem::path> events;
     std::optional<std::filesystem::path> denmTrace;
-    std::optional<std::filesystem::path> summary;  ///< the summary as JSON
-    std::vector<std::string> arguments;            ///< the command line as given (for the JSON summary)
-    std::optional<double> end;                     ///< seconds
+    std::optional<std::filesystem::path> summary;     ///< the summary as JSON
+    std::optional<std::filesystem::path> statistics;  ///< what services and stories recorded, as Parquet
+    std::optional<std::filesystem::path> junit;       ///< the criteria's verdicts as JUnit XML
+    std::vector<std::string> arguments;               ///< the command line as given (for the JSON summary)
+    std::optional<double> end;                        ///< seconds
     std::optional<std::int64_t> seed;
     double warmup = 0;                              ///< s; what board.getWarmupEndTime() returns
     std::vector<std::string> sumoOptions;           ///< words for SUMO: --sumo-option's, then those after `--`
@@ -39,6 +41,7 @@ struct CommandLine {
     std::vector<std::filesystem::path> plugins;     ///< service-module libraries to load
     std::vector<std::string> params;                ///< study parameters, NAME=VALUE
     double middlewareInterval = 0.1;                ///< s between service triggers
+    bool middlewareIntervalGiven = false;           ///< by --middleware-interval or --param (not the default)
     double v2xRange = 500;                          ///< m
     double v2xLatency = 0.001;                      ///< s
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors

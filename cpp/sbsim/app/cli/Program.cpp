@@ -26,8 +26,8 @@ constexpr const char* kDescription =
 constexpr const char* kFooter =
     "Words after -- go to SUMO as they are, e.g. sbsim --story s.py -- -c x.sumocfg --begin 600;\n"
     "a -c FILE or --configuration-file FILE among them is the SUMO configuration.\n"
-    "Exit codes: 0 done, 2 bad input (SUMO's errors included), 130 interrupted (SIGINT,\n"
-    "SIGTERM), 1 an internal error.";
+    "Exit codes: 0 done, 2 bad input (SUMO's errors included), 3 a story's criterion failed,\n"
+    "130 interrupted (SIGINT, SIGTERM), 1 an internal error.";
 
 /// The command line up to its first `--`, and the words after it (SUMO's). Split here rather than
 /// by CLI11, which would take the words after `--`, and stray ones before it, as positionals alike.

@@ -50,6 +50,8 @@ void printSummary(const RunFigures& f) {
     }
     if (f.services != nullptr) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
+        if (f.services->signalsWithoutServices() > 0)
+            fmt::print("signals without services: {}\n", f.services->signalsWithoutServices());
         for (const auto& [type, counts] : f.medium->counts()) {
             fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
             fmt::print("mean receivers {}: {:.2f}\n", type, meanReceivers(counts));
@@ -65,6 +67,16 @@ void printSummary(const RunFigures& f) {
         }
         if (const auto load = f.medium->loadFigures())
             fmt::print("channel busy ratio: mean {:.4f}, max {:.4f}\n", load->meanCbr, load->maxCbr);
+    }
+    if (f.statistics != nullptr) {
+        for (const auto& [name, a] : f.statistics->aggregates()) {
+            fmt::print("statistic {}: count {}, mean {:g}, min {:g}, max {:g}, sum {:g}\n", name, a.count, a.mean(),
+                       a.min, a.max, a.sum);
+        }
+    }
+    for (const auto& [name, v] : f.verdicts) {
+        fmt::print("criterion {}: {} (actual: {}; expected: {})\n", name, v.passed ? "passed" : "FAILED", v.actual,
+                   v.expected);
     }
     if (const std::size_t warnings = f.sumo.warnings().total(); warnings > 0) {
         const auto kinds = f.sumo.warnings().kinds();
@@ -114,6 +126,7 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
     ordered_json messages = ordered_json::object();
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();
+        out["signals_without_services"] = f.services->signalsWithoutServices();
         for (const auto& [type, counts] : f.medium->counts()) {
             ordered_json bins = ordered_json::array();
             for (std::size_t k = 0; k < counts.linkStations.size(); ++k) {
@@ -132,6 +145,22 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
             out["channel_busy_ratio"] = {{"mean", load->meanCbr}, {"max", load->maxCbr}, {"samples", load->samples}};
     }
     out["messages"] = std::move(messages);
+    ordered_json statistics = ordered_json::object();
+    if (f.statistics != nullptr) {
+        for (const auto& [name, a] : f.statistics->aggregates()) {
+            statistics[name] = {{"count", a.count}, {"sum", a.sum}, {"mean", a.mean()}, {"min", a.min}, {"max", a.max}};
+        }
+    }
+    out["statistics"] = std::move(statistics);
+    ordered_json criteria = ordered_json::array();
+    bool allPassed = true;
+    for (const auto& [name, v] : f.verdicts) {
+        criteria.push_back({{"name", name}, {"passed", v.passed}, {"actual", v.actual}, {"expected", v.expected}});
+        allPassed = allPassed && v.passed;
+    }
+    out["criteria"] = std::move(criteria);
+    // null: no criteria, so no verdict.
+    out["verdict"] = f.verdicts.empty() ? ordered_json(nullptr) : ordered_json(allPassed ? "passed" : "failed");
     ordered_json warningKinds = ordered_json::array();
     for (const auto& kind : f.sumo.warnings().kinds()) {
         warningKinds.push_back({{"kind", kind.pattern}, {"count", kind.count}});

@@ -2,13 +2,16 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/services/ServiceManager.h"
+#include "sbsim/storyboard/Criterion.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/traffic/SumoBridge.h"
 
@@ -22,6 +25,9 @@ struct RunFigures {
     const storyboard::Storyboard* board;
     const services::ServiceManager* services;
     const radio::Medium* medium;
+    const kernel::Statistics* statistics;  ///< what services and stories recorded
+    /// The criteria's verdicts over the run, in registration order (none without criteria).
+    const std::vector<std::pair<std::string, storyboard::CriterionVerdict>>& verdicts;
     double wall;                                ///< s
     const std::vector<std::string>& arguments;  ///< the command line
 };

@@ -122,6 +122,8 @@ int CheckCommand::run(const CommandLine& cl) {
             out["stories"].push_back(
                 {{"name", s->name()}, {"world", world}, {"tree", std::move(nodes)}, {"areas", std::move(areas)}});
         }
+        out["criteria"] = nlohmann::ordered_json::array();
+        for (const auto& c : board.criteria()) out["criteria"].push_back(c->name());
         out["warnings"] = nlohmann::ordered_json::array();
         for (const auto& w : warnings) out["warnings"].push_back({{"story", w.story}, {"message", w.message}});
         fmt::print("{}\n", out.dump(2));
@@ -134,6 +136,7 @@ int CheckCommand::run(const CommandLine& cl) {
                 fmt::print("{}{}\n", std::string(static_cast<std::size_t>(node.depth) * 2, ' '), node.text);
             }
         }
+        for (const auto& c : board.criteria()) fmt::print("criterion '{}'\n", c->name());
         for (const auto& w : warnings) fmt::print(stderr, "sbsim: warning: story '{}': {}\n", w.story, w.message);
         fmt::print("{} warning{}\n", warnings.size(), warnings.size() == 1 ? "" : "s");
     }

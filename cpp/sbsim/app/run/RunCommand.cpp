@@ -5,6 +5,7 @@
 #include <libsumo/TraCIDefs.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "sbsim/app/inputs/SumoOptions.h"
 #include "sbsim/app/inputs/SumoStateFile.h"
 #include "sbsim/app/outputs/DenmTrace.h"
+#include "sbsim/app/outputs/JUnitReport.h"
 #include "sbsim/app/outputs/MessageTraceFile.h"
 #include "sbsim/app/outputs/OutputFile.h"
 #include "sbsim/app/outputs/Summary.h"
@@ -25,6 +27,7 @@
 #include "sbsim/app/run/ProgressDisplay.h"
 #include "sbsim/app/run/Scenario.h"
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/services/ServiceError.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/StoryError.h"
@@ -87,6 +90,10 @@ int RunCommand::run(const CommandLine& cl) {
     }
     std::optional<MessageTraceFile> messageTrace;
     if (messages) messageTrace.emplace(messages->stream());
+    std::optional<OutputFile> statisticsFile;
+    if (cl.statistics) statisticsFile.emplace("--statistics", *cl.statistics, files);
+    std::optional<OutputFile> junit;
+    if (cl.junit) junit.emplace("--junit", *cl.junit, files);
     std::optional<OutputFile> sumoLog;
     if (cl.sumoLog) sumoLog.emplace("--sumo-log", *cl.sumoLog, files);
     std::optional<GuiWatch> gui;
@@ -107,6 +114,7 @@ int RunCommand::run(const CommandLine& cl) {
     Scenario scenario(cl, settings, cl.threads);
     kernel::Simulation& sim = scenario.simulation();
     traffic::SumoBridge& sumo = scenario.sumo();
+    if (statisticsFile) scenario.requireStatisticsFile();  // pyarrow missing: fail before the run
     const traffic::Penetration penetration(cl.penetration, sim.seed());
     if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
     scenario.loadSumo();
@@ -147,6 +155,14 @@ int RunCommand::run(const CommandLine& cl) {
     if (servicesConfig) {
         scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval),
                              penetration, messageTrace ? &*messageTrace : nullptr);
+        // Only when asked for: the default 0.1 s stays as it was, whatever the step length.
+        if (cl.middlewareIntervalGiven && kernel::SimTime::fromSeconds(cl.middlewareInterval) < sumo.stepLength()) {
+            fmt::print(
+                stderr,
+                "sbsim: warning: --middleware-interval {:g} s is shorter than SUMO's step length ({} s): services "
+                "see the same vehicle positions several times\n",
+                cl.middlewareInterval, sumo.stepLength().str());
+        }
     }
 
     std::unique_ptr<ProgressDisplay> progress;
@@ -168,10 +184,17 @@ int RunCommand::run(const CommandLine& cl) {
         throw InputError(fmt::format("SUMO error in '{}' at t={} s: {}", sumocfg.string(), sim.now().str(), e.what()));
     } catch (const libsumo::TraCIException& e) {
         throw InputError(fmt::format("SUMO error at t={} s: {}", sim.now().str(), e.what()));
+    } catch (const services::ServiceError& e) {
+        throw InputError(e.what());  // the user's code, like a story's error
     } catch (const services::ServicesConfigError& e) {
         // A service reads its parameters when its first vehicle departs: still bad input.
         throw InputError(fmt::format("--services: {}", e.what()));
     }
+    // Judged once, at the end: a Python criterion's error is the story's (exit 2).
+    std::vector<std::pair<std::string, storyboard::CriterionVerdict>> verdicts;
+    if (board != nullptr) untilInterrupted([&] { verdicts = board->verdicts(); });
+    const bool criterionFailed =
+        std::any_of(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.second.passed; });
     if (progress) progress->clear();
     if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
@@ -180,6 +203,15 @@ int RunCommand::run(const CommandLine& cl) {
     if (messages && !Interruption::requested()) messages->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
     if (denmFile && !Interruption::requested()) denmFile->commit();
+    if (junit) {
+        writeJUnit(junit->stream(), story ? story->filename().string() : sumocfg.filename().string(), verdicts,
+                   std::chrono::duration<double>(Clock::now() - started).count());
+        if (!Interruption::requested()) junit->commit();
+    }
+    if (statisticsFile) {
+        statisticsFile->stream() << scenario.statisticsFile();
+        if (!Interruption::requested()) statisticsFile->commit();
+    }
 
     const RunFigures figures{sumocfg,
                              sim,
@@ -187,6 +219,8 @@ int RunCommand::run(const CommandLine& cl) {
                              board,
                              scenario.services(),
                              scenario.medium(),
+                             &scenario.statistics(),
+                             verdicts,
                              std::chrono::duration<double>(Clock::now() - started).count(),
                              cl.arguments};
     if (summary) {
@@ -209,7 +243,8 @@ int RunCommand::run(const CommandLine& cl) {
         if (Interruption::requested()) break;
         fmt::print(stderr, "sbsim: warning: --param {} was never read by the story or a service\n", name);
     }
-    const int exitCode = Interruption::requested() ? 130 : 0;  // 130: the shell's convention for SIGINT
+    // 130: the shell's convention for SIGINT; 3: a criterion failed (the run itself went well).
+    const int exitCode = Interruption::requested() ? 130 : criterionFailed ? 3 : 0;
     if (Interruption::requested()) fmt::print(stderr, "sbsim: interrupted at t={} s\n", sim.now().str());
     if (gui) GuiWatch::closeWithin(sumo, std::chrono::seconds(10), exitCode);
     return exitCode;

@@ -50,6 +50,7 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
     if (!python_) python_.emplace();
     board_ = &sim_.emplaceModule<storyboard::Storyboard>(vehicles_, log);
     board_->hearStations(stations_);
+    board_->setStatistics(statistics_);
     std::optional<traffic::EquippedView> view;
     if (equippedOnly) view.emplace(*equippedOnly);
     feed_ = std::make_unique<storyboard::BoardFeed>(sumo_, sumo_.snapshot(), *board_, std::move(view));
@@ -62,6 +63,7 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
 void Scenario::addServices(services::ServicesConfig config, kernel::SimTime interval,
                            const traffic::Penetration& penetration, radio::MessageTrace* trace) {
     services_ = &sim_.emplaceModule<services::ServiceManager>(std::move(config), interval, sumo_.snapshot(), vehicles_);
+    services_->setStatistics(statistics_);
     services::ServiceManager* manager = services_;
     medium_ = &makeMedium(options_, sim_, sumo_.snapshot(),
                           [manager](const std::string& id) -> kernel::Module* { return manager->middlewareOf(id); });
@@ -71,6 +73,20 @@ void Scenario::addServices(services::ServicesConfig config, kernel::SimTime inte
     services_->setPenetration(penetration);
     services_->attach(sumo_);
     sumo_.demandColumns(services::ServiceManager::columns());
+}
+
+void Scenario::requireStatisticsFile() {
+    if (!python_) python_.emplace();
+    try {
+        parquet_.emplace();
+    } catch (const storyboard::StatisticsParquet::Unavailable& e) {
+        throw UsageError(fmt::format("--statistics: {}", e.what()));
+    }
+}
+
+std::string Scenario::statisticsFile() const {
+    if (!parquet_) throw std::logic_error("requireStatisticsFile() was not called");
+    return parquet_->bytes(statistics_);
 }
 
 std::vector<std::string> Scenario::abandonLingeringThreads() {

@@ -9,6 +9,7 @@
 #include "sbsim/app/cli/CommandLine.h"
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/MessageTrace.h"
 #include "sbsim/services/ServiceManager.h"
@@ -17,6 +18,7 @@
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
+#include "sbsim/storyboard/python/StatisticsParquet.h"
 #include "sbsim/storyboard/python/StoryScript.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/SumoBridge.h"
@@ -45,6 +47,12 @@ public:
     /// those vehicles) and loads the story script, whose createStories() is still to run.
     storyboard::StoryScript& addStoryboard(const std::filesystem::path& story, storyboard::EventLog* log,
                                            std::optional<traffic::Penetration> equippedOnly = std::nullopt);
+    /// Starts the interpreter (if no story did) and makes sure the statistics file can be written
+    /// (pyarrow); throws UsageError naming --statistics if not.
+    void requireStatisticsFile();
+    /// The run's statistics as the --statistics file's bytes (after requireStatisticsFile()).
+    std::string statisticsFile() const;
+
     /// Adds the services with the medium the command line chooses (--radio: the 802.11p channel
     /// model, else the disc model of the --v2x-* options), its lines going to `trace` if given.
     void addServices(services::ServicesConfig config, kernel::SimTime interval, const traffic::Penetration& penetration,
@@ -59,6 +67,8 @@ public:
     /// What every station heard (LDMs, DENM memories): written by the services, read by the
     /// stories' V2X conditions.
     facilities::StationRegistry& stations() { return *stations_; }
+    /// What the services and the stories recorded (recordScalar, emit, board.record).
+    const kernel::Statistics& statistics() const { return statistics_; }
     /// Threads the story script left running, abandoned after a grace period (their names).
     std::vector<std::string> abandonLingeringThreads();
 
@@ -70,6 +80,8 @@ private:
     std::optional<storyboard::PythonRuntime> python_;  // outlives the stories' Python objects
     traffic::VehicleRegistry vehicles_;                // outlives the simulation, whose modules hold its entries
     std::shared_ptr<facilities::StationRegistry> stations_;
+    kernel::Statistics statistics_;  // outlives the simulation: services record in finish()
+    std::optional<storyboard::StatisticsParquet> parquet_;
     kernel::Simulation sim_;
     traffic::SumoBridge& sumo_;
     storyboard::Storyboard* board_ = nullptr;

@@ -15,6 +15,8 @@ void bindVehicles(pybind11::module_& m);
 void bindConditions(pybind11::module_& m);
 /// Effect (the base of custom ones) and the built-in effects.
 void bindEffects(pybind11::module_& m);
+/// Criterion (the base of custom ones) and the built-in criteria.
+void bindCriteria(pybind11::module_& m);
 /// Story and the `board` scripts receive.
 void bindBoard(pybind11::module_& m);
 /// WorldStory and the world effects (after bindBoard: a WorldStory is a Story).

@@ -5,6 +5,8 @@
 #include <variant>
 
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/kernel/Statistics.h"
+#include "sbsim/storyboard/Criterion.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/WorldEffect.h"
@@ -140,7 +142,30 @@ void bindBoard(py::module_& m) {
         const Eigen::Vector2d c = ScriptContext::current().frame.toCanvas({x, y});
         return Coord{c.x(), c.y()};
     };
+    // A row of the run's statistics (--statistics) at the current time: from the story named, or
+    // the storyboard; of the vehicle named, or of none.
+    const auto record = [](const BoardHandle& h, const std::string& name, double value,
+                           const std::optional<std::string>& vehicle, const std::optional<std::string>& story) {
+        Storyboard& board = h.board();
+        kernel::Statistics* statistics = board.statistics();
+        if (statistics == nullptr) throw std::runtime_error("board.record: this run records no statistics");
+        try {
+            statistics->record(vehicle.value_or(""), story.value_or("storyboard"), name, board.simulation().now(),
+                               value);
+        } catch (const std::invalid_argument& e) {
+            throw py::value_error(std::string("board.record: ") + e.what());
+        }
+    };
+    const auto registerCriterion = [](const BoardHandle& h, CriterionPtr criterion, std::optional<std::string> name) {
+        if (!criterion) throw py::type_error("registerCriterion needs a Criterion, got None");
+        if (name) criterion->setName(std::move(*name));
+        h.board().registerCriterion(std::move(criterion));
+    };
     py::class_<BoardHandle>(m, "Storyboard")
+        .def("registerCriterion", registerCriterion, py::arg("criterion"), py::arg("name") = py::none())
+        .def("register_criterion", registerCriterion, py::arg("criterion"), py::arg("name") = py::none())
+        .def("record", record, py::arg("name"), py::arg("value"), py::kw_only(), py::arg("vehicle") = py::none(),
+             py::arg("story") = py::none())
         .def("registerStory", registerStory, py::arg("story"))
         .def("register_story", registerStory, py::arg("story"))
         .def("getRandomNumberGenerator", randomGenerator, py::arg("k") = 0)

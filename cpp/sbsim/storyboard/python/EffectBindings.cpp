@@ -79,10 +79,13 @@ void bindEffects(py::module_& m) {
         "Base of custom effects: override apply(self, vehicle) and remove(self, vehicle); "
         "vehicle is a VehicleController.";
     py::class_<SpeedEffect, Effect, py::smart_holder>(m, "SpeedEffect")
-        .def(py::init([](const py::object& mps) {
-                 return std::make_shared<SpeedEffect>(toNumber(mps, "SpeedEffect speed"));
+        .def(py::init([](const py::object& mps, const py::object& over) {
+                 return std::make_shared<SpeedEffect>(
+                     toNumber(mps, "SpeedEffect speed"),
+                     over.is_none() ? 0.0 : toSimTime(over, "SpeedEffect over").seconds());
              }),
-             py::arg("mps"))
+             py::arg("mps"), py::arg("over") = py::none())
+        .def_property_readonly("over", &SpeedEffect::over)
         .def_property_readonly("speed", &SpeedEffect::speed);
     py::class_<StopEffect, Effect, py::smart_holder>(m, "StopEffect").def(py::init<>());
     py::class_<EmergencyStopEffect, Effect, py::smart_holder>(m, "EmergencyStopEffect").def(py::init<>());

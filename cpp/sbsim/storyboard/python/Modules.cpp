@@ -20,6 +20,7 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
     bindVehicles(m);
     bindConditions(m);
     bindEffects(m);
+    bindCriteria(m);
     bindBoard(m);
     bindWorld(m);
 }

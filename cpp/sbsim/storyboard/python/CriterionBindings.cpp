@@ -1,0 +1,76 @@
+#include <pybind11/stl.h>
+
+#include <Eigen/Core>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include "sbsim/storyboard/Criterion.h"
+#include "sbsim/storyboard/criteria/KeepsLane.h"
+#include "sbsim/storyboard/criteria/MaxSpeed.h"
+#include "sbsim/storyboard/criteria/NoCollision.h"
+#include "sbsim/storyboard/criteria/ReachedRegion.h"
+#include "sbsim/storyboard/criteria/StoryActivated.h"
+#include "sbsim/storyboard/python/ArgumentConversions.h"
+#include "sbsim/storyboard/python/Bindings.h"
+#include "sbsim/storyboard/python/PythonCriterion.h"
+
+namespace py = pybind11;
+
+namespace sbsim::storyboard {
+
+namespace {
+
+VehicleSet vehicleSet(const py::object& ids) {
+    if (ids.is_none()) return {};
+    const std::set<std::string> set = toIdSet(ids);
+    return VehicleSet(std::vector<std::string>(set.begin(), set.end()));
+}
+
+}  // namespace
+
+void bindCriteria(py::module_& m) {
+    py::class_<Criterion, PythonCriterion, py::smart_holder>(m, "Criterion")
+        .def(py::init<>())
+        .def_property_readonly("name", &Criterion::name)
+        .def("__repr__", &Criterion::describe)
+        .doc() =
+        "Base of custom criteria: override evaluate(self, run) -> bool | (passed, actual, expected); run.events is "
+        "the event log (dicts), run.statistics the aggregates per name, run.activations per story.";
+    py::class_<NoCollision, Criterion, py::smart_holder>(m, "NoCollision").def(py::init<>());
+    py::class_<MaxSpeed, Criterion, py::smart_holder>(m, "MaxSpeed")
+        .def(py::init([](const py::object& mps, const py::object& vehicles) {
+                 try {
+                     return std::make_shared<MaxSpeed>(toNumber(mps, "MaxSpeed speed"), vehicleSet(vehicles));
+                 } catch (const std::invalid_argument& e) {
+                     throw py::value_error(e.what());
+                 }
+             }),
+             py::arg("mps"), py::arg("vehicles") = py::none());
+    py::class_<ReachedRegion, Criterion, py::smart_holder>(m, "ReachedRegion")
+        .def(py::init([](const std::string& vehicle, const py::iterable& area, const py::object& by) {
+                 std::vector<Eigen::Vector2d> vertices;
+                 for (const py::handle p : area) vertices.push_back(toSumoPoint(p));
+                 if (vertices.size() < 3) {
+                     throw py::value_error("ReachedRegion needs an area of 3 or more points, got " +
+                                           std::to_string(vertices.size()));
+                 }
+                 return std::make_shared<ReachedRegion>(vehicle, geometry::Polygon(std::move(vertices)),
+                                                        toSimTime(by, "ReachedRegion by"));
+             }),
+             py::arg("vehicle"), py::arg("area"), py::arg("by"));
+    py::class_<KeepsLane, Criterion, py::smart_holder>(m, "KeepsLane")
+        .def(py::init([](const py::object& vehicles) { return std::make_shared<KeepsLane>(vehicleSet(vehicles)); }),
+             py::arg("vehicles") = py::none());
+    py::class_<StoryActivated, Criterion, py::smart_holder>(m, "StoryActivated")
+        .def(py::init([](const std::string& story, std::int64_t atLeast) {
+                 try {
+                     return std::make_shared<StoryActivated>(story, atLeast);
+                 } catch (const std::invalid_argument& e) {
+                     throw py::value_error(e.what());
+                 }
+             }),
+             py::arg("story"), py::arg("at_least") = 1);
+}
+
+}  // namespace sbsim::storyboard

@@ -1,0 +1,58 @@
+#include "sbsim/storyboard/python/StatisticsParquet.h"
+
+#include <pybind11/embed.h>
+
+#include <nlohmann/json.hpp>
+
+namespace py = pybind11;
+
+namespace sbsim::storyboard {
+
+namespace {
+
+// pyarrow runs in a child Python, not in this process: SUMO's wheel loads its own libarrow and
+// libparquet (another version), whose symbols pyarrow's extension modules would bind to here and
+// crash. The child reads the columns as JSON on stdin and writes the Parquet file to stdout.
+constexpr const char* kCheck = "import pyarrow.parquet";
+constexpr const char* kWrite = R"(
+import json, sys
+import pyarrow as pa, pyarrow.parquet as pq
+c = json.load(sys.stdin)
+t = pa.table({k: pa.array(c[k], type=pa.string()) for k in ("vehicle", "source", "name")}
+             | {k: pa.array(c[k], type=pa.float64()) for k in ("time", "value")})
+sink = pa.BufferOutputStream()
+pq.write_table(t, sink)
+sys.stdout.buffer.write(sink.getvalue().to_pybytes())
+)";
+
+/// Runs `code` in a child of the interpreter sbsim embeds (sys.executable), `input` on its stdin;
+/// returns its stdout, or throws Unavailable with the last line it wrote on stderr.
+std::string runChild(const char* code, const std::string& input) {
+    const py::module_ subprocess = py::module_::import("subprocess");
+    const py::object executable = py::module_::import("sys").attr("executable");
+    const py::object done =
+        subprocess.attr("run")(py::make_tuple(executable, "-c", code), py::arg("input") = py::bytes(input),
+                               py::arg("capture_output") = true, py::arg("check") = false);
+    if (done.attr("returncode").cast<int>() != 0) {
+        std::string err = done.attr("stderr").cast<std::string>();
+        while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
+        throw StatisticsParquet::Unavailable("pyarrow cannot write Parquet (pip install pyarrow): " +
+                                             err.substr(err.rfind('\n') + 1));
+    }
+    return done.attr("stdout").cast<std::string>();
+}
+
+}  // namespace
+
+StatisticsParquet::StatisticsParquet() { (void)runChild(kCheck, ""); }
+
+std::string StatisticsParquet::bytes(const kernel::Statistics& s) const {
+    const nlohmann::json columns = {{"vehicle", s.vehicles()},
+                                    {"source", s.sources()},
+                                    {"name", s.names()},
+                                    {"time", s.times()},
+                                    {"value", s.values()}};
+    return runChild(kWrite, columns.dump());
+}
+
+}  // namespace sbsim::storyboard

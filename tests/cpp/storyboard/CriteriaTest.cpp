@@ -1,0 +1,128 @@
+// The built-in criteria over hand-built steps: each passes on one run and fails on another,
+// reporting what it saw and what was expected.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "StoryboardTestSupport.h"
+#include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/criteria/KeepsLane.h"
+#include "sbsim/storyboard/criteria/MaxSpeed.h"
+#include "sbsim/storyboard/criteria/NoCollision.h"
+#include "sbsim/storyboard/criteria/ReachedRegion.h"
+#include "sbsim/storyboard/criteria/StoryActivated.h"
+#include "sbsim/traffic/TrafficQueries.h"
+
+namespace sbsim::storyboard::test {
+namespace {
+
+/// Collisions as a test sets them, for the step that ends at any time.
+class CollisionsAsSet : public traffic::TrafficQueries {
+public:
+    std::optional<Leader> leader(const std::string&, double) override { return std::nullopt; }
+    const std::vector<Collision>& collisions(kernel::SimTime) override { return now; }
+    std::vector<Collision> now;
+};
+
+Vehicle onLane(std::string id, double x, std::string road, std::string lane, double speed = 10) {
+    Vehicle v = car(std::move(id), x, 0, speed);
+    v.road = std::move(road);
+    v.lane = std::move(lane);
+    return v;
+}
+
+/// Runs `c` over steps 1 s apart and returns its verdict.
+CriterionVerdict over(Criterion& c, const std::vector<std::vector<Vehicle>>& steps,
+                      traffic::TrafficQueries* queries = nullptr, const std::vector<StoryPtr>& stories = {}) {
+    traffic::VehicleSnapshot snapshot;
+    traffic::NeighbourGrid grid;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        snapshot.assign(steps[k], SimTime::fromSeconds(static_cast<double>(k + 1)));
+        grid.build(snapshot, 100);
+        c.observe(EvaluationContext(snapshot, grid, queries));
+    }
+    return c.verdict(CriterionRun{stories});
+}
+
+TEST(Criteria, NoCollisionFailsNamingTheFirstCollision) {
+    CollisionsAsSet queries;
+    NoCollision clean;
+    EXPECT_TRUE(over(clean, {{car("a", 1)}, {car("a", 1)}}, &queries).passed);
+    NoCollision crash;
+    queries.now = {{"a", "b"}};
+    const CriterionVerdict v = over(crash, {{car("a", 1)}}, &queries);
+    EXPECT_FALSE(v.passed);
+    EXPECT_EQ(v.actual, "1 collision, first a with b at t=1 s");
+    EXPECT_EQ(v.expected, "0 collisions");
+    EXPECT_EQ(crash.describe(), "NoCollision()");
+}
+
+TEST(Criteria, MaxSpeedFailsNamingTheFastestVehicleOfItsSet) {
+    MaxSpeed all(12, VehicleSet{});
+    const CriterionVerdict fast = over(all, {{car("a", 10), car("b", 11)}, {car("a", 13.5), car("b", 11)}});
+    EXPECT_FALSE(fast.passed);
+    EXPECT_EQ(fast.actual, "13.500 m/s (a at t=2 s)");
+    EXPECT_EQ(fast.expected, "<= 12 m/s");
+    MaxSpeed onlyB(12, VehicleSet({"b"}));
+    const CriterionVerdict slow = over(onlyB, {{car("a", 10), car("b", 11)}, {car("a", 13.5), car("b", 11)}});
+    EXPECT_TRUE(slow.passed) << slow.actual;
+    EXPECT_EQ(onlyB.describe(), "MaxSpeed(12, vehicles=[b])");
+    EXPECT_THROW(MaxSpeed(-1, VehicleSet{}), std::invalid_argument);
+}
+
+TEST(Criteria, ReachedRegionPassesOnlyWhenInTime) {
+    const geometry::Polygon box({{10, -5}, {20, -5}, {20, 5}, {10, 5}});
+    const std::vector<std::vector<Vehicle>> drive = {{car("a", 0, 0)}, {car("a", 5, 0)}, {car("a", 15, 0)}};
+    ReachedRegion early("a", box, SimTime::fromSeconds(3));
+    const CriterionVerdict ok = over(early, drive);
+    EXPECT_TRUE(ok.passed);
+    EXPECT_EQ(ok.actual, "reached at t=3 s");
+    ReachedRegion late("a", box, SimTime::fromSeconds(2));
+    const CriterionVerdict v = over(late, drive);
+    EXPECT_FALSE(v.passed);
+    EXPECT_EQ(v.expected, "in the area by t=2 s");
+    ReachedRegion nobody("ghost", box, SimTime::fromSeconds(9));
+    EXPECT_EQ(over(nobody, drive).actual, "no vehicle ghost seen");
+}
+
+TEST(Criteria, KeepsLaneCountsChangesOnOneRoadOnly) {
+    // Onto the next road (and its lane) is no change; a new lane on the same road is.
+    KeepsLane keeps{VehicleSet{}};
+    const CriterionVerdict ok = over(keeps, {{onLane("a", 0, "e1", "e1_0")}, {onLane("a", 5, "e2", "e2_1")}});
+    EXPECT_TRUE(ok.passed) << ok.actual;
+    KeepsLane strict{VehicleSet{}};
+    const CriterionVerdict v = over(strict, {{onLane("a", 0, "e1", "e1_0")}, {onLane("a", 5, "e1", "e1_1")}});
+    EXPECT_FALSE(v.passed);
+    EXPECT_EQ(v.actual, "1 lane change, first a from e1_0 to e1_1 at t=2 s");
+    KeepsLane others{VehicleSet({"b"})};
+    EXPECT_TRUE(over(others, {{onLane("a", 0, "e1", "e1_0")}, {onLane("a", 5, "e1", "e1_1")}}).passed);
+    EXPECT_EQ(others.describe(), "KeepsLane(vehicles=[b])");
+}
+
+TEST(Criteria, StoryActivatedCountsTheNamedStory) {
+    auto story =
+        std::make_shared<Story>(std::make_shared<TimeCondition>(SimTime::zero()), std::vector<EffectPtr>{}, "rain");
+    story->counters().activated();
+    story->counters().activated();
+    const std::vector<StoryPtr> stories{story};
+    StoryActivated twice("rain", 2);
+    EXPECT_TRUE(twice.verdict(CriterionRun{stories}).passed);
+    StoryActivated thrice("rain", 3);
+    const CriterionVerdict v = thrice.verdict(CriterionRun{stories});
+    EXPECT_FALSE(v.passed);
+    EXPECT_EQ(v.actual, "2 activations");
+    EXPECT_EQ(v.expected, ">= 3 activations");
+    EXPECT_EQ(StoryActivated("fog", 1).verdict(CriterionRun{stories}).actual, "no story named fog");
+    EXPECT_THROW(StoryActivated("rain", 0), std::invalid_argument);
+}
+
+TEST(Criteria, AGivenNameReplacesTheDescription) {
+    NoCollision c;
+    EXPECT_EQ(c.name(), "NoCollision()");
+    c.setName("safe");
+    EXPECT_EQ(c.name(), "safe");
+}
+
+}  // namespace
+}  // namespace sbsim::storyboard::test

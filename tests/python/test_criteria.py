@@ -1,0 +1,190 @@
+"""Scenario criteria: each built-in passes on one generated run and fails on another; the verdicts
+in the summary (text and JSON), --junit (read with an XML parser), exit code 3, sbsim check."""
+
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+from sbsim.runner import RunResult, run
+from sbsim.scenarios.grid import make_grid
+from sbsim_helpers import assert_no_crash, write_story
+
+# The loops scenario (conftest.loops_cfg): a 3 x 3 grid, 200 m blocks, one lane, 30 vehicles veh00..veh29.
+INSIDE = [(-50.0, -50.0), (1000.0, -50.0), (1000.0, 1000.0), (-50.0, 1000.0)]  # the whole net
+OUTSIDE = [(5000.0, 5000.0), (5100.0, 5000.0), (5100.0, 5100.0)]
+
+HEADER = """
+from storyboard import *
+
+class Ram(Effect):
+    # Speed checks off and full throttle: the vehicle drives into whoever is ahead.
+    def apply(self, vehicle):
+        vehicle.set_speed_mode(0)
+        vehicle.set_speed(40.0)
+
+    def remove(self, vehicle):
+        pass
+
+"""
+
+
+def run_criteria(cfg: Path, directory: Path, body: str, end: float = 120.0) -> tuple[RunResult, dict, ET.Element]:
+    directory.mkdir(parents=True, exist_ok=True)
+    story = write_story(directory, HEADER + "def createStories(board):\n" + body)
+    summary, junit = directory / "summary.json", directory / "junit.xml"
+    result = run(
+        cfg, story=story, end=end, seed=2, extra=["--summary", str(summary), "--junit", str(junit)], timeout=180
+    )
+    assert_no_crash(result)
+    assert result.returncode in (0, 3), result.stderr
+    return result, json.loads(summary.read_text(encoding="utf-8")), ET.parse(junit).getroot()
+
+
+def verdict_of(cfg: Path, directory: Path, criterion: str, stories: str = "") -> dict:
+    """Runs one criterion (after `stories`, lines of createStories) and returns its JSON entry,
+    checking that exit code, text summary and JUnit say the same."""
+    body = "".join(f"    {line}\n" for line in [*stories.splitlines(), f"board.registerCriterion({criterion})"] if line)
+    result, summary, junit = run_criteria(cfg, directory, body)
+    [entry] = summary["criteria"]
+    assert summary["verdict"] == ("passed" if entry["passed"] else "failed")
+    assert result.returncode == (0 if entry["passed"] else 3), result.stderr
+    status = "passed" if entry["passed"] else "FAILED"
+    line = f"criterion {entry['name']}: {status} (actual: {entry['actual']}; expected: {entry['expected']})"
+    assert line in result.stdout.splitlines(), result.stdout
+    [suite] = junit.findall("testsuite")
+    [case] = suite.findall("testcase")
+    assert case.get("name") == entry["name"]
+    assert suite.get("tests") == "1" and suite.get("failures") == ("0" if entry["passed"] else "1")
+    failure = case.find("failure")
+    if entry["passed"]:
+        assert failure is None
+    else:
+        assert failure is not None
+        assert entry["actual"] in failure.get("message", "") and entry["expected"] in failure.get("message", "")
+    return entry
+
+
+@pytest.fixture(scope="module")
+def two_lanes(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The loops scenario with two lanes per direction: SUMO's drivers change lanes."""
+    return make_grid(
+        tmp_path_factory.mktemp("two-lanes"),
+        grid=3,
+        lanes=2,
+        end=300.0,
+        seed=3,
+        traffic="loops",
+        vehicles=30,
+        ramp=30.0,
+    )
+
+
+def test_no_collision(loops_cfg: Path, tmp_path: Path) -> None:
+    ok = verdict_of(loops_cfg, tmp_path / "ok", "NoCollision()")
+    assert ok["passed"] and ok["actual"] == "0 collisions", ok
+    rams = "board.registerStory(Story(AndCondition(TimeCondition(40), CarSetCondition(['veh03'])), [Ram()]))"
+    crash = verdict_of(loops_cfg, tmp_path / "crash", "NoCollision()", rams)
+    assert not crash["passed"] and "veh03" in crash["actual"], crash
+
+
+def test_max_speed(loops_cfg: Path, tmp_path: Path) -> None:
+    # The net's limit is 13.89 m/s; SUMO's drivers exceed it by their speed factor, not by twice.
+    ok = verdict_of(loops_cfg, tmp_path / "ok", "MaxSpeed(28.0)")
+    assert ok["passed"], ok
+    fast = verdict_of(loops_cfg, tmp_path / "fast", "MaxSpeed(5.0, vehicles=['veh01', 'veh02'])")
+    assert not fast["passed"] and fast["expected"] == "<= 5 m/s", fast
+    assert float(fast["actual"].split()[0]) > 5.0 and fast["actual"].split()[2] in ("(veh01", "(veh02"), fast
+
+
+def test_reached_region(loops_cfg: Path, tmp_path: Path) -> None:
+    ok = verdict_of(loops_cfg, tmp_path / "ok", f"ReachedRegion('veh00', {INSIDE}, by=60)")
+    assert ok["passed"] and ok["actual"].startswith("reached at t="), ok
+    never = verdict_of(loops_cfg, tmp_path / "never", f"ReachedRegion('veh00', {OUTSIDE}, by=60)")
+    assert not never["passed"] and never["actual"] == "never reached", never
+
+
+def test_keeps_lane(loops_cfg: Path, two_lanes: Path, tmp_path: Path) -> None:
+    ok = verdict_of(loops_cfg, tmp_path / "ok", "KeepsLane()")  # one lane: nowhere to change to
+    assert ok["passed"] and ok["actual"] == "0 lane changes", ok
+    # On two lanes, veh01 is sent to the left lane at 40 s and back at 80 s.
+    moves = (
+        "board.registerStory(Story(AndCondition(TimeCondition(40, 80), CarSetCondition(['veh01'])), [LaneEffect(1)]))\n"
+        "board.registerStory(Story(AndCondition(TimeCondition(80), CarSetCondition(['veh01'])), [LaneEffect(0)]))"
+    )
+    changes = verdict_of(two_lanes, tmp_path / "changes", "KeepsLane(vehicles=['veh01'])", moves)
+    assert not changes["passed"] and "veh01" in changes["actual"], changes
+
+
+def test_story_activated(loops_cfg: Path, tmp_path: Path) -> None:
+    when = "AndCondition(TimeCondition(10), CarSetCondition(['veh01', 'veh02']))"
+    story = f"board.registerStory(Story({when}, [], name='two'))"
+    ok = verdict_of(loops_cfg, tmp_path / "ok", "StoryActivated('two', at_least=2)", story)
+    assert ok["passed"] and ok["actual"] == "2 activations", ok
+    more = verdict_of(loops_cfg, tmp_path / "more", "StoryActivated('two', at_least=3)", story)
+    assert not more["passed"] and more["expected"] == ">= 3 activations", more
+
+
+def test_custom_criterion_reads_events_and_statistics(loops_cfg: Path, tmp_path: Path) -> None:
+    body = """
+    class Recorder(Effect):
+        def apply(self, vehicle):
+            board.record('seen', 1.0, vehicle=vehicle.id)
+        def remove(self, vehicle):
+            pass
+
+    class FewActivations(Criterion):
+        def __init__(self, most):
+            super().__init__()
+            self.most = most
+        def evaluate(self, run):
+            n = sum(1 for e in run.events if e['type'] == 'activate')
+            seen = run.statistics['seen']['count']
+            return (n <= self.most and seen == n, f'{n} activations, {seen:g} recorded', f'<= {self.most}')
+
+    board.registerStory(Story(AndCondition(TimeCondition(10), CarSetCondition(['veh01', 'veh02', 'veh03'])),
+                              [Recorder()], name='three'))
+    board.registerCriterion(FewActivations(3), name='at most three')
+    board.registerCriterion(FewActivations(2))
+    """
+    import textwrap
+
+    result, summary, junit = run_criteria(loops_cfg, tmp_path, textwrap.indent(textwrap.dedent(body), "    "))
+    assert result.returncode == 3, result.stderr
+    first, second = summary["criteria"]
+    assert first == {"name": "at most three", "passed": True, "actual": "3 activations, 3 recorded", "expected": "<= 3"}
+    assert second["name"] == "FewActivations()" and not second["passed"]
+    cases = junit.findall("testsuite/testcase")
+    assert [c.get("name") for c in cases] == ["at most three", "FewActivations()"]
+    assert cases[0].find("failure") is None and cases[1].find("failure") is not None
+
+
+def test_check_lists_the_criteria(loops_cfg: Path, tmp_path: Path) -> None:
+    import subprocess
+
+    from sbsim.runner import executable
+
+    story = write_story(
+        tmp_path,
+        HEADER + "def createStories(board):\n    board.registerCriterion(NoCollision())\n"
+        "    board.registerCriterion(MaxSpeed(20, vehicles=['a', 'b']), name='slow')\n",
+    )
+    done = subprocess.run(
+        [str(executable()), "check", "--sumocfg", str(loops_cfg), "--story", str(story)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    assert "criterion 'NoCollision()'" in done.stdout.splitlines()
+    assert "criterion 'slow'" in done.stdout.splitlines()
+
+
+def test_a_run_without_criteria_has_no_verdict(loops_cfg: Path, tmp_path: Path) -> None:
+    result, summary, junit = run_criteria(loops_cfg, tmp_path, "    pass\n", end=5.0)
+    assert result.returncode == 0
+    assert summary["criteria"] == [] and summary["verdict"] is None
+    assert junit.find("testsuite").get("tests") == "0"
