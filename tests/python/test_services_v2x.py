@@ -148,3 +148,30 @@ def test_artery_police_services_keep_their_meanings(tmp_path: Path) -> None:
     # PoliceServiceStoryboard waits for the story's "siren on" at 10 s.
     assert counts["PoliceServiceStoryboard", False] == 0
     assert 90 <= counts["PoliceServiceStoryboard", True] < counts["PoliceService", True]
+
+
+def test_cam_condition_sees_the_neighbours_a_vehicle_heard_of(tmp_path: Path) -> None:
+    story = write_story(
+        tmp_path,
+        "from storyboard import *\n"
+        "def createStories(board):\n"
+        "    close = CamCondition(distance=20, max_age=0.5)\n"
+        "    board.registerStory(Story(close, [SignalEffect('close')], name='close'))\n",
+    )
+    services = tmp_path / "ca.xml"
+    services.write_text('<services><service type="CaService"/></services>')
+    _, events, fcd, _ = run_motorway(tmp_path, story, services, "--end", "60")
+    activations = [e for e in events if e["story"] == "close" and e["type"] == "activate"]
+    assert len(activations) > 10
+    for e in activations:
+        t, ego = e["t"], e["vehicle"]
+        here = fcd.pos[ego][t]
+        # A CAM at most 0.5 s old put some other vehicle within 20 m: it is within 20 m plus what
+        # both drove since (at most 0.5 s at 36 m/s each) now.
+        nearest = min(math.dist(here, p[t]) for v, p in fcd.pos.items() if v != ego and t in p)
+        assert nearest <= 20 + 36, (ego, t, nearest)
+    # Without the CA service nobody heard anything: never true.
+    empty = tmp_path / "none.xml"
+    empty.write_text('<services><service type="DenService"/></services>')
+    _, events, _, _ = run_motorway(tmp_path, story, empty, "--end", "60")
+    assert not [e for e in events if e["story"] == "close"]
