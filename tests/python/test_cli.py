@@ -77,6 +77,7 @@ OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--penetration": (None, "1"),
     "--storyboard-equipped-only": (None, None),
     "--events": (None, None),
+    "--denm-trace": (None, None),
     "--threads": (None, "0"),
     "--no-snapshot": (None, None),
     "--gui": (None, None),
