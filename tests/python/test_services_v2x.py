@@ -12,7 +12,7 @@ import json
 import math
 from pathlib import Path
 
-from sbsim_helpers import STORIES, FcdTrace, assert_no_crash, message_counts, read_fcd, write_story
+from sbsim_helpers import STORIES, FcdTrace, assert_bad_input, assert_no_crash, message_counts, read_fcd, write_story
 from storyboard.runner import RunResult, read_events, run
 
 SCENARIO = STORIES / "motorway-accident"
@@ -175,3 +175,24 @@ def test_cam_condition_sees_the_neighbours_a_vehicle_heard_of(tmp_path: Path) ->
     empty.write_text('<services><service type="DenService"/></services>')
     _, events, _, _ = run_motorway(tmp_path, story, empty, "--end", "60")
     assert not [e for e in events if e["story"] == "close"]
+
+
+def test_bad_use_case_files_are_one_line_naming_file_and_line(tmp_path: Path) -> None:
+    services = tmp_path / "services.xml"
+    services.write_text('<services>\n<service type="artery.application.DenService" useCases="uc.xml"/>\n</services>')
+    cases = {
+        '<usecases>\n<usecase type="artery.application.den.Skid"/>\n</usecases>': [
+            "uc.xml:2",
+            "unknown DEN use case 'Skid'",
+        ],
+        '<usecases>\n\n<usecase type="StoryboardEvent" cause="2"/>\n</usecases>': ["uc.xml:3", "'signal'"],
+        "<usecases><usecase/></usecases>": ["uc.xml:1", "no 'type'"],
+        "<cases/>": ["uc.xml:1", "root element must be <usecases>"],
+    }
+    for text, needles in cases.items():
+        (tmp_path / "uc.xml").write_text(text)
+        result = run(SCENARIO / "motorway.sumocfg", end=5, extra=["--services", str(services)], timeout=60)
+        assert_bad_input(result, "--services", *needles)
+    (tmp_path / "uc.xml").unlink()
+    result = run(SCENARIO / "motorway.sumocfg", end=5, extra=["--services", str(services)], timeout=60)
+    assert_bad_input(result, "uc.xml", "cannot read")
