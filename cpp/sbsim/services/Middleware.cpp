@@ -65,7 +65,9 @@ void Middleware::handleMessage(kernel::Message& msg) {
         }
         for (Service* s : services_) s->indicate(message);
         if (its != nullptr) {
-            for (Service* s : services_) its->dispatch(*s);
+            for (Service* s : services_) {
+                if (auto* handler = dynamic_cast<facilities::ItsMessageHandler*>(s)) its->dispatch(*handler);
+            }
         }
     } else {
         kernel::Module::handleMessage(msg);
