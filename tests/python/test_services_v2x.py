@@ -8,12 +8,12 @@ range beyond the area). Checked against the event log, the DENM trace and SUMO's
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 
-from sbsim_helpers import STORIES, FcdTrace, assert_no_crash, message_counts, read_fcd, write_story
-from storyboard.runner import RunResult, read_events, run
+from sbsim.messages import read_messages
+from sbsim.runner import RunResult, read_events, run
+from sbsim_helpers import STORIES, FcdTrace, assert_bad_input, assert_no_crash, message_counts, read_fcd, write_story
 
 SCENARIO = STORIES / "motorway-accident"
 STEP = 0.5  # motorway.sumocfg
@@ -21,19 +21,20 @@ CAP = 15.0  # story.py: SpeedEffect(15.0)
 
 
 def read_denm(path: Path) -> list[dict]:
-    return [json.loads(line) for line in path.read_text().splitlines() if line.strip()]
+    """The DENM phase lines of a message trace (its tx, rx and lost lines left out)."""
+    return [line for line in read_messages(path) if line["event"] == "denm"]
 
 
 def run_motorway(
     tmp_path: Path, story: Path, services: Path, *extra: str
 ) -> tuple[RunResult, list[dict], FcdTrace, list[dict]]:
-    events, fcd, denm = tmp_path / "events.jsonl", tmp_path / "fcd.xml", tmp_path / "denm.jsonl"
+    events, fcd, denm = tmp_path / "events.jsonl", tmp_path / "fcd.xml", tmp_path / "messages.jsonl"
     result = run(
         SCENARIO / "motorway.sumocfg",
         story=story,
         events=events,
         sumo_options=[f"--fcd-output {fcd}", "--precision 3"],
-        extra=["--services", str(services), "--denm-trace", str(denm), *extra],
+        extra=["--services", str(services), "--messages", str(denm), *extra],
         timeout=300,
     )
     assert_no_crash(result)
@@ -148,3 +149,51 @@ def test_artery_police_services_keep_their_meanings(tmp_path: Path) -> None:
     # PoliceServiceStoryboard waits for the story's "siren on" at 10 s.
     assert counts["PoliceServiceStoryboard", False] == 0
     assert 90 <= counts["PoliceServiceStoryboard", True] < counts["PoliceService", True]
+
+
+def test_cam_condition_sees_the_neighbours_a_vehicle_heard_of(tmp_path: Path) -> None:
+    story = write_story(
+        tmp_path,
+        "from storyboard import *\n"
+        "def createStories(board):\n"
+        "    close = CamCondition(distance=20, max_age=0.5)\n"
+        "    board.registerStory(Story(close, [SignalEffect('close')], name='close'))\n",
+    )
+    services = tmp_path / "ca.xml"
+    services.write_text('<services><service type="CaService"/></services>')
+    _, events, fcd, _ = run_motorway(tmp_path, story, services, "--end", "60")
+    activations = [e for e in events if e["story"] == "close" and e["type"] == "activate"]
+    assert len(activations) > 10
+    for e in activations:
+        t, ego = e["t"], e["vehicle"]
+        here = fcd.pos[ego][t]
+        # A CAM at most 0.5 s old put some other vehicle within 20 m: it is within 20 m plus what
+        # both drove since (at most 0.5 s at 36 m/s each) now.
+        nearest = min(math.dist(here, p[t]) for v, p in fcd.pos.items() if v != ego and t in p)
+        assert nearest <= 20 + 36, (ego, t, nearest)
+    # Without the CA service nobody heard anything: never true.
+    empty = tmp_path / "none.xml"
+    empty.write_text('<services><service type="DenService"/></services>')
+    _, events, _, _ = run_motorway(tmp_path, story, empty, "--end", "60")
+    assert not [e for e in events if e["story"] == "close"]
+
+
+def test_bad_use_case_files_are_one_line_naming_file_and_line(tmp_path: Path) -> None:
+    services = tmp_path / "services.xml"
+    services.write_text('<services>\n<service type="artery.application.DenService" useCases="uc.xml"/>\n</services>')
+    cases = {
+        '<usecases>\n<usecase type="artery.application.den.Skid"/>\n</usecases>': [
+            "uc.xml:2",
+            "unknown DEN use case 'Skid'",
+        ],
+        '<usecases>\n\n<usecase type="StoryboardEvent" cause="2"/>\n</usecases>': ["uc.xml:3", "'signal'"],
+        "<usecases><usecase/></usecases>": ["uc.xml:1", "no 'type'"],
+        "<cases/>": ["uc.xml:1", "root element must be <usecases>"],
+    }
+    for text, needles in cases.items():
+        (tmp_path / "uc.xml").write_text(text)
+        result = run(SCENARIO / "motorway.sumocfg", end=5, extra=["--services", str(services)], timeout=60)
+        assert_bad_input(result, "--services", *needles)
+    (tmp_path / "uc.xml").unlink()
+    result = run(SCENARIO / "motorway.sumocfg", end=5, extra=["--services", str(services)], timeout=60)
+    assert_bad_input(result, "uc.xml", "cannot read")

@@ -43,6 +43,9 @@ public:
 
 private:
     std::map<std::string, Entry, std::less<>> entries_;
+    // No entry expires before this (a lower bound: a CAM only moves its sender's expiry later), so
+    // dropExpired() walks the map about once per lifetime instead of on every trigger.
+    kernel::SimTime earliestExpiry_ = kernel::SimTime::max();
 };
 
 }  // namespace sbsim::facilities

@@ -78,8 +78,10 @@ void Middleware::handleMessage(kernel::Message& msg) {
         }
         if (its != nullptr) {
             for (Service* s : services_) {
+                auto* handler = dynamic_cast<facilities::ItsMessageHandler*>(s);
+                if (handler == nullptr) continue;
                 try {
-                    its->dispatch(*s);
+                    its->dispatch(*handler);
                 } catch (...) {
                     s->failed();
                 }

@@ -34,9 +34,11 @@ struct ServiceSpec;
 ///     };
 ///     SBSIM_REGISTER_SERVICE(Beacon);
 ///
-/// CAMs and DENMs arrive twice: at indicate() like any message, and at indicateCam() /
-/// indicateDenm() (facilities::ItsMessageHandler) after the station's facilities took them in.
-class SBSIM_API Service : public kernel::Module, public facilities::ItsMessageHandler {
+/// CAMs and DENMs arrive at indicate() like any message; a service that also derives from
+/// facilities::ItsMessageHandler gets them at indicateCam() / indicateDenm() too, after the
+/// station's facilities took them in. (A mix-in rather than a base of Service, so that service
+/// modules built against an older Service keep their layout.)
+class SBSIM_API Service : public kernel::Module {
 public:
     Service() : kernel::Module("service") {}
 

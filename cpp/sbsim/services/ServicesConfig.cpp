@@ -380,6 +380,11 @@ void attachUseCases(ServiceSpec& spec) {
             }
         }
     }
+    for (const ServiceSpec& u : useCases) {
+        const auto signal = u.parameter("signal");
+        if (u.type == "StoryboardEvent" && (!signal || trimmed(*signal).empty()))
+            fail(u.source, u.line, "the StoryboardEvent use case needs a 'signal' attribute");
+    }
     spec.useCases = std::make_shared<const std::vector<ServiceSpec>>(std::move(useCases));
 }
 

@@ -31,7 +31,7 @@ struct ItsLog {
 };
 ItsLog* itsLog = nullptr;
 
-class ItsProbe : public Service {
+class ItsProbe : public Service, public facilities::ItsMessageHandler {
 public:
     void indicateCam(const facilities::Cam&) override { ++itsLog->cams[vehicleId()]; }
     void indicateDenm(const facilities::Denm& d) override { itsLog->denms[vehicleId()].push_back(d.content()); }

@@ -173,10 +173,6 @@ void CommandLine::declareOptions(CLI::App& app) {
 
     app.option_defaults()->group("Run and output");
     app.add_option("--events", events, "write storyboard events as JSON Lines")->type_name("FILE.jsonl");
-    app.add_option("--denm-trace", denmTrace,
-                   "write what happened to DENM events (new, update, terminate,\nexpired; at the sender and each "
-                   "receiver) as JSON Lines")
-        ->type_name("FILE.jsonl");
     app.add_option("--summary", summary, "also write the summary as one JSON document")->type_name("FILE.json");
     app.add_option("--statistics", statistics,
                    "write what services and stories recorded (vehicle, source,\nname, time, value) as Parquet")

@@ -28,7 +28,6 @@ struct CommandLine {
     std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
     std::optional<std::filesystem::path> story;
     std::optional<std::filesystem::path> events;
-    std::optional<std::filesystem::path> denmTrace;
     std::optional<std::filesystem::path> summary;     ///< the summary as JSON
     std::optional<std::filesystem::path> statistics;  ///< what services and stories recorded, as Parquet
     std::optional<std::filesystem::path> junit;       ///< the criteria's verdicts as JUnit XML

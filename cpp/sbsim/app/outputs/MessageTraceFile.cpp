@@ -68,6 +68,14 @@ void MessageTraceFile::record(const radio::TraceLine& line, kernel::SimTime now)
     writeUpTo(now);
 }
 
+void MessageTraceFile::denmPhase(const facilities::DenmPhaseEvent& event) {
+    writeUpTo(event.time);
+    out_ << fmt::format(R"({{"t":{},"event":"denm","phase":"{}","station":{},"action":{},"cause":{}}})",
+                        event.time.str(), facilities::phaseName(event.phase), jsonText(event.station),
+                        jsonText(event.action.str()), event.cause)
+         << '\n';
+}
+
 void MessageTraceFile::finish(kernel::SimTime end) {
     writeUpTo(end);
     pending_ = {};

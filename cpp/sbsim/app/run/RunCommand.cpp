@@ -16,7 +16,6 @@
 #include "sbsim/app/inputs/ScenarioInputs.h"
 #include "sbsim/app/inputs/SumoOptions.h"
 #include "sbsim/app/inputs/SumoStateFile.h"
-#include "sbsim/app/outputs/DenmTrace.h"
 #include "sbsim/app/outputs/JUnitReport.h"
 #include "sbsim/app/outputs/MessageTraceFile.h"
 #include "sbsim/app/outputs/OutputFile.h"
@@ -75,8 +74,6 @@ int RunCommand::run(const CommandLine& cl) {
     // it cannot write fails at once.
     std::optional<OutputFile> events;
     if (cl.events) events.emplace("--events", *cl.events, files);
-    std::optional<OutputFile> denmFile;
-    if (cl.denmTrace) denmFile.emplace("--denm-trace", *cl.denmTrace, files);
     std::optional<OutputFile> summary;
     if (cl.summary) summary.emplace("--summary", *cl.summary, files);
     std::optional<OutputFile> messages;
@@ -126,11 +123,7 @@ int RunCommand::run(const CommandLine& cl) {
 
     std::optional<storyboard::EventLog> log;
     if (events) log.emplace(events->stream());
-    std::optional<DenmTrace> denmTrace;
-    if (denmFile) {
-        denmTrace.emplace(denmFile->stream());
-        scenario.stations().setPhaseSink(&*denmTrace);
-    }
+    if (messageTrace) scenario.stations().setPhaseSink(&*messageTrace);
     if (story) {
         storyboard::StoryScript& script = scenario.addStoryboard(
             *story, log ? &*log : nullptr,
@@ -202,7 +195,6 @@ int RunCommand::run(const CommandLine& cl) {
     if (messageTrace) messageTrace->finish(sim.now());
     if (messages && !Interruption::requested()) messages->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
-    if (denmFile && !Interruption::requested()) denmFile->commit();
     if (junit) {
         writeJUnit(junit->stream(), story ? story->filename().string() : sumocfg.filename().string(), verdicts,
                    std::chrono::duration<double>(Clock::now() - started).count());

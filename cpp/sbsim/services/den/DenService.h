@@ -21,7 +21,7 @@ namespace sbsim::services {
 /// repetition. Unlike Artery it ends events: terminate() stops the repetition and sends a
 /// cancellation DENM, which makes receivers drop the event. Reports "new" and "terminate" DENM
 /// phases of its own events to the station registry's sink.
-class SBSIM_API DenService : public Service {
+class SBSIM_API DenService : public Service, public facilities::ItsMessageHandler {
 public:
     DenService();
     ~DenService() override;
