@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include "sbsim/radio/Delivery.h"
+#include <string>
+#include <vector>
 
 namespace sbsim::radio {
 
@@ -57,6 +57,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     }
     // With a trace, stations out to the trace range are visited too (to report them out of range);
     // the draws stay those of the stations in range, in the same ascending order.
+    std::vector<std::string> receivers;
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
     for (const auto other : grid_.within(*self, radius)) {
         kernel::Module* receiver = receiverOf(snapshot_.ids()[other]);
@@ -84,8 +85,9 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             if (loss) line.reason = *loss;
             trace()->record(line, now);
         }
-        if (!loss) sendDirect(std::make_unique<Delivery>(shared), settings_.latency, *receiver);
+        if (!loss) receivers.push_back(snapshot_.ids()[other]);
     }
+    deliverLater(shared, std::move(receivers), settings_.latency);
 }
 
 }  // namespace sbsim::radio

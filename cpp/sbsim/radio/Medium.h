@@ -51,6 +51,8 @@ public:
     virtual std::optional<double> channelBusyRatio(const std::string& /*station*/) const { return std::nullopt; }
     /// Mean and max channel busy ratio so far; none when the medium does not model it.
     virtual std::optional<LoadFigures> loadFigures() const { return std::nullopt; }
+    /// Hands a frame's receptions (queued with deliverLater()) to their stations.
+    void handleMessage(kernel::Message& msg) override;
     /// Called by a receiving station when a message reaches it.
     void delivered(const V2xMessage& message);
 
@@ -70,6 +72,10 @@ protected:
     static void countLink(Counts& counts, double distance, bool received);
     MessageTrace* trace() const { return trace_; }
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
+    /// Delivers `message` to `stations` (in this order) after `delay`, from one kernel event: a
+    /// station that has left by then is skipped, as its own event would have been dropped.
+    void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<std::string> stations,
+                      kernel::SimTime delay);
 
 private:
     Directory directory_;

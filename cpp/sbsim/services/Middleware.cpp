@@ -37,11 +37,15 @@ void Middleware::trigger() {
 
 void Middleware::handleMessage(kernel::Message& msg) {
     if (auto* delivery = dynamic_cast<radio::Delivery*>(&msg)) {
-        manager_.medium().delivered(*delivery->message);
-        for (Service* s : services_) s->indicate(*delivery->message);
+        receive(*delivery->message);
     } else {
         kernel::Module::handleMessage(msg);
     }
+}
+
+void Middleware::receive(const radio::V2xMessage& message) {
+    manager_.medium().delivered(message);
+    for (Service* s : services_) s->indicate(message);
 }
 
 void Middleware::signal(const traffic::StoryboardSignal& signal) {

@@ -6,6 +6,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/radio/Receiver.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceVehicle.h"
 #include "sbsim/traffic/VehicleRegistry.h"
@@ -17,7 +18,7 @@ class ServiceManager;
 /// One vehicle's middleware: created when the vehicle departs, it hosts the vehicle's services
 /// (which the simulation owns, as modules) and hands them triggers, storyboard signals and incoming
 /// V2X messages. Removed, services first, when the vehicle arrives.
-class SBSIM_API Middleware : public kernel::Module {
+class SBSIM_API Middleware : public kernel::Module, public radio::Receiver {
 public:
     Middleware(ServiceManager& manager, std::string vehicleId);
 
@@ -35,6 +36,8 @@ public:
 
     void initialize() override { departedAt_ = simTime(); }
     void handleMessage(kernel::Message& msg) override;
+    /// A V2X message reached the station: through the facilities to the services.
+    void receive(const radio::V2xMessage& message) override;
 
 private:
     ServiceManager& manager_;
