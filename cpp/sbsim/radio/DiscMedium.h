@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/RandomStream.h"
@@ -42,6 +43,11 @@ private:
     const traffic::VehicleSnapshot& snapshot_;
     traffic::NeighbourGrid grid_;
     std::optional<kernel::SimTime> gridTime_;
+    /// Per snapshot index, the station's receiving side, looked up once per step (while no
+    /// module joins or leaves): null while unknown or not a station.
+    std::vector<Receiver*> receivers_;
+    std::vector<unsigned char> receiverKnown_;
+    std::uint64_t receiversChanges_ = 0;
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
 };
 

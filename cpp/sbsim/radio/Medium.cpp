@@ -7,33 +7,49 @@
 namespace sbsim::radio {
 
 namespace {
-/// One frame's receptions at one time. Receivers are named, not pointed at: a station may leave
-/// (its middleware removed) between the transmission and the delivery.
+/// One frame's receptions at one time.
 struct FrameDelivery : kernel::Message {
     static constexpr int kKind = 0x7632'7801;
-    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::vector<std::string> s)
-        : kernel::Message("v2x frame", kKind), message(std::move(m)), stations(std::move(s)) {}
+    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::vector<Receiver*> r, std::vector<std::string> s,
+                  std::uint64_t changes)
+        : kernel::Message("v2x frame", kKind),
+          message(std::move(m)),
+          receivers(std::move(r)),
+          stations(std::move(s)),
+          moduleChanges(changes) {}
     std::shared_ptr<const V2xMessage> message;
-    std::vector<std::string> stations;
+    std::vector<Receiver*> receivers;
+    std::vector<std::string> stations;  // the receivers' names, should one leave meanwhile
+    std::uint64_t moduleChanges;        // the simulation's when the receivers were taken
 };
 }  // namespace
 
-void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<std::string> stations,
-                          kernel::SimTime delay) {
-    if (stations.empty()) return;
-    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(stations)), delay, *this);
+Receiver* Medium::receivingSide(const std::string& stationId) const {
+    kernel::Module* module = receiverOf(stationId);
+    if (module == nullptr) return nullptr;
+    // The station's module is asked for its receiving side, not switched on by type.
+    auto* receiver = dynamic_cast<Receiver*>(module);
+    if (receiver == nullptr) throw std::logic_error("station '" + stationId + "' cannot receive V2X messages");
+    return receiver;
+}
+
+void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
+                          std::vector<std::string> stations, kernel::SimTime delay) {
+    if (receivers.empty()) return;
+    const std::uint64_t changes = simulation().moduleChanges();
+    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(receivers), std::move(stations), changes),
+               delay, *this);
 }
 
 void Medium::handleMessage(kernel::Message& msg) {
     if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
     const auto& frame = static_cast<const FrameDelivery&>(msg);
+    if (simulation().moduleChanges() == frame.moduleChanges) {
+        for (Receiver* receiver : frame.receivers) receiver->receive(*frame.message);
+        return;
+    }
     for (const std::string& station : frame.stations) {
-        kernel::Module* module = receiverOf(station);
-        if (module == nullptr) continue;  // left since the transmission
-        // The station's module is asked for its receiving side, not switched on by type.
-        auto* receiver = dynamic_cast<Receiver*>(module);
-        if (receiver == nullptr) throw std::logic_error("station '" + station + "' cannot receive V2X messages");
-        receiver->receive(*frame.message);
+        if (Receiver* receiver = receivingSide(station)) receiver->receive(*frame.message);  // else: it left
     }
 }
 

@@ -16,9 +16,12 @@
 
 namespace sbsim::radio {
 
+class Receiver;
+
 /// What carries V2X messages between stations: a model of the radio channel. A station sends
-/// with broadcast(); the medium decides who receives it and when, and sends each receiver's
-/// module (found through the Directory) a Delivery at that time. Counts messages per type.
+/// with broadcast(); the medium decides who receives it and when, and hands it to each receiver's
+/// module (found through the Directory, a radio::Receiver) at that time: all of a frame's
+/// receptions at one time from one kernel event. Counts messages per type.
 class SBSIM_API Medium : public kernel::Module {
 public:
     struct Counts {
@@ -35,8 +38,8 @@ public:
         double maxCbr = 0;
         std::uint64_t samples = 0;
     };
-    /// The module a station's receptions go to (its middleware), or none for a vehicle that is
-    /// not a station.
+    /// The module a station's receptions go to (its middleware, a radio::Receiver), or none for a
+    /// vehicle that is not a station.
     using Directory = std::function<kernel::Module*(const std::string& stationId)>;
 
     explicit Medium(Directory directory) : kernel::Module("medium"), directory_(std::move(directory)) {}
@@ -72,10 +75,14 @@ protected:
     static void countLink(Counts& counts, double distance, bool received);
     MessageTrace* trace() const { return trace_; }
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
-    /// Delivers `message` to `stations` (in this order) after `delay`, from one kernel event: a
-    /// station that has left by then is skipped, as its own event would have been dropped.
-    void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<std::string> stations,
-                      kernel::SimTime delay);
+    /// The receiving side of `stationId`'s module; null for a vehicle that is not a station.
+    Receiver* receivingSide(const std::string& stationId) const;
+    /// Delivers `message` to `receivers` (in this order; `stations` names them) after `delay`,
+    /// from one kernel event. A station that has left by then is skipped, as its own event would
+    /// have been dropped: the pointers are used only while no module joined or left meanwhile,
+    /// else the stations are looked up again by name.
+    void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
+                      std::vector<std::string> stations, kernel::SimTime delay);
 
 private:
     Directory directory_;

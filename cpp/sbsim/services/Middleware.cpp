@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "sbsim/radio/Delivery.h"
 #include "sbsim/services/ServiceManager.h"
 
 namespace sbsim::services {
@@ -33,14 +32,6 @@ void Middleware::trigger() {
     // trigger is the next one.
     if (simTime() <= departedAt_) return;
     for (Service* s : services_) s->trigger();
-}
-
-void Middleware::handleMessage(kernel::Message& msg) {
-    if (auto* delivery = dynamic_cast<radio::Delivery*>(&msg)) {
-        receive(*delivery->message);
-    } else {
-        kernel::Module::handleMessage(msg);
-    }
 }
 
 void Middleware::receive(const radio::V2xMessage& message) {

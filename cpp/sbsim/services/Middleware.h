@@ -35,7 +35,6 @@ public:
     void signal(const traffic::StoryboardSignal& signal);
 
     void initialize() override { departedAt_ = simTime(); }
-    void handleMessage(kernel::Message& msg) override;
     /// A V2X message reached the station: through the facilities to the services.
     void receive(const radio::V2xMessage& message) override;
 
