@@ -43,6 +43,8 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         grid_.build(snapshot_, settings_.range);
         gridTime_ = snapshot_.time();
         receiverKnown_.clear();
+        for (Neighbourhood& n : near_) n.known = false;
+        near_.resize(snapshot_.ids().size());
     }
     if (receiverKnown_.empty() || receiversChanges_ != simulation().moduleChanges()) {
         receiverKnown_.assign(snapshot_.ids().size(), 0);
@@ -69,14 +71,24 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     std::vector<std::string> stations;
     Counts* counts = countsOf(*shared);
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
-    for (const auto other : grid_.within(*self, radius)) {
+    Neighbourhood& near = near_[*self];
+    if (!near.known || near.radius != radius) {
+        near.others = grid_.within(*self, radius);
+        near.distance.resize(near.others.size());
+        for (std::size_t k = 0; k < near.others.size(); ++k)
+            near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
+        near.known = true;
+        near.radius = radius;
+    }
+    for (std::size_t k = 0; k < near.others.size(); ++k) {
+        const auto other = near.others[k];
         if (!receiverKnown_[other]) {
             receivers_[other] = receivingSide(snapshot_.ids()[other]);
             receiverKnown_[other] = 1;
         }
         Receiver* receiver = receivers_[other];
         if (receiver == nullptr) continue;  // a vehicle without services
-        const double distance = (positions.col(other) - positions.col(*self)).norm();
+        const double distance = near.distance[k];
         const double p = receptionProbability(distance);
         std::optional<LossReason> loss;
         if (distance > settings_.range) {

@@ -48,6 +48,15 @@ private:
     std::vector<Receiver*> receivers_;
     std::vector<unsigned char> receiverKnown_;
     std::uint64_t receiversChanges_ = 0;
+    /// Per snapshot index, the stations within the visit radius and their distances, computed at
+    /// the sender's first frame of a step and reused by its others (a beacon sends several).
+    struct Neighbourhood {
+        bool known = false;
+        double radius = 0;
+        std::vector<traffic::NeighbourGrid::Index> others;
+        std::vector<double> distance;
+    };
+    std::vector<Neighbourhood> near_;
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
 };
 
