@@ -44,12 +44,19 @@ void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector
 void Medium::handleMessage(kernel::Message& msg) {
     if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
     const auto& frame = static_cast<const FrameDelivery&>(msg);
+    Counts* counts = countsOf(*frame.message);  // one lookup per frame, not per reception
     if (simulation().moduleChanges() == frame.moduleChanges) {
-        for (Receiver* receiver : frame.receivers) receiver->receive(*frame.message);
+        for (Receiver* receiver : frame.receivers) {
+            if (counts != nullptr) ++counts->delivered;
+            receiver->receive(*frame.message);
+        }
         return;
     }
     for (const std::string& station : frame.stations) {
-        if (Receiver* receiver = receivingSide(station)) receiver->receive(*frame.message);  // else: it left
+        Receiver* receiver = receivingSide(station);
+        if (receiver == nullptr) continue;  // it left
+        if (counts != nullptr) ++counts->delivered;
+        receiver->receive(*frame.message);
     }
 }
 
@@ -78,11 +85,6 @@ void Medium::countLink(Counts& c, double distance, bool received) {
     }
     ++c.linkStations[bin];
     if (received) ++c.linkReceptions[bin];
-}
-
-void Medium::delivered(const V2xMessage& message) {
-    const auto it = counts_.find(message.typeName());
-    if (it != counts_.end()) ++it->second.delivered;
 }
 
 }  // namespace sbsim::radio

@@ -56,8 +56,6 @@ public:
     virtual std::optional<LoadFigures> loadFigures() const { return std::nullopt; }
     /// Hands a frame's receptions (queued with deliverLater()) to their stations.
     void handleMessage(kernel::Message& msg) override;
-    /// Called by a receiving station when a message reaches it.
-    void delivered(const V2xMessage& message);
 
     const std::map<std::string, Counts, std::less<>>& counts() const { return counts_; }
 

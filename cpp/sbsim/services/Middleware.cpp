@@ -35,7 +35,6 @@ void Middleware::trigger() {
 }
 
 void Middleware::receive(const radio::V2xMessage& message) {
-    manager_.medium().delivered(message);
     for (Service* s : services_) s->indicate(message);
 }
 
