@@ -12,7 +12,8 @@ busy ratio is the mean of those senders' CBR at their transmissions.
         [--seconds 4] [--configs base p15 p30 r18 dense]
 
 `--scale PRESET` instead times the grid benchmark (tools/make_grid.py presets, e.g. bench5k) with
-every vehicle beaconing at 10 Hz: plain `sumo`, sbsim with the disc model and sbsim with the
+every vehicle beaconing at 10 Hz: plain `sumo`, sbsim whose beacons never send (the floor: the
+radio's share is what the others cost above it), sbsim with the disc model and sbsim with the
 channel model (defaults), interleaved runs, medians, receptions per second of wall time.
 """
 
@@ -229,10 +230,18 @@ def scale(preset: str, end: float, runs: int, threads: int, floor_dbm: list[floa
     cfg = scenario(preset)
     services = cfg.parent / "beacon.services.xml"
     services.write_text('<services><service type="Beacon" interval="0.1" bytes="190"/></services>\n')
+    # The floor: the same services, never sending (SUMO, snapshot, middleware triggers only).
+    silent = cfg.parent / "silent.services.xml"
+    silent.write_text('<services><service type="Beacon" interval="1e9" bytes="190"/></services>\n')
     defaults = cfg.parent / "radio-defaults.toml"
     defaults.write_text("# the channel model's defaults\n")
     base = [sbsim(), "--sumocfg", str(cfg), "--end", f"{end:g}", "--services", str(services), "--threads", str(threads)]
-    commands = {"sumo": [sumo(), "-c", str(cfg), "--end", f"{end:g}"], "sbsim disc": base}
+    floor_run = [str(silent) if arg == str(services) else arg for arg in base]
+    commands = {
+        "sumo": [sumo(), "-c", str(cfg), "--end", f"{end:g}"],
+        "sbsim beacons silent": floor_run,
+        "sbsim disc": base,
+    }
     for floor in floor_dbm:
         name = "sbsim channel" + ("" if floor == -105 else f" floor {floor:g} dBm")
         commands[name] = [*base, "--radio", str(defaults), "--param", f"radio_interference_floor_dbm={floor:g}"]

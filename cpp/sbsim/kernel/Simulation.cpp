@@ -29,6 +29,7 @@ Module& Simulation::addModule(std::unique_ptr<Module> module) {
     module->simulation_ = this;
     Module& m = *module;
     modules_.push_back(std::move(module));
+    ++moduleChanges_;
     if (initialized_ && !finished_) {
         m.initialized_ = true;
         try {
@@ -52,6 +53,7 @@ void Simulation::removeModule(Module& module) {
     }
     fes_.removeAllFor(module);
     modules_.erase(it);
+    ++moduleChanges_;
 }
 
 void Simulation::initialize() {

@@ -46,6 +46,9 @@ public:
 
     SimTime now() const { return now_; }
     std::uint64_t eventCount() const { return events_; }
+    /// Modules added plus modules removed so far: pointers to modules taken while it is unchanged
+    /// are all still valid, and nothing new joined.
+    std::uint64_t moduleChanges() const { return moduleChanges_; }
     FutureEventSet& futureEvents() { return fes_; }
     /// Simulation-wide listeners: they hear every module's emits.
     SignalTable& signals() { return signals_; }
@@ -85,6 +88,7 @@ private:
     SignalTable signals_;
     SimTime now_;
     std::uint64_t events_ = 0;
+    std::uint64_t moduleChanges_ = 0;
     bool initialized_ = false;
     bool finished_ = false;
     bool stopRequested_ = false;

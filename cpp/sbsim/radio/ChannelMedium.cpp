@@ -7,7 +7,7 @@
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/CounterRandom.h"
-#include "sbsim/radio/Delivery.h"
+#include "sbsim/radio/Receiver.h"
 
 namespace sbsim::radio {
 
@@ -131,7 +131,7 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     countStart_.push_back(simTime());
     idleSince_.push_back(kernel::SimTime::zero());
     timers_.push_back(std::make_unique<StationTimer>(s));
-    module_.push_back(nullptr);
+    receiver_.push_back(nullptr);
     near_.emplace_back();
     return s;
 }
@@ -140,7 +140,7 @@ void ChannelMedium::refreshStations() {
     if (refreshedAt_ == snapshot_.time() && slotOfIndex_.size() == static_cast<std::size_t>(snapshot_.size())) return;
     refreshedAt_ = snapshot_.time();
     std::fill(present_.begin(), present_.end(), 0);
-    std::fill(module_.begin(), module_.end(), nullptr);
+    std::fill(receiver_.begin(), receiver_.end(), nullptr);
     slotOfIndex_.assign(static_cast<std::size_t>(snapshot_.size()), -1);
     const auto& positions = snapshot_.positions();
     for (traffic::VehicleSnapshot::Index i = 0; i < snapshot_.size(); ++i) {
@@ -156,7 +156,7 @@ void ChannelMedium::refreshStations() {
         slotOfIndex_[i] = s;
         present_[s] = 1;
         // Looked up once a step, not once a link: modules come and go only with SUMO's steps.
-        module_[s] = receiverOf(id);
+        receiver_[s] = receivingSide(id);
         x_[s] = positions(0, i);
         y_[s] = positions(1, i);
     }
@@ -372,6 +372,20 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     const double ratioDb = toDb(settings_.bandwidthHz / (settings_.rateMbps * 1e6));
     refreshStations();  // the receivers' modules as of the last step
     Counts* counts = countsOf(message);
+    // Receptions without a drawn delay share one kernel event (in receiver order, as their own
+    // events would have run); a drawn delay gives each its own.
+    const bool drawnDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform ||
+                            settings_.extraDelay == ChannelSettings::ExtraDelay::Gamma;
+    std::vector<Receiver*> receivers;
+    std::vector<std::string> stations;
+    const kernel::SimTime sharedDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Constant
+                                            ? kernel::SimTime::fromSeconds(settings_.delay)
+                                            : kernel::SimTime::zero();
+    const auto flush = [&] {
+        deliverLater(tx->message, std::move(receivers), std::move(stations), sharedDelay);
+        receivers.clear();
+        stations.clear();
+    };
 
     for (Link& link : tx->links) {
         const Slot r = link.receiver;
@@ -380,6 +394,9 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             in.erase(std::remove_if(in.begin(), in.end(), [&](const Incoming& e) { return e.tx == id; }), in.end());
             double total = 0;  // summed afresh, so no rounding drift accumulates
             for (const Incoming& e : in) total += e.mw;
+            // A station that senses the channel free may schedule its backoff's end, possibly at
+            // a delivery's time: the receptions so far go first, as their own events did.
+            if (contending_[r] && (total >= sensingMw_) != static_cast<bool>(sensedBusy_[r])) flush();
             setSensedPower(r, total);
         }
         if (locked_[r] == id) locked_[r] = 0;
@@ -405,7 +422,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
                 loss = LossReason::Collision;
             }
         }
-        kernel::Module* receiver = module_[r];
+        Receiver* receiver = receiver_[r];
         if (counts != nullptr) countLink(*counts, link.distance, !loss && receiver != nullptr);
         if (receiver == nullptr) continue;  // left the simulation during the frame
         if (loss) {
@@ -438,8 +455,14 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             line.sinrDb = sinrDb;
             trace()->record(line, simTime());
         }
-        sendDirect(std::make_unique<Delivery>(tx->message), extra, *receiver);
+        if (drawnDelay) {
+            deliverLater(tx->message, {receiver}, {ids_[r]}, extra);
+        } else {
+            receivers.push_back(receiver);
+            stations.push_back(ids_[r]);
+        }
     }
+    flush();
 
     const Slot s = tx->sender;
     transmitting_[s] = 0;

@@ -124,7 +124,7 @@ private:
         std::vector<double> distance, meanDbm;
     };
     std::vector<Neighbourhood> near_;
-    std::vector<kernel::Module*> module_;  // the station's receiving module as of the last step; null: gone
+    std::vector<Receiver*> receiver_;  // the station's receiving side as of the last step; null: gone
 
     std::optional<kernel::SimTime> refreshedAt_;
     std::vector<Slot> slotOfIndex_;  // per snapshot index, -1 = not a station

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
-#include "sbsim/radio/Delivery.h"
+#include "sbsim/radio/Receiver.h"
 
 namespace sbsim::radio {
 
@@ -40,6 +42,14 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     if (gridTime_ != snapshot_.time()) {
         grid_.build(snapshot_, settings_.range);
         gridTime_ = snapshot_.time();
+        receiverKnown_.clear();
+        for (Neighbourhood& n : near_) n.known = false;
+        near_.resize(snapshot_.ids().size());
+    }
+    if (receiverKnown_.empty() || receiversChanges_ != simulation().moduleChanges()) {
+        receiverKnown_.assign(snapshot_.ids().size(), 0);
+        receivers_.assign(snapshot_.ids().size(), nullptr);
+        receiversChanges_ = simulation().moduleChanges();
     }
     const std::shared_ptr<const V2xMessage> shared(std::move(message));
     const auto& positions = snapshot_.positions();
@@ -57,11 +67,28 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     }
     // With a trace, stations out to the trace range are visited too (to report them out of range);
     // the draws stay those of the stations in range, in the same ascending order.
+    std::vector<Receiver*> receivers;
+    std::vector<std::string> stations;
+    Counts* counts = countsOf(*shared);
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
-    for (const auto other : grid_.within(*self, radius)) {
-        kernel::Module* receiver = receiverOf(snapshot_.ids()[other]);
+    Neighbourhood& near = near_[*self];
+    if (!near.known || near.radius != radius) {
+        near.others = grid_.within(*self, radius);
+        near.distance.resize(near.others.size());
+        for (std::size_t k = 0; k < near.others.size(); ++k)
+            near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
+        near.known = true;
+        near.radius = radius;
+    }
+    for (std::size_t k = 0; k < near.others.size(); ++k) {
+        const auto other = near.others[k];
+        if (!receiverKnown_[other]) {
+            receivers_[other] = receivingSide(snapshot_.ids()[other]);
+            receiverKnown_[other] = 1;
+        }
+        Receiver* receiver = receivers_[other];
         if (receiver == nullptr) continue;  // a vehicle without services
-        const double distance = (positions.col(other) - positions.col(*self)).norm();
+        const double distance = near.distance[k];
         const double p = receptionProbability(distance);
         std::optional<LossReason> loss;
         if (distance > settings_.range) {
@@ -70,7 +97,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             // Draw only where loss is possible, so a lossless medium consumes no random numbers.
             loss = LossReason::Fade;
         }
-        if (distance <= settings_.range) countLink(*shared, distance, !loss);
+        if (distance <= settings_.range && counts != nullptr) countLink(*counts, distance, !loss);
         if (trace() != nullptr && (!loss || distance <= settings_.traceRange)) {
             TraceLine line;
             line.event = loss ? TraceLine::Event::Lost : TraceLine::Event::Rx;
@@ -84,8 +111,12 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             if (loss) line.reason = *loss;
             trace()->record(line, now);
         }
-        if (!loss) sendDirect(std::make_unique<Delivery>(shared), settings_.latency, *receiver);
+        if (!loss) {
+            receivers.push_back(receiver);
+            stations.push_back(snapshot_.ids()[other]);
+        }
     }
+    deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
 }
 
 }  // namespace sbsim::radio

@@ -3,6 +3,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/RandomStream.h"
@@ -42,6 +43,20 @@ private:
     const traffic::VehicleSnapshot& snapshot_;
     traffic::NeighbourGrid grid_;
     std::optional<kernel::SimTime> gridTime_;
+    /// Per snapshot index, the station's receiving side, looked up once per step (while no
+    /// module joins or leaves): null while unknown or not a station.
+    std::vector<Receiver*> receivers_;
+    std::vector<unsigned char> receiverKnown_;
+    std::uint64_t receiversChanges_ = 0;
+    /// Per snapshot index, the stations within the visit radius and their distances, computed at
+    /// the sender's first frame of a step and reused by its others (a beacon sends several).
+    struct Neighbourhood {
+        bool known = false;
+        double radius = 0;
+        std::vector<traffic::NeighbourGrid::Index> others;
+        std::vector<double> distance;
+    };
+    std::vector<Neighbourhood> near_;
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
 };
 

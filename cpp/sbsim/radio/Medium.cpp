@@ -1,6 +1,64 @@
 #include "sbsim/radio/Medium.h"
 
+#include <stdexcept>
+
+#include "sbsim/radio/Receiver.h"
+
 namespace sbsim::radio {
+
+namespace {
+/// One frame's receptions at one time.
+struct FrameDelivery : kernel::Message {
+    static constexpr int kKind = 0x7632'7801;
+    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::vector<Receiver*> r, std::vector<std::string> s,
+                  std::uint64_t changes)
+        : kernel::Message("v2x frame", kKind),
+          message(std::move(m)),
+          receivers(std::move(r)),
+          stations(std::move(s)),
+          moduleChanges(changes) {}
+    std::shared_ptr<const V2xMessage> message;
+    std::vector<Receiver*> receivers;
+    std::vector<std::string> stations;  // the receivers' names, should one leave meanwhile
+    std::uint64_t moduleChanges;        // the simulation's when the receivers were taken
+};
+}  // namespace
+
+Receiver* Medium::receivingSide(const std::string& stationId) const {
+    kernel::Module* module = receiverOf(stationId);
+    if (module == nullptr) return nullptr;
+    // The station's module is asked for its receiving side, not switched on by type.
+    auto* receiver = dynamic_cast<Receiver*>(module);
+    if (receiver == nullptr) throw std::logic_error("station '" + stationId + "' cannot receive V2X messages");
+    return receiver;
+}
+
+void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
+                          std::vector<std::string> stations, kernel::SimTime delay) {
+    if (receivers.empty()) return;
+    const std::uint64_t changes = simulation().moduleChanges();
+    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(receivers), std::move(stations), changes),
+               delay, *this);
+}
+
+void Medium::handleMessage(kernel::Message& msg) {
+    if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
+    const auto& frame = static_cast<const FrameDelivery&>(msg);
+    Counts* counts = countsOf(*frame.message);  // one lookup per frame, not per reception
+    if (simulation().moduleChanges() == frame.moduleChanges) {
+        for (Receiver* receiver : frame.receivers) {
+            if (counts != nullptr) ++counts->delivered;
+            receiver->receive(*frame.message);
+        }
+        return;
+    }
+    for (const std::string& station : frame.stations) {
+        Receiver* receiver = receivingSide(station);
+        if (receiver == nullptr) continue;  // it left
+        if (counts != nullptr) ++counts->delivered;
+        receiver->receive(*frame.message);
+    }
+}
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {
     message.sender_ = sender;
@@ -27,11 +85,6 @@ void Medium::countLink(Counts& c, double distance, bool received) {
     }
     ++c.linkStations[bin];
     if (received) ++c.linkReceptions[bin];
-}
-
-void Medium::delivered(const V2xMessage& message) {
-    const auto it = counts_.find(message.typeName());
-    if (it != counts_.end()) ++it->second.delivered;
 }
 
 }  // namespace sbsim::radio

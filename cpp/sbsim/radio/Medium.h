@@ -16,9 +16,12 @@
 
 namespace sbsim::radio {
 
+class Receiver;
+
 /// What carries V2X messages between stations: a model of the radio channel. A station sends
-/// with broadcast(); the medium decides who receives it and when, and sends each receiver's
-/// module (found through the Directory) a Delivery at that time. Counts messages per type.
+/// with broadcast(); the medium decides who receives it and when, and hands it to each receiver's
+/// module (found through the Directory, a radio::Receiver) at that time: all of a frame's
+/// receptions at one time from one kernel event. Counts messages per type.
 class SBSIM_API Medium : public kernel::Module {
 public:
     struct Counts {
@@ -35,8 +38,8 @@ public:
         double maxCbr = 0;
         std::uint64_t samples = 0;
     };
-    /// The module a station's receptions go to (its middleware), or none for a vehicle that is
-    /// not a station.
+    /// The module a station's receptions go to (its middleware, a radio::Receiver), or none for a
+    /// vehicle that is not a station.
     using Directory = std::function<kernel::Module*(const std::string& stationId)>;
 
     explicit Medium(Directory directory) : kernel::Module("medium"), directory_(std::move(directory)) {}
@@ -51,8 +54,8 @@ public:
     virtual std::optional<double> channelBusyRatio(const std::string& /*station*/) const { return std::nullopt; }
     /// Mean and max channel busy ratio so far; none when the medium does not model it.
     virtual std::optional<LoadFigures> loadFigures() const { return std::nullopt; }
-    /// Called by a receiving station when a message reaches it.
-    void delivered(const V2xMessage& message);
+    /// Hands a frame's receptions (queued with deliverLater()) to their stations.
+    void handleMessage(kernel::Message& msg) override;
 
     const std::map<std::string, Counts, std::less<>>& counts() const { return counts_; }
 
@@ -70,6 +73,14 @@ protected:
     static void countLink(Counts& counts, double distance, bool received);
     MessageTrace* trace() const { return trace_; }
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
+    /// The receiving side of `stationId`'s module; null for a vehicle that is not a station.
+    Receiver* receivingSide(const std::string& stationId) const;
+    /// Delivers `message` to `receivers` (in this order; `stations` names them) after `delay`,
+    /// from one kernel event. A station that has left by then is skipped, as its own event would
+    /// have been dropped: the pointers are used only while no module joined or left meanwhile,
+    /// else the stations are looked up again by name.
+    void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
+                      std::vector<std::string> stations, kernel::SimTime delay);
 
 private:
     Directory directory_;

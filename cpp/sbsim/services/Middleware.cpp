@@ -3,7 +3,6 @@
 #include <stdexcept>
 
 #include "sbsim/facilities/ItsMessage.h"
-#include "sbsim/radio/Delivery.h"
 #include "sbsim/services/ServiceManager.h"
 
 namespace sbsim::services {
@@ -58,37 +57,31 @@ void Middleware::trigger() {
     }
 }
 
-void Middleware::handleMessage(kernel::Message& msg) {
-    if (auto* delivery = dynamic_cast<radio::Delivery*>(&msg)) {
-        const radio::V2xMessage& message = *delivery->message;
-        manager_.medium().delivered(message);
-        // A cross-cast to the facilities' interface, not a switch on concrete types: the message
-        // itself says where it goes and what is kept of it.
-        const auto* its = dynamic_cast<const facilities::ItsMessage*>(&message);
-        if (its != nullptr) {
-            if (!its->reaches(position())) return;
-            its->store(manager_.stations(), vehicleId_, simTime());
+void Middleware::receive(const radio::V2xMessage& message) {
+    // A cross-cast to the facilities' interface, not a switch on concrete types: the message
+    // itself says where it goes and what is kept of it.
+    const auto* its = dynamic_cast<const facilities::ItsMessage*>(&message);
+    if (its != nullptr) {
+        if (!its->reaches(position())) return;
+        its->store(manager_.stations(), vehicleId_, simTime());
+    }
+    for (Service* s : services_) {
+        try {
+            s->indicate(message);
+        } catch (...) {
+            s->failed();
         }
+    }
+    if (its != nullptr) {
         for (Service* s : services_) {
+            auto* handler = dynamic_cast<facilities::ItsMessageHandler*>(s);
+            if (handler == nullptr) continue;
             try {
-                s->indicate(message);
+                its->dispatch(*handler);
             } catch (...) {
                 s->failed();
             }
         }
-        if (its != nullptr) {
-            for (Service* s : services_) {
-                auto* handler = dynamic_cast<facilities::ItsMessageHandler*>(s);
-                if (handler == nullptr) continue;
-                try {
-                    its->dispatch(*handler);
-                } catch (...) {
-                    s->failed();
-                }
-            }
-        }
-    } else {
-        kernel::Module::handleMessage(msg);
     }
 }
 

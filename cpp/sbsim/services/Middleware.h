@@ -10,6 +10,7 @@
 #include "sbsim/facilities/StationFacilities.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/radio/Receiver.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceVehicle.h"
 #include "sbsim/traffic/VehicleRegistry.h"
@@ -24,7 +25,7 @@ class ServiceManager;
 /// network and facilities layers too: a geo-broadcast message whose destination area does not
 /// hold the station goes no further, and CAMs and DENMs go into the station's LDM and DENM memory
 /// before its services see them; expired entries are dropped before every trigger.
-class SBSIM_API Middleware : public kernel::Module {
+class SBSIM_API Middleware : public kernel::Module, public radio::Receiver {
 public:
     Middleware(ServiceManager& manager, std::string vehicleId);
 
@@ -48,7 +49,8 @@ public:
     void signal(const traffic::StoryboardSignal& signal);
 
     void initialize() override;
-    void handleMessage(kernel::Message& msg) override;
+    /// A V2X message reached the station: through the facilities to the services.
+    void receive(const radio::V2xMessage& message) override;
 
 private:
     ServiceManager& manager_;

@@ -11,7 +11,7 @@
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/ChannelMedium.h"
-#include "sbsim/radio/Delivery.h"
+#include "sbsim/radio/Receiver.h"
 
 namespace sbsim::radio {
 namespace {
@@ -24,10 +24,10 @@ struct TestMessage : V2xMessage {
 };
 
 /// A station's module: counts what reaches it.
-struct Station : kernel::Module {
+struct Station : kernel::Module, Receiver {
     explicit Station(std::string id) : kernel::Module(std::move(id)) {}
-    void handleMessage(kernel::Message& msg) override {
-        received.push_back(static_cast<Delivery&>(msg).message->sender());
+    void receive(const V2xMessage& message) override {
+        received.push_back(message.sender());
         times.push_back(simTime());
     }
     std::vector<std::string> received;
