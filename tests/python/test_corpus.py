@@ -7,7 +7,8 @@ case.json keys:
   routes.rou.xml) in first; the case's own files override it;
 - ``setup`` (optional): shell lines run in the scratch folder before (FIFOs, truncated files, symlinks);
 - ``interrupt`` (optional): ``{"signal": "SIGINT", "when": "<regex on stdout+stderr>" | seconds, "repeat": n}``;
-- ``outputs`` (optional): files the run may leave complete (a successful run's event log).
+- ``outputs`` (optional): files the run may leave complete (a successful run's event log);
+- ``produces`` (optional): files the run must leave (a finished log that must not be lost).
 
 Every case must give the expected exit within the timeout, one message line on stderr (warnings and,
 for story errors, the Python traceback before it aside),
@@ -128,3 +129,5 @@ def test_corpus_case(name: str, tmp_path: Path, corpus_scenario: Path) -> None:
     allowed = set(case.get("outputs", []))
     for path in set(after) - set(before):
         assert path.endswith(".incomplete") or path in allowed, f"{path} was written and looks complete"
+    for path in case.get("produces", []):
+        assert path in after, f"{path} was not written"
