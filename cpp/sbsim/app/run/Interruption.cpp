@@ -5,6 +5,7 @@
 
 #include <atomic>
 
+#include "sbsim/kernel/StopRequest.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 
 namespace sbsim::app {
@@ -19,6 +20,7 @@ int originalStderr = -1;
 // Only async-signal-safe calls here.
 extern "C" void onSignal(int) {
     if (signalsReceived.fetch_add(1) == 0) {
+        kernel::StopRequest::request();  // long C++ loops give up at their next safe point
         storyboard::PythonRuntime::interruptFromSignalHandler();
         return;
     }
