@@ -51,6 +51,9 @@ bool installed(int signal) {
 void Interruption::install() {
     if (originalStderr < 0) originalStderr = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
     installHandlers();
+    // A reader that goes away (sbsim ... | head) is not a reason to die: writes get EPIPE, which
+    // the progress and summary ignore and an output file reports.
+    std::signal(SIGPIPE, SIG_IGN);
 }
 
 bool Interruption::requested() { return signalsReceived.load() > 0; }

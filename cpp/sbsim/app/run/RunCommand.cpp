@@ -5,9 +5,11 @@
 #include <libsumo/TraCIDefs.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <system_error>
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/inputs/BundledScenario.h"
@@ -180,7 +182,11 @@ int RunCommand::run(const CommandLine& cl) {
         if (!Interruption::requested()) summary->commit();
     }
     if (!cl.quiet) {
-        printSummary(figures);
+        try {
+            printSummary(figures);
+        } catch (const std::system_error& e) {
+            if (e.code().value() != EPIPE) throw;  // nobody reads stdout any more: the run is still done
+        }
         std::fflush(stdout);
     }
     if (story) {
