@@ -29,6 +29,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         spec = StudySpec.load(args.study)
         if args.workers is not None and args.workers < 1:
             raise StudyError("--workers must be >= 1")
+        if args.timeout is not None and not args.timeout > 0:
+            raise StudyError(f"--timeout must be > 0 seconds, not {args.timeout}")
         result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout)
     except StudyError as e:
         print(f"study: {e}", file=sys.stderr)
