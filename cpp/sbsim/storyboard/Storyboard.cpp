@@ -28,7 +28,7 @@ traffic::SnapshotColumns Storyboard::columns() const {
     if (stories_.empty()) return {};
     // Speed for the stacks that hold a vehicle's speed (settle()), whatever the conditions read.
     traffic::SnapshotColumns columns = traffic::SnapshotColumns::Speed;
-    for (const Condition* c : conditions_) columns |= c->columns();
+    columns |= conditionColumns_;
     return columns;
 }
 
@@ -40,12 +40,14 @@ void Storyboard::onColumnsChanged(std::function<void(traffic::SnapshotColumns)> 
 void Storyboard::collectConditions(Condition& root) {
     if (!knownConditions_.insert(&root).second) return;  // shared node: visited once
     conditions_.push_back(&root);
+    conditionColumns_ |= root.columns();
     if (const auto r = root.neighbourRadius()) neighbourRadius_ = std::max(neighbourRadius_.value_or(0.0), *r);
     root.forEachChild([this](Condition& child) { collectConditions(child); });
 }
 
 void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
+    const traffic::SnapshotColumns before = columns();
     story->setDefaultName(fmt::format("story{}", stories_.size()));
     collectConditions(story->condition());
     if (story->isWorldStory()) {
@@ -54,7 +56,7 @@ void Storyboard::registerStory(StoryPtr story) {
         vehicles_.addStory(*story, stories_.size());
     }
     stories_.push_back(std::move(story));
-    if (columnsChanged_) columnsChanged_(columns());
+    if (columnsChanged_ && columns() != before) columnsChanged_(columns());  // the snapshot reads only what is needed
 }
 
 std::size_t Storyboard::maxConditionStates() const {

@@ -90,6 +90,9 @@ private:
     std::vector<StoryPtr> stories_;
     std::vector<Condition*> conditions_;  // every distinct node of every tree, for prepare/forget
     std::unordered_set<Condition*> knownConditions_;
+    /// The union of conditions_' columns, kept as nodes arrive: recomputing it per registered
+    /// story made registering n stories quadratic (100,000 stories took 80x the time of 10,000).
+    traffic::SnapshotColumns conditionColumns_;
     std::optional<double> neighbourRadius_;
     traffic::NeighbourGrid grid_;
     std::unique_ptr<traffic::TrafficQueries> queries_;
