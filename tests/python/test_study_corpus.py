@@ -58,3 +58,21 @@ def test_study_timeout_not_positive(timeout: str, tmp_path: Path, trips_cfg: Pat
     shutil.copy(trips_cfg, tmp_path / "grid.sumocfg")
     (tmp_path / "study.toml").write_text('sumocfg = "grid.sumocfg"\n', encoding="utf-8")
     check_refused(run_study(tmp_path, "study.toml", "--timeout", timeout), r"--timeout must be > 0", tmp_path)
+
+
+@pytest.mark.parametrize("address", ["not an address", "tcp://", "http://x/y", "host"])
+def test_study_scheduler_malformed(address: str, tmp_path: Path, trips_cfg: Path) -> None:
+    shutil.copy(trips_cfg, tmp_path / "grid.sumocfg")
+    (tmp_path / "study.toml").write_text('sumocfg = "grid.sumocfg"\n', encoding="utf-8")
+    check_refused(
+        run_study(tmp_path, "study.toml", "--scheduler", address), r"--scheduler .* is not an address", tmp_path
+    )
+
+
+def test_study_output_folder_cannot_be_made(tmp_path: Path, trips_cfg: Path) -> None:
+    shutil.copy(trips_cfg, tmp_path / "grid.sumocfg")
+    (tmp_path / "blocker").write_text("a file where the folder's parent should be", encoding="utf-8")
+    (tmp_path / "study.toml").write_text(
+        'sumocfg = "grid.sumocfg"\n[outputs]\ndirectory = "blocker/results"\n', encoding="utf-8"
+    )
+    check_refused(run_study(tmp_path, "study.toml"), r"output folder .* cannot be made", tmp_path)
