@@ -7,7 +7,9 @@ case.json keys:
   routes.rou.xml) in first; the case's own files override it;
 - ``setup`` (optional): shell lines run in the scratch folder before (FIFOs, truncated files, symlinks);
 - ``interrupt`` (optional): ``{"signal": "SIGINT", "when": "<regex on stdout+stderr>" | seconds, "repeat": n}``;
-- ``outputs`` (optional): files the run may leave complete (a successful run's event log).
+- ``outputs`` (optional): files the run may leave complete (a successful run's event log);
+- ``message_lost`` (optional): the case closes stderr itself, so no message line can arrive;
+- ``produces`` (optional): files the run must leave (a finished log that must not be lost).
 
 Every case must give the expected exit within the timeout, one message line on stderr (warnings and,
 for story errors, the Python traceback before it aside),
@@ -116,7 +118,9 @@ def test_corpus_case(name: str, tmp_path: Path, corpus_scenario: Path) -> None:
     assert code >= 0, f"killed by signal {-code}:\n{err}"
     assert code == case["exit"], f"exit {code}, expected {case['exit']}:\n{err}"
     lines = message_lines(err)
-    if case["exit"] != 0:
+    if case.get("message_lost"):
+        assert not lines, f"stderr was closed, yet:\n{err}"
+    elif case["exit"] != 0:
         assert len(lines) == 1, f"expected one message line, got {len(lines)}:\n{err}"
         assert re.search(case["message"], lines[0]), f"{lines[0]!r} does not match {case['message']!r}"
     elif "message" in case:
@@ -128,3 +132,5 @@ def test_corpus_case(name: str, tmp_path: Path, corpus_scenario: Path) -> None:
     allowed = set(case.get("outputs", []))
     for path in set(after) - set(before):
         assert path.endswith(".incomplete") or path in allowed, f"{path} was written and looks complete"
+    for path in case.get("produces", []):
+        assert path in after, f"{path} was not written"

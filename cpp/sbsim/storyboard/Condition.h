@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -17,6 +18,8 @@
 namespace sbsim::storyboard {
 
 class CheckContext;
+class Condition;
+using ConditionPtr = std::shared_ptr<Condition>;
 
 /// A node of a story's condition tree. A condition object may be shared by several stories (and
 /// several places of one tree); it then shares its state, as in Artery. Per-vehicle state is keyed
@@ -64,8 +67,28 @@ public:
     virtual std::optional<TimeWindow> timeWindow() const { return std::nullopt; }
     /// Reports to `sbsim check` what looks wrong in this node itself (its children report their own).
     virtual void check(CheckContext& /*ctx*/) const {}
-};
 
-using ConditionPtr = std::shared_ptr<Condition>;
+    /// The deepest a condition tree may be. Trees are evaluated, described (`check --json`) and
+    /// destroyed (shared_ptr) recursively; a depth bounded when a node is built bounds the stack
+    /// of all three. Far beyond any written story (Python's own recursion limit is 1000 too).
+    static constexpr std::size_t kMaxDepth = 1000;
+    /// The most nodes a tree may have, a node shared by several branches counted in each: a
+    /// tree is evaluated branch by branch, so `c = AndCondition(c, c)` repeated 60 times would
+    /// be 2^60 evaluations per vehicle, a hang without this bound.
+    static constexpr std::size_t kMaxNodes = 1'000'000;
+    /// Levels from this node down to its deepest leaf, itself included (a leaf: 1).
+    std::size_t depth() const { return depth_; }
+    /// Nodes of the tree under and including this node, shared ones counted each time (a leaf: 1).
+    std::size_t nodes() const { return nodes_; }
+
+protected:
+    /// For a node's constructor, with its (non-null) children: sets depth() and nodes(), and throws
+    /// std::invalid_argument naming `who` and the limit if the tree would pass kMaxDepth or kMaxNodes.
+    void setDepthOver(std::string_view who, std::span<const ConditionPtr> children);
+
+private:
+    std::size_t depth_ = 1;
+    std::size_t nodes_ = 1;
+};
 
 }  // namespace sbsim::storyboard

@@ -28,7 +28,7 @@ traffic::SnapshotColumns Storyboard::columns() const {
     if (stories_.empty() && criteria_.empty()) return {};
     // Speed for the stacks that hold a vehicle's speed (settle()), whatever the conditions read.
     traffic::SnapshotColumns columns = traffic::SnapshotColumns::Speed;
-    for (const Condition* c : conditions_) columns |= c->columns();
+    columns |= conditionColumns_;
     for (const CriterionPtr& c : criteria_) columns |= c->columns();
     return columns;
 }
@@ -41,18 +41,19 @@ void Storyboard::onColumnsChanged(std::function<void(traffic::SnapshotColumns)> 
 void Storyboard::collectConditions(Condition& root) {
     if (!knownConditions_.insert(&root).second) return;  // shared node: visited once
     conditions_.push_back(&root);
+    conditionColumns_ |= root.columns();
     if (const auto r = root.neighbourRadius()) neighbourRadius_ = std::max(neighbourRadius_.value_or(0.0), *r);
     root.forEachChild([this](Condition& child) { collectConditions(child); });
 }
 
 void Storyboard::registerStory(StoryPtr story) {
     if (!story) throw std::invalid_argument("registerStory needs a Story, got None");
+    const traffic::SnapshotColumns before = columns();
     story->setDefaultName(fmt::format("story{}", stories_.size()));
-    // One name, one story: the summary, the event log and every table key stories by name.
-    for (const StoryPtr& s : stories_) {
-        if (s->name() == story->name()) {
-            throw std::invalid_argument(fmt::format("two stories are named '{}'; give each its own name", s->name()));
-        }
+    // One name, one story: the summary, the event log and every table key stories by name. A set,
+    // so registering many stories stays linear.
+    if (!storyNames_.insert(story->name()).second) {
+        throw std::invalid_argument(fmt::format("two stories are named '{}'; give each its own name", story->name()));
     }
     collectConditions(story->condition());
     if (story->isWorldStory()) {
@@ -61,7 +62,7 @@ void Storyboard::registerStory(StoryPtr story) {
         vehicles_.addStory(*story, stories_.size());
     }
     stories_.push_back(std::move(story));
-    if (columnsChanged_) columnsChanged_(columns());
+    if (columnsChanged_ && columns() != before) columnsChanged_(columns());  // the snapshot reads only what is needed
 }
 
 void Storyboard::registerCriterion(CriterionPtr criterion) {

@@ -1,7 +1,12 @@
 #include "sbsim/storyboard/VehiclePass.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <limits>
+
+#include "sbsim/kernel/OneLine.h"
+#include "sbsim/storyboard/StoryError.h"
 
 namespace sbsim::storyboard {
 
@@ -221,15 +226,23 @@ void VehiclePass::activate(VehicleState& state, std::size_t s, const std::string
     // Removed in reverse order like the effects, so an observer's effect goes last.
     if (observer_ != nullptr) {
         if (Effect* dressing = observer_->onActivation(stories_[s].boardIndex))
-            applyEffect(scope, state.applied[s], *dressing);
+            applyEffect(scope, story, state.applied[s], *dressing);
     }
-    for (const EffectPtr& effect : story.effects()) applyEffect(scope, state.applied[s], *effect);
+    for (const EffectPtr& effect : story.effects()) applyEffect(scope, story, state.applied[s], *effect);
 }
 
-void VehiclePass::applyEffect(Scope& scope, std::vector<AppliedEffect>& applied, Effect& effect) {
+void VehiclePass::applyEffect(Scope& scope, const Story& story, std::vector<AppliedEffect>& applied, Effect& effect) {
     const traffic::EffectStack::Token token = registry_.newToken();
     scope.setToken(token);
-    effect.apply(scope);
+    // What SUMO refuses (an unknown vehicle type) names the story, as world effects do.
+    try {
+        effect.apply(scope);
+    } catch (const StoryError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw StoryError(fmt::format("story '{}': {} at t={} s: {}", story.name(), effect.typeName(), now_.str(),
+                                     kernel::oneLine(e.what())));
+    }
     applied.push_back({&effect, token});
 }
 

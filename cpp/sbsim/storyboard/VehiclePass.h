@@ -95,7 +95,7 @@ private:
     void activate(VehicleState& state, std::size_t story, const std::string& id, const ConditionResult& result,
                   const traffic::VehicleSnapshot& snapshot);
     void deactivate(VehicleState& state, std::size_t story, const std::string& id);
-    void applyEffect(Scope& scope, std::vector<AppliedEffect>& applied, Effect& effect);
+    void applyEffect(Scope& scope, const Story& story, std::vector<AppliedEffect>& applied, Effect& effect);
 
     SignalOutlet signals_;
     traffic::VehicleRegistry& registry_;

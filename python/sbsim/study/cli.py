@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -10,6 +11,9 @@ from pathlib import Path
 from sbsim.study.execution import run
 from sbsim.study.spec import StudyError, StudySpec
 from sbsim.study.tables import plot
+
+#: What --scheduler accepts: Dask's protocol://host:port, or host:port.
+SCHEDULER_ADDRESS = re.compile(r"((tcp|tls|ucx|inproc)://)?[\w.\-\[\]:]+:\d{1,5}")
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -29,7 +33,20 @@ def main(argv: Sequence[str] | None = None) -> int:
         spec = StudySpec.load(args.study)
         if args.workers is not None and args.workers < 1:
             raise StudyError("--workers must be >= 1")
-        result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout)
+        if args.timeout is not None and not args.timeout > 0:
+            raise StudyError(f"--timeout must be > 0 seconds, not {args.timeout}")
+        if args.scheduler is not None and not SCHEDULER_ADDRESS.fullmatch(args.scheduler):
+            raise StudyError(f"--scheduler '{args.scheduler}' is not an address like tcp://host:8786")
+        try:
+            spec.directory.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise StudyError(f"the output folder '{spec.directory}' cannot be made: {e.strerror}") from e
+        try:
+            result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout)
+        except OSError as e:
+            if args.scheduler is None:
+                raise
+            raise StudyError(f"--scheduler '{args.scheduler}': cannot reach it ({e})") from e
     except StudyError as e:
         print(f"study: {e}", file=sys.stderr)
         return 2

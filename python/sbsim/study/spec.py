@@ -5,11 +5,15 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
+import math
 import os
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+#: The most runs a study may make (seeds x parameter values): checked before any run starts.
+MAX_RUNS = 100_000
 
 #: A parameter value as sbsim's --param types it.
 Value = bool | int | float | str
@@ -73,28 +77,71 @@ class StudySpec:
             raise StudyError(f"{source}: 'sumocfg' is missing")
 
         def file(key: str) -> Path | None:
-            return (base / data[key]).resolve() if key in data else None
+            if key not in data:
+                return None
+            if not isinstance(data[key], str) or not data[key]:
+                raise StudyError(f"{source}: '{key}' must be a file name")
+            path = (base / data[key]).resolve()
+            if not path.is_file():
+                raise StudyError(f"{source}: {key} '{data[key]}': no such file ({path})")
+            return path
+
+        def whole(value: object) -> bool:
+            return isinstance(value, int) and not isinstance(value, bool)
 
         seeds = data.get("seeds", [23423])
         if isinstance(seeds, dict):
             first, count = seeds.get("first", 1), seeds.get("count", 1)
-            if not isinstance(first, int) or not isinstance(count, int) or count < 1:
+            if not whole(first) or not whole(count) or count < 1:
                 raise StudyError(f"{source}: seeds needs whole numbers 'first' and 'count' >= 1")
+            if count > MAX_RUNS:
+                raise StudyError(f"{source}: seeds.count {count} is more than a study may run ({MAX_RUNS})")
             seeds = list(range(first, first + count))
-        if not isinstance(seeds, list) or not seeds or not all(isinstance(s, int) for s in seeds):
+        if not isinstance(seeds, list) or not seeds or not all(whole(s) for s in seeds):
             raise StudyError(f"{source}: seeds must be a non-empty list of whole numbers or {{ first, count }}")
+        if len(set(seeds)) != len(seeds):
+            duplicate = next(s for s in seeds if seeds.count(s) > 1)
+            raise StudyError(f"{source}: seed {duplicate} is listed twice (the runs would be the same)")
+        if any(not 0 <= s < 2**63 for s in seeds):
+            raise StudyError(f"{source}: seeds must be from 0 to {2**63 - 1}")
         parameters = data.get("parameters", {})
+        if not isinstance(parameters, dict):
+            raise StudyError(f"{source}: 'parameters' must be a table of name = [values]")
+        runs = len(seeds)
         for name, values in parameters.items():
+            if not name.isidentifier():
+                raise StudyError(f"{source}: parameter name '{name}' is not a name (letters, digits, _)")
             if not isinstance(values, list) or not values:
                 raise StudyError(f"{source}: parameter '{name}' needs a non-empty list of values")
+            kinds = {type(v) for v in values}
+            if not kinds <= {bool, int, float, str}:
+                raise StudyError(f"{source}: parameter '{name}' takes numbers, booleans or strings only")
+            if len(kinds - ({int, float} if kinds <= {int, float} else set())) > 1:
+                raise StudyError(
+                    f"{source}: parameter '{name}' mixes value types ({', '.join(sorted(k.__name__ for k in kinds))})"
+                )
+            if any(isinstance(v, float) and not math.isfinite(v) for v in values):
+                raise StudyError(f"{source}: parameter '{name}' has a value that is not finite")
+            runs *= len(values)
+        if runs > MAX_RUNS:
+            raise StudyError(f"{source}: the study makes {runs} runs, more than a study may run ({MAX_RUNS})")
         outputs = data.get("outputs", {})
+        if not isinstance(outputs, dict) or not isinstance(outputs.get("directory", "results"), str):
+            raise StudyError(f"{source}: 'outputs' must be a table with a 'directory' name")
         directory = base / outputs.get("directory", "results")
         messages = outputs.get("messages", False)
         if not isinstance(messages, bool):
             raise StudyError(f"{source}: [outputs] messages must be true or false")
         end = data.get("end")
-        if end is not None and not isinstance(end, int | float):
-            raise StudyError(f"{source}: 'end' must be a number of seconds")
+        if end is not None and (not isinstance(end, int | float) or isinstance(end, bool) or not math.isfinite(end)):
+            raise StudyError(f"{source}: 'end' must be a finite number of seconds")
+        if end is not None and end <= 0:
+            raise StudyError(f"{source}: 'end' must be > 0 seconds")
+        args = data.get("args", [])
+        if not isinstance(args, list) or not all(isinstance(a, str | int | float) for a in args):
+            raise StudyError(f'{source}: \'args\' must be a list of words, e.g. ["--threads", "2"]')
+        if "sumocfg" in data and not isinstance(data["sumocfg"], str):
+            raise StudyError(f"{source}: 'sumocfg' must be a file name")
         return cls(
             sumocfg=file("sumocfg") or Path(),
             directory=directory.resolve(),
@@ -105,7 +152,7 @@ class StudySpec:
             radio=file("radio"),
             messages=messages,
             end=None if end is None else float(end),
-            args=tuple(str(a) for a in data.get("args", [])),
+            args=tuple(str(a) for a in args),
         )
 
     def runs(self) -> list[Run]:

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -377,6 +378,45 @@ TEST(TtcCondition, KeepsPosesOnlyOfRunningVehicles) {
     scene.set({}, SimTime::fromSeconds(4));
     c.prepare(scene.ctx());
     EXPECT_EQ(c.heldVehicles(), 0u);
+}
+
+TEST(TtcCondition, LongHorizonEqualsSamplingEveryStep) {
+    // Horizons long enough that the candidate runs pass 2·64 samples, where conflict() tests
+    // the ends and the middle only: the answer must be what every sample gives.
+    std::mt19937_64 rng(909);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int conflicts = 0;
+    constexpr int kPairs = 3'000;
+    for (int k = 0; k < kPairs; ++k) {
+        const double angle = 360 * unit(rng);
+        const Footprint a = Footprint::fromSumo(V(0, 0), angle, 3 + std::round(9 * unit(rng)), 1.8);
+        // Ahead or behind in the same lane or the next, the same heading or nearly: long runs.
+        const V offset = (300 * unit(rng) - 150) * a.heading() + (6 * unit(rng) - 3) * a.right();
+        const Footprint b = Footprint::fromSumo(a.centre() + offset, angle + (unit(rng) < 0.5 ? 0 : unit(rng) - 0.5),
+                                                3 + std::round(9 * unit(rng)), 1.8);
+        const double va = 5 + 30 * unit(rng);
+        const double vb = unit(rng) < 0.3 ? va : va + 0.2 * unit(rng) - 0.1;
+        const double ttc = std::vector<double>{60, 600, 3000}[k % 3];
+        const bool expected = naiveConflict(a, va, b, vb, ttc);
+        ASSERT_EQ(TtcCondition::conflict(a, va, b, vb, ttc), expected) << "pair " << k << "; ttc " << ttc;
+        conflicts += expected;
+    }
+    EXPECT_GT(conflicts, kPairs / 50);
+}
+
+TEST(TtcCondition, HugeHorizonIsBoundedWork) {
+    // TtcCondition(1e308): about 1e15 samples per pair before; each call must now end at once.
+    const auto start = std::chrono::steady_clock::now();
+    const Footprint north = Footprint::fromSumo(V(0, 0), 0, 5, 1.8);
+    EXPECT_TRUE(TtcCondition::conflict(north, 10, Footprint::fromSumo(V(0, 400), 180, 5, 1.8), 10, 1e308));
+    EXPECT_FALSE(TtcCondition::conflict(north, 10, Footprint::fromSumo(V(0, 6), 0, 5, 1.8), 10, 1e308));
+    EXPECT_TRUE(TtcCondition::conflict(north, 10.001, Footprint::fromSumo(V(0, 300), 0, 5, 1.8), 10, 1e308));
+    EXPECT_FALSE(TtcCondition::conflict(north, 10, Footprint::fromSumo(V(4, 0), 0, 5, 1.8), 10.001, 1e308));
+    // On bends: circles never part, the samples are capped.
+    const MovingFootprint left(north, 10, 1 / 50.0);
+    const MovingFootprint right(Footprint::fromSumo(V(300, 0), 0, 5, 1.8), 10, -1 / 50.0);
+    EXPECT_FALSE(TtcCondition::conflict(left, right, 1e308));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 
 #include "sbsim/app/cli/BadInput.h"
@@ -42,6 +43,36 @@ Words splitAtDashes(const std::vector<std::string>& args) {
 }
 
 /// Parses and dispatches: a subcommand if one was named, else the simulation run.
+/// The option `name` ("--quiet") of `app` or of one of its subcommands, or null.
+const CLI::Option* findOption(const CLI::App& app, const std::string& name) {
+    if (const CLI::Option* option = app.get_option_no_throw(name)) return option;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+        if (const CLI::Option* option = sub->get_option_no_throw(name)) return option;
+    }
+    return nullptr;
+}
+
+/// What CLI11 lets through or reports as something else: a flag given a value (`--quiet=yes`,
+/// a flag takes none) and an empty value after '=' (`--sumocfg=`, which CLI11 reports as a stray
+/// later word).
+void rejectOddValues(const CLI::App& app, const std::vector<std::string>& words) {
+    for (const std::string& word : words) {
+        const std::size_t equals = word.find('=');
+        if (!word.starts_with("--") || equals == std::string::npos) continue;
+        const std::string name = word.substr(0, equals);
+        const CLI::Option* option = findOption(app, name);
+        if (option == nullptr) continue;  // CLI11 names the unknown option
+        if (option->get_expected_max() == 0) {
+            throw UsageError(fmt::format("{}: a flag takes no value (given '{}')", name, word));
+        }
+        if (equals + 1 == word.size()) {
+            const std::string type = option->get_type_name();  // FILE, FILE.jsonl, LIB.so
+            const bool file = type.starts_with("FILE") || type.starts_with("LIB");
+            throw UsageError(fmt::format("{}: the {} is empty", name, file ? "file name" : "value"));
+        }
+    }
+}
+
 int parseAndRun(const std::vector<std::string>& args) {
     CLI::App app(kDescription, "sbsim");
     app.formatter(std::make_shared<HelpFormatter>());
@@ -63,6 +94,7 @@ int parseAndRun(const std::vector<std::string>& args) {
     app.require_subcommand(0, 1);
 
     Words words = splitAtDashes(args);
+    rejectOddValues(app, words.sbsim);
     std::reverse(words.sbsim.begin(), words.sbsim.end());  // CLI11 parses from the back
     try {
         app.parse(words.sbsim);
@@ -87,30 +119,37 @@ int parseAndRun(const std::vector<std::string>& args) {
 
 }  // namespace
 
+/// Writes a message to stderr; never throws, whatever stderr is (a story may have closed it): the
+/// exit code must survive a lost message.
+void say(const std::string& text) noexcept {
+    (void)std::fputs(text.c_str(), stderr);
+    (void)std::fflush(stderr);
+}
+
 int runProgram(const std::vector<std::string>& args) {
     Interruption::install();
     pointProjAtSumoData();  // before SUMO is loaded: PROJ reads the variables once
     // Once interrupted, a failure other than bad input is the interruption's doing (a story's
     // KeyboardInterrupt, SUMO closed midway): exit code 130, not the failure's.
     const auto interrupted = [] {
-        fmt::print(stderr, "sbsim: interrupted\n");
+        say("sbsim: interrupted\n");
         return 130;
     };
     try {
         return parseAndRun(args);
     } catch (const Interrupted& e) {
-        fmt::print(stderr, "sbsim: interrupted {}\n", kernel::escapeControls(e.what()));
+        say(fmt::format("sbsim: interrupted {}\n", kernel::escapeControls(e.what())));
         return 130;
     } catch (const BadInput& e) {
-        fmt::print(stderr, "sbsim: {}\n", kernel::escapeControls(e.what()));
+        say(fmt::format("sbsim: {}\n", kernel::escapeControls(e.what())));
         return 2;
     } catch (const storyboard::StoryError& e) {
         if (Interruption::requested()) return interrupted();
-        fmt::print(stderr, "{}sbsim: {}\n", e.details(), kernel::escapeControls(e.what()));
+        say(fmt::format("{}sbsim: {}\n", e.details(), kernel::escapeControls(e.what())));
         return 2;
     } catch (const std::exception& e) {
         if (Interruption::requested()) return interrupted();
-        fmt::print(stderr, "sbsim: error: {}\n", kernel::escapeControls(e.what()));
+        say(fmt::format("sbsim: error: {}\n", kernel::escapeControls(e.what())));
         return 1;
     }
 }

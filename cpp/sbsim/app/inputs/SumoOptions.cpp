@@ -9,6 +9,7 @@
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/inputs/FileLedger.h"
+#include "sbsim/app/inputs/SumoOptionTable.h"
 
 namespace sbsim::app {
 
@@ -16,21 +17,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// SUMO's one-letter spellings of the options sbsim looks at.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kShortNames{{
-    {"n", "net-file"},
-    {"r", "route-files"},
-    {"a", "additional-files"},
-    {"w", "weight-files"},
-    {"?", "help"},
-    {"V", "version"},
-    {"C", "save-configuration"},
-    {"c", "configuration-file"},
-}};
-
-/// Options whose values are files SUMO reads.
-constexpr std::array<std::string_view, 5> kInputOptions{"net-file", "route-files", "additional-files", "weight-files",
-                                                        "load-state"};
+/// The five input options whose files must be regular files when they exist (a FIFO would block
+/// SUMO); other files SUMO reads (lookup tables, replayed traces) are only kept from being
+/// overwritten.
+bool mustBeRegular(std::string_view name) {
+    return name == "net-file" || name == "route-files" || name == "additional-files" || name == "weight-files" ||
+           name == "load-state";
+}
 
 struct Unrunnable {
     std::string_view name;
@@ -76,7 +69,11 @@ void SumoOptions::readSumocfg() {
     while (!pending.empty()) {
         const tinyxml2::XMLElement* element = pending.back();
         pending.pop_back();
-        if (const char* value = element->Attribute("value")) settings_[element->Name()] = {value, true};
+        // SUMO takes an element named by any of an option's synonyms (<net value>, <routes value>).
+        if (const char* value = element->Attribute("value")) {
+            const std::string name = SumoOptionTable::instance().canonical(element->Name());
+            if (!name.empty()) settings_[name] = {value, true};
+        }
         for (const auto* child = element->FirstChildElement(); child; child = child->NextSiblingElement()) {
             pending.push_back(child);
         }
@@ -86,23 +83,27 @@ void SumoOptions::readSumocfg() {
 void SumoOptions::readWords(const std::vector<std::string>& words) {
     for (std::size_t i = 0; i < words.size(); ++i) {
         const std::string_view word = words[i];
-        std::string name;
+        std::string spelled;
         std::optional<std::string> value;
-        if (word.starts_with("--")) {
-            const std::size_t equals = word.find('=');
-            name = std::string(word.substr(2, equals == std::string_view::npos ? std::string_view::npos : equals - 2));
-            if (equals != std::string_view::npos) value = std::string(word.substr(equals + 1));
-        } else if (word.size() == 2 && word[0] == '-') {
-            for (const auto& [letter, full] : kShortNames) {
-                if (word.substr(1) == letter) name = full;
-            }
+        if (word.starts_with("--") || (word.size() > 1 && word[0] == '-' && !(word[1] >= '0' && word[1] <= '9'))) {
+            const std::string_view body = word.substr(word.starts_with("--") ? 2 : 1);
+            const std::size_t equals = body.find('=');
+            spelled = std::string(body.substr(0, equals));
+            if (equals != std::string_view::npos) value = std::string(body.substr(equals + 1));
         }
+        // Any spelling SUMO's option table knows: --route-files, --routes, -r.
+        const std::string name = spelled.empty() ? std::string() : SumoOptionTable::instance().canonical(spelled);
         if (name.empty()) continue;  // a value, or an option sbsim does not look at
-        // A value follows unless the next word is another option (a negative number is a value).
+        // A value follows unless the next word is another option (a negative number is a value);
+        // a boolean is switched on by its name alone.
         if (!value && i + 1 < words.size()) {
             const std::string& next = words[i + 1];
             const bool isOption = next.size() > 1 && next[0] == '-' && !(next[1] >= '0' && next[1] <= '9');
-            if (!isOption) value = words[++i];
+            const bool isBool = SumoOptionTable::instance().isBool(name);
+            if (!isOption && (!isBool || next == "true" || next == "false"))
+                value = words[++i];
+            else if (isBool)
+                value = "true";
         }
         settings_[name] = {value.value_or(""), false};
     }
@@ -143,9 +144,11 @@ std::vector<fs::path> SumoOptions::files(const std::string& name) const {
 }
 
 void SumoOptions::addInputs(FileLedger& files) const {
-    for (const std::string_view name : kInputOptions) {
-        const std::string option(name);
+    for (const std::string& option : SumoOptionTable::instance().readFiles()) {
         for (const fs::path& file : this->files(option)) {
+            // A folder some options name (phemlight-path) is SUMO's business; a file is kept safe.
+            std::error_code ec;
+            if (!mustBeRegular(option) && !fs::is_regular_file(file, ec)) continue;
             files.addReferencedInput(fmt::format("--{} in {}", option, sourceOf(option)), file);
         }
     }

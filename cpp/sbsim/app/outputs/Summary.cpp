@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "sbsim/app/run/Interruption.h"
+#include "sbsim/kernel/OneLine.h"
 #include "sbsim/kernel/StudyParameters.h"
 
 #include <variant>
@@ -45,7 +46,7 @@ void printSummary(const RunFigures& f) {
     }
     if (f.board != nullptr) {
         for (const auto& story : f.board->stories()) {
-            fmt::print("activations {}: {}\n", story->name(), story->counters().activations());
+            fmt::print("activations {}: {}\n", kernel::escapeControls(story->name()), story->counters().activations());
         }
     }
     if (f.services != nullptr) {

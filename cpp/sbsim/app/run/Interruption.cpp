@@ -5,6 +5,7 @@
 
 #include <atomic>
 
+#include "sbsim/kernel/StopRequest.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 
 namespace sbsim::app {
@@ -19,6 +20,7 @@ int originalStderr = -1;
 // Only async-signal-safe calls here.
 extern "C" void onSignal(int) {
     if (signalsReceived.fetch_add(1) == 0) {
+        kernel::StopRequest::request();  // long C++ loops give up at their next safe point
         storyboard::PythonRuntime::interruptFromSignalHandler();
         return;
     }
@@ -49,6 +51,9 @@ bool installed(int signal) {
 void Interruption::install() {
     if (originalStderr < 0) originalStderr = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
     installHandlers();
+    // A reader that goes away (sbsim ... | head) is not a reason to die: writes get EPIPE, which
+    // the progress and summary ignore and an output file reports.
+    std::signal(SIGPIPE, SIG_IGN);
 }
 
 bool Interruption::requested() { return signalsReceived.load() > 0; }

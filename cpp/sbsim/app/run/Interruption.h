@@ -11,7 +11,9 @@ namespace sbsim::app {
 /// the run to stop at its next safe point: the program checks requested() between phases and
 /// after every step, and Python code running at that moment gets KeyboardInterrupt. The run then
 /// ends with exit code 130 and its outputs left marked incomplete. A second signal ends the
-/// process at once, also with code 130.
+/// process at once, also with code 130. SIGPIPE is ignored: a closed pipe on stdout or stderr
+/// loses the progress and summary, not the run (exit 0); an output file's write fails with exit 2.
+/// SIGHUP keeps its default (the process ends, outputs left `.incomplete`).
 class Interruption {
 public:
     /// Installs the handlers; called once, first thing in the program.

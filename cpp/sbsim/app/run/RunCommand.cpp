@@ -6,9 +6,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <system_error>
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/inputs/BundledScenario.h"
@@ -220,7 +222,11 @@ int RunCommand::run(const CommandLine& cl) {
         if (!Interruption::requested()) summary->commit();
     }
     if (!cl.quiet) {
-        printSummary(figures);
+        try {
+            printSummary(figures);
+        } catch (const std::system_error& e) {
+            if (e.code().value() != EPIPE) throw;  // nobody reads stdout any more: the run is still done
+        }
         std::fflush(stdout);
     }
     if (story) {

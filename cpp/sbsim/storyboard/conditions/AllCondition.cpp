@@ -13,6 +13,7 @@ AllCondition::AllCondition(std::vector<ConditionPtr> operands) : operands_(std::
         if (!c) throw std::invalid_argument("AllCondition: operand is null");
         pure_ = pure_ && c->pure();
     }
+    setDepthOver("AllCondition", operands_);
 }
 
 ConditionResult AllCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {

@@ -1,5 +1,6 @@
 #include "sbsim/storyboard/conditions/AndCondition.h"
 
+#include <array>
 #include <stdexcept>
 
 #include "sbsim/storyboard/CheckContext.h"
@@ -8,6 +9,7 @@ namespace sbsim::storyboard {
 
 AndCondition::AndCondition(ConditionPtr a, ConditionPtr b) : a_(std::move(a)), b_(std::move(b)) {
     if (!a_ || !b_) throw std::invalid_argument("AndCondition: operand is null");
+    setDepthOver("AndCondition", std::array{a_, b_});
 }
 
 ConditionResult AndCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {

@@ -11,6 +11,7 @@ AnyCondition::AnyCondition(std::vector<ConditionPtr> operands) : operands_(std::
         if (!c) throw std::invalid_argument("AnyCondition: operand is null");
         pure_ = pure_ && c->pure();
     }
+    setDepthOver("AnyCondition", operands_);
 }
 
 ConditionResult AnyCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <stdexcept>
 
 #include "sbsim/storyboard/DescribeText.h"
@@ -11,6 +12,7 @@ namespace sbsim::storyboard {
 HoldCondition::HoldCondition(ConditionPtr operand, kernel::SimTime duration)
     : operand_(std::move(operand)), duration_(duration) {
     if (!operand_) throw std::invalid_argument("HoldCondition: operand is null");
+    setDepthOver("HoldCondition", std::array{operand_});
     if (duration_ < kernel::SimTime::zero())
         throw std::invalid_argument("HoldCondition: duration " + duration_.str() + " s is negative");
 }

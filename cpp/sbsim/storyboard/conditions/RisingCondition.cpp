@@ -1,11 +1,13 @@
 #include "sbsim/storyboard/conditions/RisingCondition.h"
 
+#include <array>
 #include <stdexcept>
 
 namespace sbsim::storyboard {
 
 RisingCondition::RisingCondition(ConditionPtr operand) : operand_(std::move(operand)) {
     if (!operand_) throw std::invalid_argument("RisingCondition: operand is null");
+    setDepthOver("RisingCondition", std::array{operand_});
 }
 
 ConditionResult RisingCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "sbsim/kernel/StopRequest.h"
 #include "sbsim/storyboard/geometry/PathCurvature.h"
 
 namespace sbsim::storyboard {
@@ -16,6 +17,13 @@ namespace sbsim::storyboard {
 using geometry::Footprint;
 using geometry::MovingCircle;
 using geometry::MovingFootprint;
+
+namespace {
+/// Samples tested at each end of a long straight candidate range (see sampledConflict).
+constexpr std::int64_t kEdgeSamples = 64;
+/// How often a long sampling loop looks whether the run was asked to stop.
+constexpr std::int64_t kStopCheckEvery = 4096;
+}  // namespace
 
 TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(distance) {
     if (!(ttc_ > 0 && std::isfinite(ttc_))) {
@@ -196,21 +204,27 @@ bool TtcCondition::sampledConflict(const MovingFootprint& ma, const MovingFootpr
     // only in the intersection of four time intervals; only samples in it are tested.
     double from = -std::numeric_limits<double>::infinity();
     double to = std::numeric_limits<double>::infinity();
-    for (const Eigen::Vector2d& axis : {a.heading(), a.right(), b.heading(), b.right()}) {
-        const double reach = geometry::projectedHalfExtent(a, axis) + geometry::projectedHalfExtent(b, axis) +
-                             Footprint::kTouchTolerance + margin;
-        const double s0 = d0.dot(axis);
-        const double ds = w.dot(axis);
-        if (ds == 0) {
-            if (std::abs(s0) > reach) return false;  // separated on this axis forever
-            continue;
+    const auto window = [&](double slack, double& lo, double& hi) {
+        lo = -std::numeric_limits<double>::infinity();
+        hi = std::numeric_limits<double>::infinity();
+        for (const Eigen::Vector2d& axis : {a.heading(), a.right(), b.heading(), b.right()}) {
+            const double reach = geometry::projectedHalfExtent(a, axis) + geometry::projectedHalfExtent(b, axis) +
+                                 Footprint::kTouchTolerance + slack;
+            const double s0 = d0.dot(axis);
+            const double ds = w.dot(axis);
+            if (ds == 0) {
+                if (std::abs(s0) > reach) return false;  // separated on this axis forever
+                continue;
+            }
+            double t1 = (-reach - s0) / ds;
+            double t2 = (reach - s0) / ds;
+            if (t1 > t2) std::swap(t1, t2);
+            lo = std::max(lo, t1);
+            hi = std::min(hi, t2);
         }
-        double t1 = (-reach - s0) / ds;
-        double t2 = (reach - s0) / ds;
-        if (t1 > t2) std::swap(t1, t2);
-        from = std::max(from, t1);
-        to = std::min(to, t2);
-    }
+        return true;
+    };
+    if (!window(margin, from, to)) return false;
     if (!(from <= to)) return false;
 
     const double firstCandidate = std::max(1.0, std::floor(from / dt));
@@ -218,9 +232,31 @@ bool TtcCondition::sampledConflict(const MovingFootprint& ma, const MovingFootpr
     if (!(firstCandidate <= lastCandidate)) return false;
     const auto first = static_cast<std::int64_t>(firstCandidate);
     const auto last = static_cast<std::int64_t>(lastCandidate);
-    for (std::int64_t i = first; i <= last; ++i) {
+    const auto overlapsAt = [&](std::int64_t i) {
         const double t = static_cast<double>(i) * dt;
-        if (overlaps(a.movedFor(ma.speed, t), b.movedFor(mb.speed, t))) return true;
+        return overlaps(a.movedFor(ma.speed, t), b.movedFor(mb.speed, t));
+    };
+    // The same velocity: the offset never changes, one sample decides for all of them.
+    if (w.isZero()) return overlapsAt(first);
+    // The four axes separate two rectangles exactly, so the overlapping samples are one run: a
+    // long range of candidates (a huge ttc, whose margin above grows with it, or two vehicles at
+    // nearly the same velocity) is tested at both ends, then at the middle of the samples in the
+    // window without the horizon's margin, which lies deep inside the run if there is one. The
+    // work per pair is bounded whatever the ttc.
+    if (last - first > 2 * kEdgeSamples) {
+        for (std::int64_t k = 0; k < kEdgeSamples; ++k) {
+            if (overlapsAt(first + k) || overlapsAt(last - k)) return true;
+        }
+        double lo = 0;
+        double hi = 0;
+        if (!window(1e-6 + 1e-9 * d0.lpNorm<Eigen::Infinity>(), lo, hi)) return false;
+        const double innerFirst = std::max(firstCandidate, std::ceil(lo / dt));
+        const double innerLast = std::min(lastCandidate, std::floor(hi / dt));
+        if (!(innerFirst <= innerLast)) return false;
+        return overlapsAt(static_cast<std::int64_t>(innerFirst + std::floor((innerLast - innerFirst) / 2)));
+    }
+    for (std::int64_t i = first; i <= last; ++i) {
+        if (overlapsAt(i)) return true;
     }
     return false;
 }
@@ -236,8 +272,11 @@ bool TtcCondition::sampledCurvedConflict(const MovingFootprint& ma, const Moving
     const double firstCandidate = std::max(1.0, std::floor(gap / closing / dt));
     if (!(firstCandidate <= lastStep)) return false;
     const auto first = static_cast<std::int64_t>(firstCandidate);
-    const auto last = static_cast<std::int64_t>(lastStep);
+    // A bend is followed for kMaxBendSamples samples at most: circles never part, so nothing else
+    // ends the loop for a huge ttc.
+    const auto last = std::min(static_cast<std::int64_t>(lastStep), first + kMaxBendSamples - 1);
     for (std::int64_t i = first; i <= last; ++i) {
+        if ((i - first) % kStopCheckEvery == kStopCheckEvery - 1 && kernel::StopRequest::requested()) return false;
         const double t = static_cast<double>(i) * dt;
         const Footprint a = ma.at(t);
         const Footprint b = mb.at(t);

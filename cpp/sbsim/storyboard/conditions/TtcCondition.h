@@ -19,13 +19,20 @@ namespace sbsim::storyboard {
 /// on, or along a circle for a vehicle on a bend. The two footprints are compared at t = i·dt,
 /// i = 1..ceil(ttc/dt), with dt the shorter of length/speed of the two (a standing vehicle does not
 /// count), so consecutive samples leave no gap. Touching counts as hitting; two standing vehicles
-/// never conflict.
+/// never conflict. The work per pair is bounded whatever the ttc: driving straight, two vehicles
+/// at the same velocity are tested once and a long run of candidate samples at its ends and
+/// middle (the overlapping samples form one run); on a bend at most kMaxBendSamples samples are
+/// tested (with dt = length/speed, a thousand samples look minutes ahead: 0.36 s for 5 m at 50 km/h), and the
+/// loop gives up when the run is asked to stop (kernel::StopRequest).
 ///
 /// A vehicle's bend is the curvature geometry::PathCurvature finds between its pose in the
 /// previous snapshot this condition saw and its pose now (none in its first step); its
 /// footprint's centre then follows the circle of that curvature, the heading turning with it.
 class TtcCondition : public Condition {
 public:
+    /// The most samples a pair on a bend is tested at.
+    static constexpr std::int64_t kMaxBendSamples = 1'000;
+
     /// Throws std::invalid_argument unless ttc > 0 and distance >= 0, both finite.
     explicit TtcCondition(double ttc, double distance = 100);
 

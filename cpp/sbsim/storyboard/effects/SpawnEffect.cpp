@@ -18,6 +18,13 @@ SpawnEffect::SpawnEffect(Spec spec) : spec_(std::move(spec)) {
     if (spec_.route.empty() && (spec_.from.empty() || spec_.to.empty())) {
         throw std::invalid_argument("SpawnEffect needs a route (a list of edges) or both from_edge and to_edge");
     }
+    // SUMO accepts a route over a junction's internal edges and then loses the vehicle silently.
+    for (const std::string& edge : spec_.route.empty() ? std::vector{spec_.from, spec_.to} : spec_.route) {
+        if (edge.starts_with(':')) {
+            throw std::invalid_argument(fmt::format(
+                "SpawnEffect: '{}' is an internal (junction) edge; a route names the network's normal edges", edge));
+        }
+    }
 }
 
 void SpawnEffect::apply(WorldScope& scope) {

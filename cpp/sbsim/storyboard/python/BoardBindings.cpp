@@ -2,6 +2,7 @@
 
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <variant>
 
 #include "sbsim/kernel/Simulation.h"
@@ -118,8 +119,13 @@ void bindBoard(py::module_& m) {
                          throw py::type_error("Story max_activations must be a whole number, got " +
                                               py::repr(maxActivations).cast<std::string>());
                      }
-                     const long long n = maxActivations.cast<long long>();
-                     if (n < 1) throw py::value_error("Story max_activations must be >= 1, got " + std::to_string(n));
+                     int overflow = 0;  // a Python int may exceed 64 bits: name the range, not the cast
+                     const long long n = PyLong_AsLongLongAndOverflow(maxActivations.ptr(), &overflow);
+                     if (overflow != 0 || n < 1) {
+                         throw py::value_error("Story max_activations must be from 1 to " +
+                                               std::to_string(std::numeric_limits<long long>::max()) + ", got " +
+                                               py::repr(maxActivations).cast<std::string>());
+                     }
                      limit = static_cast<std::uint64_t>(n);
                  }
                  return std::make_shared<Story>(std::move(condition), std::move(list), std::move(name), limit);

@@ -1,0 +1,2 @@
+def createStories(board):
+    raise RuntimeError("boom")

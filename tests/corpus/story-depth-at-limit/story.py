@@ -1,0 +1,8 @@
+import storyboard as sb
+
+
+def createStories(board):
+    c = sb.TimeCondition(1)
+    for _ in range(999):
+        c = sb.NotCondition(c)
+    board.registerStory(sb.Story(c, [sb.SignalEffect("x")], name="deep"))
