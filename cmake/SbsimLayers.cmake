@@ -2,8 +2,9 @@
 # target that links only the layers below it. Its sources include headers as
 # "sbsim/<layer>/Name.h", and a layer's include path holds only its own folder and, through the
 # layers it links, theirs: an include against the order names a header the compiler cannot find,
-# so the build fails. The folders stay where they are (cpp/<layer>); each is reached through a
-# link build/…/layers/<layer>/sbsim/<layer> → cpp/<layer>.
+# so the build fails. A layer's folder is cpp/sbsim/<layer> (the include is the file's path from
+# cpp/); the build reaches it through a link build/…/layers/<layer>/sbsim/<layer> → cpp/sbsim/<layer>,
+# one include folder per layer.
 
 set(SBSIM_LAYER_ROOT "${PROJECT_BINARY_DIR}/layers")
 
