@@ -41,7 +41,10 @@ def equipped_run(
     extra = ["--services", str(services_file(tmp_path, filters)), "--summary", str(summary), *options]
     result = run(cfg, story=story, events=events, end=300, seed=seed, quiet=True, extra=extra)
     assert result.returncode == 0, result.stderr
-    assert "warning" not in result.stderr, result.stderr
+    # The one warning such a run may give: a story signalled a vehicle its filters left without
+    # services (counted in the summary as "signals without services").
+    others = [line for line in result.stderr.splitlines() if "which has no services" not in line]
+    assert not any("warning" in line for line in others), result.stderr
     lines = read_events(events)
     egos = {e["vehicle"] for e in lines if e["type"] == "activate"}
     figures = read_summary(summary)
