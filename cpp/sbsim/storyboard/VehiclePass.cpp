@@ -1,12 +1,9 @@
 #include "sbsim/storyboard/VehiclePass.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <limits>
 
-#include "sbsim/kernel/OneLine.h"
-#include "sbsim/storyboard/StoryError.h"
+#include "sbsim/storyboard/StoryCommand.h"
 
 namespace sbsim::storyboard {
 
@@ -234,15 +231,7 @@ void VehiclePass::activate(VehicleState& state, std::size_t s, const std::string
 void VehiclePass::applyEffect(Scope& scope, const Story& story, std::vector<AppliedEffect>& applied, Effect& effect) {
     const traffic::EffectStack::Token token = registry_.newToken();
     scope.setToken(token);
-    // What SUMO refuses (an unknown vehicle type) names the story, as world effects do.
-    try {
-        effect.apply(scope);
-    } catch (const StoryError&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw StoryError(fmt::format("story '{}': {} at t={} s: {}", story.name(), effect.typeName(), now_.str(),
-                                     kernel::oneLine(e.what())));
-    }
+    storyCommand(story, effect.typeName(), now_, [&] { effect.apply(scope); });
     applied.push_back({&effect, token});
 }
 

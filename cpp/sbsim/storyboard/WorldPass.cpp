@@ -3,11 +3,9 @@
 #include <fmt/format.h>
 
 #include <cstdio>
-#include <exception>
 
-#include "sbsim/kernel/OneLine.h"
 #include "sbsim/storyboard/EvaluationContext.h"
-#include "sbsim/storyboard/StoryError.h"
+#include "sbsim/storyboard/StoryCommand.h"
 
 namespace sbsim::storyboard {
 
@@ -28,24 +26,6 @@ private:
     const Story& story_;
     NetworkStack::Token token_ = 0;
 };
-
-namespace {
-
-/// Runs one world effect's apply or remove; what it throws becomes a StoryError naming the story,
-/// the effect and the time (a wrong edge or light id in a script ends the run with exit code 2).
-template <typename F>
-void worldCommand(const Story& story, const WorldEffect& effect, kernel::SimTime now, F command) {
-    try {
-        command();
-    } catch (const StoryError&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw StoryError(fmt::format("story '{}': {} at t={} s: {}", story.name(), effect.typeName(), now.str(),
-                                     kernel::oneLine(e.what())));
-    }
-}
-
-}  // namespace
 
 WorldPass::WorldPass(traffic::VehicleRegistry& registry, EventLog* log) : registry_(registry), log_(log) {
     setNetworkController(std::make_unique<traffic::NetworkController>());
@@ -94,7 +74,7 @@ void WorldPass::activate(Entry& entry) {
     for (const WorldEffectPtr& effect : story.worldEffects()) {
         const NetworkStack::Token token = registry_.newToken();
         scope.setToken(token);
-        worldCommand(story, *effect, now_, [&] { effect->apply(scope); });
+        storyCommand(story, effect->typeName(), now_, [&] { effect->apply(scope); });
         entry.applied.emplace_back(effect.get(), token);
     }
 }
@@ -107,7 +87,7 @@ void WorldPass::deactivate(Entry& entry) {
     Scope scope(*this, story);
     for (auto it = entry.applied.rbegin(); it != entry.applied.rend(); ++it) {
         scope.setToken(it->second);
-        worldCommand(story, *it->first, now_, [&] { it->first->remove(scope); });
+        storyCommand(story, it->first->typeName(), now_, [&] { it->first->remove(scope); });
     }
     entry.applied.clear();
 }
