@@ -55,6 +55,10 @@ find_python() {
 
 ensure_venv() {
   if [ ! -x "$VENV/bin/python" ]; then
+    if [ -L "$VENV" ] || [ -e "$VENV" ]; then
+      say "$VENV exists but holds no Python (a dangling link or a broken copy); remove it and run again"
+      exit 1
+    fi
     say "creating $VENV"
     "$(find_python)" -m venv "$VENV"
   fi
@@ -94,5 +98,10 @@ check_style() {
   clang-format --dry-run -Werror "${cxx[@]}" || { say "C++ not formatted: run clang-format -i on the files above"; status=1; }
   "$VENV/bin/ruff" check . || status=1
   "$VENV/bin/ruff" format --check . || { say "Python not formatted: run .venv/bin/ruff format ."; status=1; }
+  # What set-up and builds make must never be committed (a committed .venv link broke a clean clone).
+  if [ -d .git ] && [ -n "$(git ls-files .venv build results bench/out)" ]; then
+    say "generated files are tracked by git: $(git ls-files .venv build results bench/out | head -3 | tr '\n' ' ')"
+    status=1
+  fi
   return $status
 }
