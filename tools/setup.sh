@@ -99,7 +99,7 @@ check_style() {
   "$VENV/bin/ruff" check . || status=1
   "$VENV/bin/ruff" format --check . || { say "Python not formatted: run .venv/bin/ruff format ."; status=1; }
   # What set-up and builds make must never be committed (a committed .venv link broke a clean clone).
-  if [ -d .git ] && [ -n "$(git ls-files .venv build results bench/out)" ]; then
+  if [ -e .git ] && [ -n "$(git ls-files .venv build results bench/out)" ]; then
     say "generated files are tracked by git: $(git ls-files .venv build results bench/out | head -3 | tr '\n' ' ')"
     status=1
   fi
