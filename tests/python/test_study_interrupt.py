@@ -149,3 +149,33 @@ def test_a_stopped_study_stops_its_runs_and_resumes(how: str, trips_cfg: Path, t
     assert not list((tmp_path / "results" / "runs").glob("*/*.incomplete"))
     runs = pd.read_parquet(tmp_path / "results" / "runs.parquet")
     assert list(runs["run"]) == [f"seed-{s}" for s in range(1, SEEDS + 1)] and (runs["steps"] == 120).all()
+
+
+def test_a_run_past_its_timeout_is_stopped_and_recorded_as_failed(trips_cfg: Path, tmp_path: Path) -> None:
+    make_study(tmp_path, trips_cfg)
+    (tmp_path / "study.toml").write_text(
+        f'sumocfg = "{trips_cfg.name}"\nstory = "story.py"\nseeds = [1]\nend = 120\n', encoding="utf-8"
+    )
+    done = subprocess.run(
+        [sys.executable, "-m", "sbsim.study", "study.toml", "--workers", "1", "--timeout", "1.5"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env={**os.environ, "PYTHONPATH": str(REPO / "python")},
+    )
+    assert done.returncode == 1, done.stderr
+    assert "Traceback" not in done.stderr
+    assert done.stderr.strip().splitlines()[-1] == "study: run seed-1 failed with exit code -1"
+    run_dir = tmp_path / "results" / "runs" / "seed-1"
+    # SIGTERM: sbsim stopped at its next safe point, leaving its outputs incomplete.
+    assert sorted(p.name for p in run_dir.iterdir()) == [
+        "events.jsonl.incomplete",
+        "result.json",
+        "stderr.txt",
+        "summary.json.incomplete",
+    ]
+    assert (run_dir / "stderr.txt").read_text(encoding="utf-8").endswith("study: the run took longer than 1.5 s\n")
+    runs = pd.read_parquet(tmp_path / "results" / "runs.parquet")
+    assert list(runs["exit_code"]) == [-1] and "took longer" in runs["stderr_tail"][0]
+    assert not sbsim_processes(tmp_path)

@@ -278,11 +278,15 @@ def run(
                         row = future.result()
                         rows[row["run"]] = row
                         bar.update(1)
-                except KeyboardInterrupt:
+                except BaseException:
+                    # Interrupted, or an error in the study itself: no run may go on without it.
                     stopping.begin()
                     bar.close()
-                    client.cancel([f for f in futures if not f.done()])  # those not started never start
-                    client.run(stop_runs, study)  # those under way stop
+                    try:
+                        client.cancel([f for f in futures if not f.done()])  # those not started never start
+                        client.run(stop_runs, study)  # those under way stop
+                    except Exception:  # noqa: S110 -- the cluster broke: what stopped the study is the news
+                        pass
                     raise
                 finally:
                     bar.close()
