@@ -174,3 +174,13 @@ def test_a_resumed_study_redoes_runs_whose_folders_are_corrupted(
     assert list(table["run"]) == [f"seed-{s}" for s in range(1, 7)] and (table["steps"] == 20).all()
     # Sound again: nothing more to do.
     assert study.run(spec, workers=2, progress=False).ran == 0
+
+
+def test_a_run_whose_folder_cannot_be_made_fails_alone(trips_cfg: Path, tmp_path: Path) -> None:
+    spec = make_spec(trips_cfg, tmp_path, parameters={}, seeds=[1])
+    (spec.directory / "runs").mkdir(parents=True)
+    (spec.directory / "runs" / "seed-1").write_text("a file where the run's folder should be", encoding="utf-8")
+    (r,) = spec.runs()
+    row = study.execute(spec, r, "/nonexistent/sbsim")
+    assert row["exit_code"] == 2 and "the run's folder" in row["stderr_tail"] and "File exists" in row["stderr_tail"]
+    assert study.result_of(spec.directory / "runs" / "seed-1") is None

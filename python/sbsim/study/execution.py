@@ -75,12 +75,15 @@ def execute(spec: StudySpec, run: Run, program: str, timeout: float | None = Non
     failed run. A run stopped by a signal (exit 130, or its study stopped: see stop_runs) records nothing,
     so the study does it again."""
     folder = spec.directory / "runs" / run.id
-    folder.mkdir(parents=True, exist_ok=True)
-    # A run done again starts clean: no old record saying it finished, no stale partial outputs.
-    (folder / RESULT).unlink(missing_ok=True)
-    for stale in folder.glob("*.incomplete"):
-        stale.unlink(missing_ok=True)
     row: dict[str, Any] = {"run": run.id, **dict(run.parameters), "seed": run.seed}
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        # A run done again starts clean: no old record saying it finished, no stale partial outputs.
+        (folder / RESULT).unlink(missing_ok=True)
+        for stale in folder.glob("*.incomplete"):
+            stale.unlink(missing_ok=True)
+    except OSError as e:  # e.g. a file where the folder should be: the run fails, the study goes on
+        return {**row, "exit_code": 2, "stderr_tail": f"study: the run's folder {folder}: {e.strerror}"}
     started = time.monotonic()
     timed_out = False
     with open(folder / "stderr.txt", "wb") as err:
