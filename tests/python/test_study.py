@@ -142,3 +142,45 @@ def test_bad_study_files_are_one_line(tmp_path: Path) -> None:
     with pytest.raises(study.StudyError, match="bad.toml"):
         study.StudySpec.load(bad)
     assert study.main([str(bad)]) == 2
+
+
+def test_a_resumed_study_redoes_runs_whose_folders_are_corrupted(
+    trips_cfg: Path, tmp_path: Path, cluster_env: None
+) -> None:
+    spec = make_spec(trips_cfg, tmp_path, parameters={}, seeds=[1, 2, 3, 4, 5, 6], end=20)
+    first = study.run(spec, workers=2, progress=False)
+    assert first.ran == 6 and not first.failed
+    runs = spec.directory / "runs"
+    assert sorted(p.name for p in runs.iterdir()) == [f"seed-{s}" for s in range(1, 7)]
+    written = {s: (runs / f"seed-{s}" / "events.jsonl").read_bytes() for s in range(1, 7)}
+    kept = (runs / "seed-1" / "result.json").stat().st_mtime_ns
+    # seed-1 stays as it was; each other folder is damaged in one way.
+    events = runs / "seed-2" / "events.jsonl"
+    events.write_bytes(written[2][:-10])  # truncated
+    (runs / "seed-3" / "summary.json").unlink()  # missing
+    (runs / "seed-4" / "summary.json.incomplete").write_text("{", encoding="utf-8")  # a leftover
+    record = runs / "seed-5" / "result.json"
+    record.write_text(record.read_text(encoding="utf-8")[:40], encoding="utf-8")  # a truncated record
+    (runs / "seed-6" / "events.jsonl").unlink()
+    (runs / "seed-6" / "events.jsonl.incomplete").write_bytes(written[6][:100])  # stopped half-way
+
+    again = study.run(spec, workers=2, progress=False)
+    assert again.ran == 5 and not again.failed
+    assert (runs / "seed-1" / "result.json").stat().st_mtime_ns == kept
+    # Redone, each run wrote again what it wrote the first time, and no stale partial output is left.
+    assert {s: (runs / f"seed-{s}" / "events.jsonl").read_bytes() for s in range(1, 7)} == written
+    assert not list(runs.glob("*/*.incomplete"))
+    table = pd.read_parquet(spec.directory / "runs.parquet")
+    assert list(table["run"]) == [f"seed-{s}" for s in range(1, 7)] and (table["steps"] == 20).all()
+    # Sound again: nothing more to do.
+    assert study.run(spec, workers=2, progress=False).ran == 0
+
+
+def test_a_run_whose_folder_cannot_be_made_fails_alone(trips_cfg: Path, tmp_path: Path) -> None:
+    spec = make_spec(trips_cfg, tmp_path, parameters={}, seeds=[1])
+    (spec.directory / "runs").mkdir(parents=True)
+    (spec.directory / "runs" / "seed-1").write_text("a file where the run's folder should be", encoding="utf-8")
+    (r,) = spec.runs()
+    row = study.execute(spec, r, "/nonexistent/sbsim")
+    assert row["exit_code"] == 2 and "the run's folder" in row["stderr_tail"] and "File exists" in row["stderr_tail"]
+    assert study.result_of(spec.directory / "runs" / "seed-1") is None

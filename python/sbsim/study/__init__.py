@@ -6,8 +6,10 @@ The TOML names the scenario, the seeds and the parameter values (paths relative 
 
     sumocfg = "grid-rain.sumocfg"
     story = "story.py"                  # optional; also: services = "services.xml", radio = "radio.toml"
+    plugins = ["build/libmine.so"]      # optional: each run's --plugin
     seeds = { first = 1, count = 10 }   # or a list: seeds = [1, 2, 3]
-    end = 600                           # optional; also: args = ["--threads", "1"]
+    end = 600                           # optional
+    args = ["--threads", "1", "--", "--fcd-output", "{run_dir}/fcd.xml"]   # optional: more sbsim words
     [parameters]
     rain_speed = [5, 10, 15]
     [outputs]
@@ -16,12 +18,17 @@ The TOML names the scenario, the seeds and the parameter values (paths relative 
 
 Each run is one ``sbsim`` process (crash isolation; SUMO is not re-entrant) started by a Dask task,
 on a ``distributed.LocalCluster`` with one single-threaded worker process per core, or on an
-existing cluster (``--scheduler``; workers must see the same file system). Every run writes its
-own folder ``runs/<id>/`` (events.jsonl, summary.json, stderr, result.json, written last); a run whose
-result.json says it succeeded is not run again, so an interrupted study resumes where it stopped.
-At the end ``runs.parquet`` (one row per run) and ``events.parquet`` (every event with its run's
-parameters and seed) are written beside them, and with ``messages = true`` ``messages.parquet`` (every
-line of the runs' message traces, likewise).
+existing cluster (``--scheduler``; workers must see the same file system). Every run works in its
+own folder ``runs/<id>/`` (``seed-<n>`` without parameters): events.jsonl, summary.json, stderr.txt,
+result.json (written last), and whatever the run writes there: ``{run_dir}`` in ``args`` and in
+parameter values is that folder (absolute; ``{{``/``}}`` are braces), and relative outputs land in it.
+A word of ``args`` (or the value of ``--option=value``) naming an existing file relative to the TOML
+is made absolute; other words are passed as written. A run whose folder still holds what it wrote
+(result.json says it succeeded, its outputs have the sizes recorded, no ``*.incomplete``) is not run
+again, so an interrupted study resumes where it stopped; SIGINT (Ctrl-C) or SIGTERM stops the runs
+under way and exits with 130. At the end ``runs.parquet`` (one row per run) and ``events.parquet``
+(every event with its run's parameters and seed) are written beside them, and with ``messages = true``
+``messages.parquet`` (every line of the runs' message traces, likewise).
 
 The package, one job a module: :mod:`~sbsim.study.spec` (the TOML file and its runs),
 :mod:`~sbsim.study.execution` (the runs on Dask), :mod:`~sbsim.study.tables` (Parquet tables and
@@ -32,7 +39,7 @@ plots) and :mod:`~sbsim.study.cli`; a run's summary becomes its row through
 from __future__ import annotations
 
 from sbsim.study.cli import main
-from sbsim.study.execution import STDERR_TAIL, StudyResult, execute, result_of, run
+from sbsim.study.execution import STDERR_TAIL, StudyInterrupted, StudyResult, execute, result_of, run, stop_runs
 from sbsim.study.spec import Run, StudyError, StudySpec, Value
 from sbsim.study.tables import plot, write_tables
 
@@ -40,6 +47,7 @@ __all__ = [
     "STDERR_TAIL",
     "Run",
     "StudyError",
+    "StudyInterrupted",
     "StudyResult",
     "StudySpec",
     "Value",
@@ -48,5 +56,6 @@ __all__ = [
     "plot",
     "result_of",
     "run",
+    "stop_runs",
     "write_tables",
 ]

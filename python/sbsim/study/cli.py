@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import argparse
 import re
+import signal
 import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from sbsim.study.execution import run
+from sbsim.study.execution import StudyInterrupted, run
 from sbsim.study.spec import StudyError, StudySpec
 from sbsim.study.tables import plot
 
@@ -29,6 +30,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--timeout", type=float, help="seconds a single run may take (default: no limit)")
     parser.add_argument("--plot", action="store_true", help="also draw activations per story (PNG files)")
     args = parser.parse_args(argv)
+    if argv is None:  # the command: SIGINT and SIGTERM stop the study, even if started with SIGINT ignored (`&`)
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+        signal.signal(signal.SIGTERM, signal.default_int_handler)
     try:
         spec = StudySpec.load(args.study)
         if args.workers is not None and args.workers < 1:
@@ -50,6 +54,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     except StudyError as e:
         print(f"study: {e}", file=sys.stderr)
         return 2
+    except StudyInterrupted as e:
+        print(
+            f"study: interrupted: {e.finished} of {e.total} runs finished and kept in {spec.directory}; "
+            f"run the same command again to do the other {e.total - e.finished}",
+            file=sys.stderr,
+        )
+        return 130
     except KeyboardInterrupt:
         print("study: interrupted; finished runs are kept, run the same command again to go on", file=sys.stderr)
         return 130

@@ -7,6 +7,7 @@ import itertools
 import json
 import math
 import os
+import string
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -23,6 +24,48 @@ class StudyError(ValueError):
     """A study file that cannot be run as it is (one line saying what and where)."""
 
 
+#: The placeholders a study's ``args`` and string parameter values may hold, filled in per run.
+PLACEHOLDERS = ("run_dir",)
+
+
+def check_placeholders(text: str, where: str) -> None:
+    """Raises StudyError unless every ``{...}`` in text is a known placeholder (``{{``/``}}``: braces)."""
+    shown = json.dumps(text, ensure_ascii=False)  # one line whatever the text holds
+    try:
+        fields = [(name, spec, conversion) for _, name, spec, conversion in string.Formatter().parse(text)]
+    except ValueError as e:
+        raise StudyError(f"{where} {shown}: {e} (write {{{{ and }}}} for braces)") from e
+    for name, spec, conversion in fields:
+        if name is None:
+            continue
+        if name not in PLACEHOLDERS or spec or conversion:
+            field = "{" + name + (f"!{conversion}" if conversion else "") + (f":{spec}" if spec else "") + "}"
+            known = ", ".join("{" + p + "}" for p in PLACEHOLDERS)
+            raise StudyError(f"{where} {shown}: unknown placeholder {field} (known: {known}; {{{{ and }}}} for braces)")
+
+
+def fill(text: str, run_dir: Path) -> str:
+    """text with its placeholders filled in for one run (checked by check_placeholders first)."""
+    return text.format(run_dir=str(run_dir))
+
+
+def resolve_word(word: str, base: Path) -> str:
+    """A word of ``args`` that names an existing file relative to the study file's folder, alone or as the
+    value of ``--option=value``, made absolute: runs work in their own folders. Other words (options,
+    numbers, outputs that do not exist yet, absolute paths, words with placeholders) stay as written."""
+    option, equals, value = word.partition("=") if word.startswith("-") else ("", "", word)
+    if not value or value.startswith("-") or "{" in value or Path(value).is_absolute():
+        return word
+    try:
+        path = base / value
+        if not path.is_file():
+            return word
+    except (OSError, ValueError):
+        return word
+    absolute = str(path.resolve()).replace("{", "{{").replace("}", "}}")  # filled in like any word
+    return f"{option}{equals}{absolute}"
+
+
 @dataclass(frozen=True)
 class Run:
     """One run of a study: its parameter values and seed."""
@@ -32,16 +75,26 @@ class Run:
 
     @property
     def id(self) -> str:
-        """Readable and stable: the values and seed, with a short hash so odd values stay unique."""
+        """Readable and stable: the values and seed, with a short hash so odd values stay unique;
+        ``seed-<n>`` in a study without parameters (seeds are unique already)."""
+        if not self.parameters:
+            return f"seed-{self.seed}"
         text = json.dumps([list(self.parameters), self.seed])
         readable = "_".join(f"{k}-{v}" for k, v in self.parameters) + f"_seed-{self.seed}"
         safe = "".join(c if c.isalnum() or c in "-_." else "+" for c in readable)[:80]
         return f"{safe}_{hashlib.sha1(text.encode()).hexdigest()[:8]}"
 
-    def arguments(self) -> list[str]:
+    def arguments(self, run_dir: Path | None = None) -> list[str]:
+        """--seed and one --param per parameter; with run_dir, placeholders in string values filled in."""
         out = ["--seed", str(self.seed)]
         for name, value in self.parameters:
-            out += ["--param", f"{name}={str(value).lower() if isinstance(value, bool) else value}"]
+            if isinstance(value, bool):
+                text = str(value).lower()
+            elif isinstance(value, str) and run_dir is not None:
+                text = fill(value, run_dir)
+            else:
+                text = str(value)
+            out += ["--param", f"{name}={text}"]
         return out
 
 
@@ -57,6 +110,7 @@ class StudySpec:
     messages: bool = False
     end: float | None = None
     args: tuple[str, ...] = ()
+    plugins: tuple[Path, ...] = ()
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> StudySpec:
@@ -69,22 +123,25 @@ class StudySpec:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], base: Path = Path("."), source: str = "study") -> StudySpec:
-        known = {"sumocfg", "story", "services", "radio", "seeds", "end", "args", "parameters", "outputs"}
+        known = {"sumocfg", "story", "services", "radio", "plugins", "seeds", "end", "args", "parameters", "outputs"}
         for key in data:
             if key not in known:
                 raise StudyError(f"{source}: unknown key '{key}' (known: {', '.join(sorted(known))})")
         if "sumocfg" not in data:
             raise StudyError(f"{source}: 'sumocfg' is missing")
 
+        def existing(key: str, name: str) -> Path:
+            path = (base / name).resolve()
+            if not path.is_file():
+                raise StudyError(f"{source}: {key} '{name}': no such file ({path})")
+            return path
+
         def file(key: str) -> Path | None:
             if key not in data:
                 return None
             if not isinstance(data[key], str) or not data[key]:
                 raise StudyError(f"{source}: '{key}' must be a file name")
-            path = (base / data[key]).resolve()
-            if not path.is_file():
-                raise StudyError(f"{source}: {key} '{data[key]}': no such file ({path})")
-            return path
+            return existing(key, data[key])
 
         def whole(value: object) -> bool:
             return isinstance(value, int) and not isinstance(value, bool)
@@ -122,6 +179,9 @@ class StudySpec:
                 )
             if any(isinstance(v, float) and not math.isfinite(v) for v in values):
                 raise StudyError(f"{source}: parameter '{name}' has a value that is not finite")
+            for v in values:
+                if isinstance(v, str):
+                    check_placeholders(v, f"{source}: parameter '{name}'")
             runs *= len(values)
         if runs > MAX_RUNS:
             raise StudyError(f"{source}: the study makes {runs} runs, more than a study may run ({MAX_RUNS})")
@@ -140,6 +200,11 @@ class StudySpec:
         args = data.get("args", [])
         if not isinstance(args, list) or not all(isinstance(a, str | int | float) for a in args):
             raise StudyError(f'{source}: \'args\' must be a list of words, e.g. ["--threads", "2"]')
+        for a in args:
+            check_placeholders(str(a), f"{source}: args")
+        plugins = data.get("plugins", [])
+        if not isinstance(plugins, list) or not all(isinstance(p, str) and p for p in plugins):
+            raise StudyError(f"{source}: 'plugins' must be a list of file names, e.g. [\"build/libmine.so\"]")
         if "sumocfg" in data and not isinstance(data["sumocfg"], str):
             raise StudyError(f"{source}: 'sumocfg' must be a file name")
         return cls(
@@ -152,7 +217,8 @@ class StudySpec:
             radio=file("radio"),
             messages=messages,
             end=None if end is None else float(end),
-            args=tuple(str(a) for a in args),
+            args=tuple(resolve_word(str(a), base) for a in args),
+            plugins=tuple(existing("plugin", p) for p in plugins),
         )
 
     def runs(self) -> list[Run]:
@@ -162,6 +228,7 @@ class StudySpec:
         return [Run(tuple(zip(names, combo, strict=True)), seed) for combo in combos for seed in self.seeds]
 
     def command(self, run: Run, folder: Path, program: str) -> list[str]:
+        """The run's sbsim command line; every path in it absolute (the run works in folder)."""
         cmd = [program, "--sumocfg", str(self.sumocfg), "--events", str(folder / "events.jsonl")]
         cmd += ["--summary", str(folder / "summary.json"), "--quiet"]
         if self.story is not None:
@@ -170,8 +237,10 @@ class StudySpec:
             cmd += ["--services", str(self.services)]
         if self.radio is not None:
             cmd += ["--radio", str(self.radio)]
+        for plugin in self.plugins:
+            cmd += ["--plugin", str(plugin)]
         if self.messages:
             cmd += ["--messages", str(folder / "messages.jsonl")]
         if self.end is not None:
             cmd += ["--end", repr(self.end)]
-        return cmd + run.arguments() + list(self.args)
+        return cmd + run.arguments(folder) + [fill(a, folder) for a in self.args]
