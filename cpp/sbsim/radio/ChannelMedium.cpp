@@ -266,8 +266,7 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
         near.meanDbm.resize(near.receivers.size());
     }
     links.resize(near.receivers.size());
-    const std::uint64_t senderKey = keys_[s];
-    const std::uint64_t sequence = tx.message->sequence();
+    const std::uint64_t frameKey = CounterRandom::frameKey(seed_, keys_[s], tx.message->sequence());
     const Eigen::Vector2d from(x_[s], y_[s]);
     const bool fading = settings_.fading != ChannelSettings::Fading::None;
     const bool shadowing = settings_.shadowingSigmaDb > 0;
@@ -291,11 +290,11 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
                 link.distance = near.distance[k];
                 double dbm = near.meanDbm[k];
                 if (shadowing) {
-                    CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Shadowing);
+                    auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
                 }
                 if (fading) {
-                    CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Fading);
+                    auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Fading);
                     dbm += fading_.gainDb(link.distance, random);
                 }
                 link.powerDbm = dbm;
@@ -372,6 +371,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     const double ratioDb = toDb(settings_.bandwidthHz / (settings_.rateMbps * 1e6));
     refreshStations();  // the receivers' modules as of the last step
     Counts* counts = countsOf(message);
+    const std::uint64_t frameKey = CounterRandom::frameKey(seed_, keys_[tx->sender], message.sequence());
     // Receptions without a drawn delay share one kernel event (in receiver order, as their own
     // events would have run); a drawn delay gives each its own.
     const bool drawnDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform ||
@@ -414,7 +414,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             const double snrDb = toDb(link.powerMw / noiseMw_);
             const double ferWith = fer_.ferAtEbN0Db(sinrDb + ratioDb);
             const double ferWithout = fer_.ferAtEbN0Db(snrDb + ratioDb);
-            CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Decode);
+            auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Decode);
             const double u = random.uniform01();
             if (u < ferWithout) {
                 loss = LossReason::Propagation;
@@ -432,7 +432,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         ++receptions_;
         kernel::SimTime extra;
         if (settings_.extraDelay != ChannelSettings::ExtraDelay::None) {
-            CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Delay);
+            auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Delay);
             double seconds = settings_.delay;
             if (settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform) {
                 seconds = settings_.delayMin + (settings_.delayMax - settings_.delayMin) * random.uniform01();

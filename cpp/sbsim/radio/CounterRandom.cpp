@@ -6,14 +6,24 @@
 namespace sbsim::radio {
 
 CounterRandom::CounterRandom(std::uint64_t seed, std::uint64_t sender, std::uint64_t sequence, std::uint64_t receiver,
-                             DrawPurpose purpose) {
+                             DrawPurpose purpose)
+    : CounterRandom(Keyed{}, frameKey(seed, sender, sequence), receiver, purpose) {}
+
+CounterRandom::CounterRandom(Keyed, std::uint64_t frameKey, std::uint64_t receiver, DrawPurpose purpose) {
+    const std::uint64_t k = mix(frameKey ^ (receiver + 0x8CB92BA72F3D8DD7ULL));
+    key_ = mix(k ^ (static_cast<std::uint64_t>(purpose) + 0xF1357AEA2E62A9C5ULL));
+}
+
+std::uint64_t CounterRandom::frameKey(std::uint64_t seed, std::uint64_t sender, std::uint64_t sequence) {
     // Each component goes through the mixer with a distinct odd offset, so swapping two of them
     // (sender and receiver of the reverse link) gives an unrelated key.
     std::uint64_t k = mix(seed + 0x9E3779B97F4A7C15ULL);
     k = mix(k ^ (sender + 0xD1B54A32D192ED03ULL));
-    k = mix(k ^ (sequence + 0xAEF17502108EF2D9ULL));
-    k = mix(k ^ (receiver + 0x8CB92BA72F3D8DD7ULL));
-    key_ = mix(k ^ (static_cast<std::uint64_t>(purpose) + 0xF1357AEA2E62A9C5ULL));
+    return mix(k ^ (sequence + 0xAEF17502108EF2D9ULL));
+}
+
+CounterRandom CounterRandom::ofFrame(std::uint64_t frameKey, std::uint64_t receiver, DrawPurpose purpose) {
+    return {Keyed{}, frameKey, receiver, purpose};
 }
 
 std::uint64_t CounterRandom::keyOf(std::string_view stationId) {

@@ -19,6 +19,12 @@ public:
     /// The stream of one draw's key. `receiver` is 0 for draws of the sender alone (backoff).
     CounterRandom(std::uint64_t seed, std::uint64_t sender, std::uint64_t sequence, std::uint64_t receiver,
                   DrawPurpose purpose);
+    /// The part of a key that every link of one frame shares: (seed, sender, sequence) mixed once,
+    /// so a frame's hundreds of links each mix only their receiver and purpose.
+    static std::uint64_t frameKey(std::uint64_t seed, std::uint64_t sender, std::uint64_t sequence);
+    /// The same stream as CounterRandom(seed, sender, sequence, receiver, purpose), from
+    /// frameKey(seed, sender, sequence).
+    static CounterRandom ofFrame(std::uint64_t frameKey, std::uint64_t receiver, DrawPurpose purpose);
 
     /// A stable 64-bit key for a station id (FNV-1a then mixed), the same on every platform.
     static std::uint64_t keyOf(std::string_view stationId);
@@ -39,6 +45,9 @@ public:
     double gamma(double shape);
 
 private:
+    struct Keyed {};
+    CounterRandom(Keyed, std::uint64_t frameKey, std::uint64_t receiver, DrawPurpose purpose);
+
     std::uint64_t key_;
     std::uint64_t counter_ = 0;
 };
