@@ -7,6 +7,7 @@
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/CounterRandom.h"
+#include "sbsim/radio/Decibels.h"
 #include "sbsim/radio/Receiver.h"
 
 namespace sbsim::radio {
@@ -14,9 +15,8 @@ namespace sbsim::radio {
 namespace {
 enum TimerKind { kAccess = 1, kEnd = 2, kLoad = 3 };
 
-// exp is cheaper than pow, and this runs once per link.
-double toMw(double dbm) { return std::exp(dbm * (std::numbers::ln10 / 10.0)); }
-double toDb(double mw) { return 10.0 * std::log10(mw); }
+double toMw(double dbm) { return dbToLinear(dbm); }
+double toDb(double mw) { return linearToDb(mw); }
 }  // namespace
 
 struct ChannelMedium::Link {
@@ -42,7 +42,7 @@ struct ChannelMedium::EndTimer : kernel::Message {
 
 struct ChannelMedium::Transmission {
     explicit Transmission(std::uint64_t i) : id(i), end(i) {}
-    std::uint64_t id;
+    std::uint64_t id;  // set again with end.tx when a spare is reused
     Slot sender = -1;
     std::shared_ptr<const V2xMessage> message;
     kernel::SimTime start;
@@ -308,7 +308,17 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
 void ChannelMedium::startTransmission(Slot s) {
     refreshStations();
     contending_[s] = 0;
-    auto tx = std::make_unique<Transmission>(nextTx_++);
+    std::unique_ptr<Transmission> tx;
+    if (spare_.empty()) {
+        tx = std::make_unique<Transmission>(nextTx_);
+    } else {
+        tx = std::move(spare_.back());
+        spare_.pop_back();
+        tx->id = nextTx_;
+        tx->end.tx = nextTx_;
+        tx->links.clear();
+    }
+    ++nextTx_;
     tx->sender = s;
     tx->message = std::move(queue_[s].front().message);
     queue_[s].pop_front();
@@ -329,7 +339,7 @@ void ChannelMedium::startTransmission(Slot s) {
     if (present_[s]) computeLinks(s, *tx, tx->links);
 
     // The sender stops receiving: whatever it was receiving is lost to half-duplex.
-    for (const Incoming& in : incoming_[s]) active_.at(in.tx)->links[in.link].halfDuplex = true;
+    for (const Incoming& in : incoming_[s]) in.tx->links[in.link].halfDuplex = true;
     locked_[s] = 0;
     transmitting_[s] = tx->id;
     setCbrBusy(s);
@@ -347,14 +357,14 @@ void ChannelMedium::startTransmission(Slot s) {
         link.maxInterferenceMw = others;
         const double total = others + link.powerMw;
         for (const Incoming& e : in) {
-            Link& old = active_.at(e.tx)->links[e.link];
+            Link& old = e.tx->links[e.link];
             old.maxInterferenceMw = std::max(old.maxInterferenceMw, std::max(0.0, total - e.mw));
         }
         if (transmitting_[r] == 0 && locked_[r] == 0 && link.powerMw >= sensingMw_) {
             locked_[r] = tx->id;
             link.locked = true;
         }
-        in.push_back({tx->id, k, link.powerMw});
+        in.push_back({tx.get(), k, link.powerMw});
         setSensedPower(r, total);
     }
     scheduleAt(simTime() + settings_.airtime(tx->message->byteSize()), tx->end);
@@ -391,7 +401,8 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         const Slot r = link.receiver;
         if (link.counted) {
             std::vector<Incoming>& in = incoming_[r];
-            in.erase(std::remove_if(in.begin(), in.end(), [&](const Incoming& e) { return e.tx == id; }), in.end());
+            in.erase(std::remove_if(in.begin(), in.end(), [&](const Incoming& e) { return e.tx == tx.get(); }),
+                     in.end());
             double total = 0;  // summed afresh, so no rounding drift accumulates
             for (const Incoming& e : in) total += e.mw;
             // A station that senses the channel free may schedule its backoff's end, possibly at
@@ -469,6 +480,11 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     if (!sensedBusy_[s]) idleSince_[s] = simTime();  // AIFS again after its own frame
     setCbrBusy(s);
     if (!queue_[s].empty()) startAccess(s);
+    // A few spares cover the frames on the air at once (airtimes are a fraction of a millisecond).
+    if (spare_.size() < 64) {
+        tx->message.reset();
+        spare_.push_back(std::move(tx));
+    }
 }
 
 void ChannelMedium::traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason) {

@@ -63,7 +63,7 @@ private:
     struct Link;
     struct Transmission;
     struct Incoming {
-        std::uint64_t tx;
+        Transmission* tx;  // owned by active_ while it is on the air
         std::uint32_t link;
         double mw;
     };
@@ -131,6 +131,9 @@ private:
     traffic::NeighbourGrid grid_;
 
     std::unordered_map<std::uint64_t, std::unique_ptr<Transmission>> active_;
+    /// Ended transmissions kept for reuse: their link vectors stay allocated and warm in the cache
+    /// (a fresh vector per frame cost page faults and cache misses on every link written).
+    std::vector<std::unique_ptr<Transmission>> spare_;
     std::uint64_t nextTx_ = 1;
     std::unique_ptr<kernel::Message> loadTimer_;
     std::optional<LoadFigures> load_;
