@@ -14,6 +14,8 @@ namespace sbsim::radio {
 
 namespace {
 enum TimerKind { kAccess = 1, kEnd = 2, kLoad = 3 };
+/// A neighbourhood is hundreds of links: a few stations make a chunk worth a worker's wake-up.
+constexpr std::size_t kStationsPerChunk = 4;
 
 double toMw(double dbm) { return dbToLinear(dbm); }
 double toDb(double mw) { return linearToDb(mw); }
@@ -131,6 +133,7 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     countStart_.push_back(simTime());
     idleSince_.push_back(kernel::SimTime::zero());
     timers_.push_back(std::make_unique<StationTimer>(s));
+    sentInStep_.push_back(0);
     receiver_.push_back(nullptr);
     near_.emplace_back();
     return s;
@@ -248,53 +251,41 @@ void ChannelMedium::setCbrBusy(Slot s) {
 
 void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links) {
     // Who is in range, how far, and the mean power (path loss and obstacles) stay the same for
-    // all of a sender's frames within one SUMO step: computed at its first frame of the step.
+    // all of a sender's frames within one SUMO step: computed once per step, for the likely
+    // senders of the step together at its first frame (prepareStep), else at the sender's first.
+    if (batchedAt_ != refreshedAt_) prepareStep(s);
     Neighbourhood& near = near_[s];
-    const bool fresh = near.at != refreshedAt_;
-    if (fresh) {
-        near.at = refreshedAt_;
-        near.receivers.clear();
-        const auto index = snapshot_.indexOf(ids_[s]);
-        if (index) {
-            // The grid's order (by cell, then vehicle index) is the same whatever the thread
-            // count, so the receivers need no sorting.
-            grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
-                if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
-            });
-        }
-        near.distance.resize(near.receivers.size());
-        near.meanDbm.resize(near.receivers.size());
+    if (near.at != refreshedAt_) computeNeighbourhood(s);
+    if (sentInStep_[s] != step_) {
+        sentInStep_[s] = step_;
+        sentThisStep_.push_back(s);
     }
     links.resize(near.receivers.size());
     const std::uint64_t frameKey = CounterRandom::frameKey(seed_, keys_[s], tx.message->sequence());
-    const Eigen::Vector2d from(x_[s], y_[s]);
     const bool fading = settings_.fading != ChannelSettings::Fading::None;
     const bool shadowing = settings_.shadowingSigmaDb > 0;
-    const bool obstacles = obstacles_ && obstacles_->size() > 0;
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     simulation().parallel().run(
         near.receivers.size(),
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k) {
                 const Slot r = near.receivers[k];
-                if (fresh) {
-                    const Eigen::Vector2d to(x_[r], y_[r]);
-                    near.distance[k] = (to - from).norm();
-                    double mean = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
-                    if (obstacles) mean -= obstacles_->lossDb(from, to);
-                    near.meanDbm[k] = mean;
-                }
+                // Field by field: `link = Link{}` went through a stack temporary whose overlapping
+                // stores stalled store-to-load forwarding (a quarter of this loop's time).
                 Link& link = links[k];
-                link = Link{};
                 link.receiver = r;
                 link.distance = near.distance[k];
+                link.maxInterferenceMw = 0;
+                link.counted = false;
+                link.halfDuplex = false;
+                link.locked = false;
                 double dbm = near.meanDbm[k];
                 if (shadowing) {
-                    auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Shadowing);
+                    auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
                 }
                 if (fading) {
-                    auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Fading);
+                    auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Fading);
                     dbm += fading_.gainDb(link.distance, random);
                 }
                 link.powerDbm = dbm;
@@ -303,6 +294,55 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
         },
         settings_.linksPerChunk);
     linksComputed_ += links.size();
+}
+
+void ChannelMedium::prepareStep(Slot first) {
+    batchedAt_ = refreshedAt_;
+    ++step_;
+    // The stations that sent during the last step most likely send again in this one (a beacon
+    // or CAM sends every step or more often): their neighbourhoods in one round on the pool. A
+    // neighbourhood is a pure function of the snapshot, so which ones are computed here changes
+    // nothing but the time.
+    batch_.clear();
+    for (const Slot t : sentThisStep_) {
+        if (present_[t] && t != first) batch_.push_back(t);
+    }
+    batch_.push_back(first);
+    sentThisStep_.clear();
+    simulation().parallel().run(
+        batch_.size(),
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t k = begin; k < end; ++k) computeNeighbourhood(batch_[k]);
+        },
+        kStationsPerChunk);
+}
+
+void ChannelMedium::computeNeighbourhood(Slot s) {
+    Neighbourhood& near = near_[s];
+    near.at = refreshedAt_;
+    near.receivers.clear();
+    if (const auto index = snapshot_.indexOf(ids_[s])) {
+        // The grid's order (by cell, then vehicle index) is the same whatever the thread count,
+        // so the receivers need no sorting.
+        grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
+            if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
+        });
+    }
+    const std::size_t n = near.receivers.size();
+    near.distance.resize(n);
+    near.meanDbm.resize(n);
+    near.key.resize(n);
+    const Eigen::Vector2d from(x_[s], y_[s]);
+    const bool obstacles = obstacles_ && obstacles_->size() > 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const Slot r = near.receivers[k];
+        const Eigen::Vector2d to(x_[r], y_[r]);
+        near.distance[k] = (to - from).norm();
+        double mean = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
+        if (obstacles) mean -= obstacles_->lossDb(from, to);
+        near.meanDbm[k] = mean;
+        near.key[k] = keys_[r];
+    }
 }
 
 void ChannelMedium::startTransmission(Slot s) {
