@@ -23,6 +23,7 @@ double toDb(double mw) { return linearToDb(mw); }
 
 struct ChannelMedium::Link {
     Slot receiver = -1;
+    std::uint32_t bin = 0;  // distance / kDistanceBin, for the link counts
     double distance = 0;
     double powerDbm = 0;
     double powerMw = 0;
@@ -275,6 +276,7 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
                 Link& link = links[k];
                 link.receiver = r;
                 link.distance = near.distance[k];
+                link.bin = near.bin[k];
                 link.maxInterferenceMw = 0;
                 link.counted = false;
                 link.halfDuplex = false;
@@ -332,6 +334,7 @@ void ChannelMedium::computeNeighbourhood(Slot s) {
     near.distance.resize(n);
     near.meanDbm.resize(n);
     near.key.resize(n);
+    near.bin.resize(n);
     const Eigen::Vector2d from(x_[s], y_[s]);
     const bool obstacles = obstacles_ && obstacles_->size() > 0;
     for (std::size_t k = 0; k < n; ++k) {
@@ -342,6 +345,7 @@ void ChannelMedium::computeNeighbourhood(Slot s) {
         if (obstacles) mean -= obstacles_->lossDb(from, to);
         near.meanDbm[k] = mean;
         near.key[k] = keys_[r];
+        near.bin[k] = static_cast<std::uint32_t>(near.distance[k] / kDistanceBin);
     }
 }
 
@@ -474,7 +478,15 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             }
         }
         Receiver* receiver = receiver_[r];
-        if (counts != nullptr) countLink(*counts, link.distance, !loss && receiver != nullptr);
+        if (counts != nullptr) {
+            // Medium::countLink inline, the bin computed once per step: this runs per link.
+            if (counts->linkStations.size() <= link.bin) {
+                counts->linkStations.resize(link.bin + 1);
+                counts->linkReceptions.resize(link.bin + 1);
+            }
+            ++counts->linkStations[link.bin];
+            if (!loss && receiver != nullptr) ++counts->linkReceptions[link.bin];
+        }
         if (receiver == nullptr) continue;  // left the simulation during the frame
         if (loss) {
             if (trace() != nullptr && link.distance <= settings_.traceRange) traceLost(*tx, r, link.distance, *loss);

@@ -127,6 +127,7 @@ private:
         std::vector<Slot> receivers;
         std::vector<double> distance, meanDbm;
         std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
+        std::vector<std::uint32_t> bin;  // distance / kDistanceBin
     };
     std::vector<Neighbourhood> near_;
     std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for
