@@ -46,7 +46,8 @@ public:
     }
     /// Uniform in [0, 1), 53 bits.
     double uniform01() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    /// Standard normal by the ziggurat (Ziggurat): inline for the ~99 % of draws one word decides.
+    /// Standard normal by Marsaglia and Tsang's ziggurat (Ziggurat.h); inline for the ~99 % of draws
+    /// one word decides.
     double normal() {
         const Ziggurat& z = Ziggurat::instance();
         const std::uint64_t bits = next();  // layer from bits 0–7, sign from bit 8, position from 11–63

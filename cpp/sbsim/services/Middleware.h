@@ -60,7 +60,7 @@ public:
 
 private:
     /// `message` as an ITS message, or null. A dynamic_cast that fails walks the hierarchy
-    /// comparing type names (a fifth of the disc model's time at 23 M receptions): the answer
+    /// comparing type names (an eighth of the disc model's time at 23 M receptions): the answer
     /// depends only on the message's dynamic type, so it is remembered per type.
     const facilities::ItsMessage* itsPart(const radio::V2xMessage& message);
 
