@@ -7,20 +7,23 @@
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/CounterRandom.h"
+#include "sbsim/radio/Decibels.h"
 #include "sbsim/radio/Receiver.h"
 
 namespace sbsim::radio {
 
 namespace {
 enum TimerKind { kAccess = 1, kEnd = 2, kLoad = 3 };
+/// A neighbourhood is hundreds of links: a few stations make a chunk worth a worker's wake-up.
+constexpr std::size_t kStationsPerChunk = 4;
 
-// exp is cheaper than pow, and this runs once per link.
-double toMw(double dbm) { return std::exp(dbm * (std::numbers::ln10 / 10.0)); }
-double toDb(double mw) { return 10.0 * std::log10(mw); }
+double toMw(double dbm) { return dbToLinear(dbm); }
+double toDb(double mw) { return linearToDb(mw); }
 }  // namespace
 
 struct ChannelMedium::Link {
     Slot receiver = -1;
+    std::uint32_t bin = 0;  // distance / kDistanceBin, for the link counts
     double distance = 0;
     double powerDbm = 0;
     double powerMw = 0;
@@ -42,7 +45,7 @@ struct ChannelMedium::EndTimer : kernel::Message {
 
 struct ChannelMedium::Transmission {
     explicit Transmission(std::uint64_t i) : id(i), end(i) {}
-    std::uint64_t id;
+    std::uint64_t id;  // set again with end.tx when a spare is reused
     Slot sender = -1;
     std::shared_ptr<const V2xMessage> message;
     kernel::SimTime start;
@@ -131,6 +134,7 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     countStart_.push_back(simTime());
     idleSince_.push_back(kernel::SimTime::zero());
     timers_.push_back(std::make_unique<StationTimer>(s));
+    sentInStep_.push_back(0);
     receiver_.push_back(nullptr);
     near_.emplace_back();
     return s;
@@ -248,54 +252,42 @@ void ChannelMedium::setCbrBusy(Slot s) {
 
 void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links) {
     // Who is in range, how far, and the mean power (path loss and obstacles) stay the same for
-    // all of a sender's frames within one SUMO step: computed at its first frame of the step.
+    // all of a sender's frames within one SUMO step: computed once per step, for the likely
+    // senders of the step together at its first frame (prepareStep), else at the sender's first.
+    if (batchedAt_ != refreshedAt_) prepareStep(s);
     Neighbourhood& near = near_[s];
-    const bool fresh = near.at != refreshedAt_;
-    if (fresh) {
-        near.at = refreshedAt_;
-        near.receivers.clear();
-        const auto index = snapshot_.indexOf(ids_[s]);
-        if (index) {
-            // The grid's order (by cell, then vehicle index) is the same whatever the thread
-            // count, so the receivers need no sorting.
-            grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
-                if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
-            });
-        }
-        near.distance.resize(near.receivers.size());
-        near.meanDbm.resize(near.receivers.size());
+    if (near.at != refreshedAt_) computeNeighbourhood(s);
+    if (sentInStep_[s] != step_) {
+        sentInStep_[s] = step_;
+        sentThisStep_.push_back(s);
     }
     links.resize(near.receivers.size());
-    const std::uint64_t senderKey = keys_[s];
-    const std::uint64_t sequence = tx.message->sequence();
-    const Eigen::Vector2d from(x_[s], y_[s]);
+    const std::uint64_t frameKey = CounterRandom::frameKey(seed_, keys_[s], tx.message->sequence());
     const bool fading = settings_.fading != ChannelSettings::Fading::None;
     const bool shadowing = settings_.shadowingSigmaDb > 0;
-    const bool obstacles = obstacles_ && obstacles_->size() > 0;
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     simulation().parallel().run(
         near.receivers.size(),
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t k = begin; k < end; ++k) {
                 const Slot r = near.receivers[k];
-                if (fresh) {
-                    const Eigen::Vector2d to(x_[r], y_[r]);
-                    near.distance[k] = (to - from).norm();
-                    double mean = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
-                    if (obstacles) mean -= obstacles_->lossDb(from, to);
-                    near.meanDbm[k] = mean;
-                }
+                // Field by field: `link = Link{}` went through a stack temporary whose overlapping
+                // stores stalled store-to-load forwarding (a quarter of this loop's time).
                 Link& link = links[k];
-                link = Link{};
                 link.receiver = r;
                 link.distance = near.distance[k];
+                link.bin = near.bin[k];
+                link.maxInterferenceMw = 0;
+                link.counted = false;
+                link.halfDuplex = false;
+                link.locked = false;
                 double dbm = near.meanDbm[k];
                 if (shadowing) {
-                    CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Shadowing);
+                    auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
                 }
                 if (fading) {
-                    CounterRandom random(seed_, senderKey, sequence, keys_[r], DrawPurpose::Fading);
+                    auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Fading);
                     dbm += fading_.gainDb(link.distance, random);
                 }
                 link.powerDbm = dbm;
@@ -306,10 +298,71 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
     linksComputed_ += links.size();
 }
 
+void ChannelMedium::prepareStep(Slot first) {
+    batchedAt_ = refreshedAt_;
+    ++step_;
+    // The stations that sent during the last step most likely send again in this one (a beacon
+    // or CAM sends every step or more often): their neighbourhoods in one round on the pool. A
+    // neighbourhood is a pure function of the snapshot, so which ones are computed here changes
+    // nothing but the time.
+    batch_.clear();
+    for (const Slot t : sentThisStep_) {
+        if (present_[t] && t != first) batch_.push_back(t);
+    }
+    batch_.push_back(first);
+    sentThisStep_.clear();
+    simulation().parallel().run(
+        batch_.size(),
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t k = begin; k < end; ++k) computeNeighbourhood(batch_[k]);
+        },
+        kStationsPerChunk);
+}
+
+void ChannelMedium::computeNeighbourhood(Slot s) {
+    Neighbourhood& near = near_[s];
+    near.at = refreshedAt_;
+    near.receivers.clear();
+    if (const auto index = snapshot_.indexOf(ids_[s])) {
+        // The grid's order (by cell, then vehicle index) is the same whatever the thread count,
+        // so the receivers need no sorting.
+        grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
+            if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
+        });
+    }
+    const std::size_t n = near.receivers.size();
+    near.distance.resize(n);
+    near.meanDbm.resize(n);
+    near.key.resize(n);
+    near.bin.resize(n);
+    const Eigen::Vector2d from(x_[s], y_[s]);
+    const bool obstacles = obstacles_ && obstacles_->size() > 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const Slot r = near.receivers[k];
+        const Eigen::Vector2d to(x_[r], y_[r]);
+        near.distance[k] = (to - from).norm();
+        double mean = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
+        if (obstacles) mean -= obstacles_->lossDb(from, to);
+        near.meanDbm[k] = mean;
+        near.key[k] = keys_[r];
+        near.bin[k] = static_cast<std::uint32_t>(near.distance[k] / kDistanceBin);
+    }
+}
+
 void ChannelMedium::startTransmission(Slot s) {
     refreshStations();
     contending_[s] = 0;
-    auto tx = std::make_unique<Transmission>(nextTx_++);
+    std::unique_ptr<Transmission> tx;
+    if (spare_.empty()) {
+        tx = std::make_unique<Transmission>(nextTx_);
+    } else {
+        tx = std::move(spare_.back());
+        spare_.pop_back();
+        tx->id = nextTx_;
+        tx->end.tx = nextTx_;
+        tx->links.clear();
+    }
+    ++nextTx_;
     tx->sender = s;
     tx->message = std::move(queue_[s].front().message);
     queue_[s].pop_front();
@@ -330,7 +383,7 @@ void ChannelMedium::startTransmission(Slot s) {
     if (present_[s]) computeLinks(s, *tx, tx->links);
 
     // The sender stops receiving: whatever it was receiving is lost to half-duplex.
-    for (const Incoming& in : incoming_[s]) active_.at(in.tx)->links[in.link].halfDuplex = true;
+    for (const Incoming& in : incoming_[s]) in.tx->links[in.link].halfDuplex = true;
     locked_[s] = 0;
     transmitting_[s] = tx->id;
     setCbrBusy(s);
@@ -348,14 +401,14 @@ void ChannelMedium::startTransmission(Slot s) {
         link.maxInterferenceMw = others;
         const double total = others + link.powerMw;
         for (const Incoming& e : in) {
-            Link& old = active_.at(e.tx)->links[e.link];
+            Link& old = e.tx->links[e.link];
             old.maxInterferenceMw = std::max(old.maxInterferenceMw, std::max(0.0, total - e.mw));
         }
         if (transmitting_[r] == 0 && locked_[r] == 0 && link.powerMw >= sensingMw_) {
             locked_[r] = tx->id;
             link.locked = true;
         }
-        in.push_back({tx->id, k, link.powerMw});
+        in.push_back({tx.get(), k, link.powerMw});
         setSensedPower(r, total);
     }
     scheduleAt(simTime() + settings_.airtime(tx->message->byteSize()), tx->end);
@@ -372,6 +425,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     const double ratioDb = toDb(settings_.bandwidthHz / (settings_.rateMbps * 1e6));
     refreshStations();  // the receivers' modules as of the last step
     Counts* counts = countsOf(message);
+    const std::uint64_t frameKey = CounterRandom::frameKey(seed_, keys_[tx->sender], message.sequence());
     // Receptions without a drawn delay share one kernel event (in receiver order, as their own
     // events would have run); a drawn delay gives each its own.
     const bool drawnDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform ||
@@ -391,7 +445,8 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         const Slot r = link.receiver;
         if (link.counted) {
             std::vector<Incoming>& in = incoming_[r];
-            in.erase(std::remove_if(in.begin(), in.end(), [&](const Incoming& e) { return e.tx == id; }), in.end());
+            in.erase(std::remove_if(in.begin(), in.end(), [&](const Incoming& e) { return e.tx == tx.get(); }),
+                     in.end());
             double total = 0;  // summed afresh, so no rounding drift accumulates
             for (const Incoming& e : in) total += e.mw;
             // A station that senses the channel free may schedule its backoff's end, possibly at
@@ -414,7 +469,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             const double snrDb = toDb(link.powerMw / noiseMw_);
             const double ferWith = fer_.ferAtEbN0Db(sinrDb + ratioDb);
             const double ferWithout = fer_.ferAtEbN0Db(snrDb + ratioDb);
-            CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Decode);
+            auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Decode);
             const double u = random.uniform01();
             if (u < ferWithout) {
                 loss = LossReason::Propagation;
@@ -423,7 +478,15 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             }
         }
         Receiver* receiver = receiver_[r];
-        if (counts != nullptr) countLink(*counts, link.distance, !loss && receiver != nullptr);
+        if (counts != nullptr) {
+            // Medium::countLink inline, the bin computed once per step: this runs per link.
+            if (counts->linkStations.size() <= link.bin) {
+                counts->linkStations.resize(link.bin + 1);
+                counts->linkReceptions.resize(link.bin + 1);
+            }
+            ++counts->linkStations[link.bin];
+            if (!loss && receiver != nullptr) ++counts->linkReceptions[link.bin];
+        }
         if (receiver == nullptr) continue;  // left the simulation during the frame
         if (loss) {
             if (trace() != nullptr && link.distance <= settings_.traceRange) traceLost(*tx, r, link.distance, *loss);
@@ -432,7 +495,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         ++receptions_;
         kernel::SimTime extra;
         if (settings_.extraDelay != ChannelSettings::ExtraDelay::None) {
-            CounterRandom random(seed_, keys_[tx->sender], message.sequence(), keys_[r], DrawPurpose::Delay);
+            auto random = CounterRandom::ofFrame(frameKey, keys_[r], DrawPurpose::Delay);
             double seconds = settings_.delay;
             if (settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform) {
                 seconds = settings_.delayMin + (settings_.delayMax - settings_.delayMin) * random.uniform01();
@@ -469,6 +532,11 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     if (!sensedBusy_[s]) idleSince_[s] = simTime();  // AIFS again after its own frame
     setCbrBusy(s);
     if (!queue_[s].empty()) startAccess(s);
+    // A few spares cover the frames on the air at once (airtimes are a fraction of a millisecond).
+    if (spare_.size() < 64) {
+        tx->message.reset();
+        spare_.push_back(std::move(tx));
+    }
 }
 
 void ChannelMedium::traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason) {

@@ -63,7 +63,7 @@ private:
     struct Link;
     struct Transmission;
     struct Incoming {
-        std::uint64_t tx;
+        Transmission* tx;  // owned by active_ while it is on the air
         std::uint32_t link;
         double mw;
     };
@@ -81,6 +81,10 @@ private:
     void startTransmission(Slot s);
     void endTransmission(std::uint64_t id);
     void computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links);
+    void prepareStep(Slot first);
+    /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
+    /// computed on distinct threads.
+    void computeNeighbourhood(Slot s);
     void setSensedPower(Slot s, double mw);
     void setCbrBusy(Slot s);
     void sampleLoad();
@@ -122,8 +126,14 @@ private:
         std::optional<kernel::SimTime> at;  // the snapshot they were computed for
         std::vector<Slot> receivers;
         std::vector<double> distance, meanDbm;
+        std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
+        std::vector<std::uint32_t> bin;  // distance / kDistanceBin
     };
     std::vector<Neighbourhood> near_;
+    std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for
+    std::uint64_t step_ = 0;                    // counts prepareStep() calls
+    std::vector<std::uint64_t> sentInStep_;     // per slot, the step_ of its last frame
+    std::vector<Slot> sentThisStep_, batch_;
     std::vector<Receiver*> receiver_;  // the station's receiving side as of the last step; null: gone
 
     std::optional<kernel::SimTime> refreshedAt_;
@@ -131,6 +141,9 @@ private:
     traffic::NeighbourGrid grid_;
 
     std::unordered_map<std::uint64_t, std::unique_ptr<Transmission>> active_;
+    /// Ended transmissions kept for reuse: their link vectors stay allocated and warm in the cache
+    /// (a fresh vector per frame cost page faults and cache misses on every link written).
+    std::vector<std::unique_ptr<Transmission>> spare_;
     std::uint64_t nextTx_ = 1;
     std::unique_ptr<kernel::Message> loadTimer_;
     std::optional<LoadFigures> load_;

@@ -6,14 +6,15 @@
 namespace sbsim::radio {
 
 CounterRandom::CounterRandom(std::uint64_t seed, std::uint64_t sender, std::uint64_t sequence, std::uint64_t receiver,
-                             DrawPurpose purpose) {
+                             DrawPurpose purpose)
+    : CounterRandom(Keyed{}, frameKey(seed, sender, sequence), receiver, purpose) {}
+
+std::uint64_t CounterRandom::frameKey(std::uint64_t seed, std::uint64_t sender, std::uint64_t sequence) {
     // Each component goes through the mixer with a distinct odd offset, so swapping two of them
     // (sender and receiver of the reverse link) gives an unrelated key.
     std::uint64_t k = mix(seed + 0x9E3779B97F4A7C15ULL);
     k = mix(k ^ (sender + 0xD1B54A32D192ED03ULL));
-    k = mix(k ^ (sequence + 0xAEF17502108EF2D9ULL));
-    k = mix(k ^ (receiver + 0x8CB92BA72F3D8DD7ULL));
-    key_ = mix(k ^ (static_cast<std::uint64_t>(purpose) + 0xF1357AEA2E62A9C5ULL));
+    return mix(k ^ (sequence + 0xAEF17502108EF2D9ULL));
 }
 
 std::uint64_t CounterRandom::keyOf(std::string_view stationId) {
@@ -25,15 +26,26 @@ std::uint64_t CounterRandom::keyOf(std::string_view stationId) {
     return mix(h);
 }
 
-std::uint64_t CounterRandom::next() {
-    // Two rounds: the first decorrelates consecutive counters of one key, the second the keys.
-    return mix(mix(key_ + (counter_++) * 0x9E3779B97F4A7C15ULL) ^ key_);
-}
-
-double CounterRandom::normal() {
-    const double u1 = 1.0 - uniform01();  // (0, 1]: the logarithm stays finite
-    const double u2 = uniform01();
-    return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+double CounterRandom::normalBeyondBoxes(std::uint64_t bits) {
+    const Ziggurat& z = Ziggurat::instance();
+    for (;;) {
+        const auto layer = static_cast<int>(bits & 0xFF);
+        const double sign = (bits & 0x100) != 0 ? -1.0 : 1.0;
+        const double t = static_cast<double>(bits >> 11) * 0x1.0p-53 * z.x[layer];
+        if (t < z.x[layer + 1]) return sign * t;
+        if (layer == 0) {
+            // The tail beyond r (Marsaglia's method): exponential proposals, accepted under the curve.
+            for (;;) {
+                const double a = -std::log(1.0 - uniform01()) / z.r;
+                const double b = -std::log(1.0 - uniform01());
+                if (2 * b > a * a) return sign * (z.r + a);
+            }
+        }
+        // The wedge between the box and the curve.
+        const double y = z.f[layer] + uniform01() * (z.f[layer + 1] - z.f[layer]);
+        if (y < Ziggurat::density(t)) return sign * t;
+        bits = next();
+    }
 }
 
 double CounterRandom::gamma(double shape) {

@@ -75,8 +75,11 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     if (!near.known || near.radius != radius) {
         near.others = grid_.within(*self, radius);
         near.distance.resize(near.others.size());
-        for (std::size_t k = 0; k < near.others.size(); ++k)
+        near.bin.resize(near.others.size());
+        for (std::size_t k = 0; k < near.others.size(); ++k) {
             near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
+            near.bin[k] = static_cast<std::uint32_t>(near.distance[k] / kDistanceBin);
+        }
         near.known = true;
         near.radius = radius;
     }
@@ -97,7 +100,16 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             // Draw only where loss is possible, so a lossless medium consumes no random numbers.
             loss = LossReason::Fade;
         }
-        if (distance <= settings_.range && counts != nullptr) countLink(*counts, distance, !loss);
+        if (distance <= settings_.range && counts != nullptr) {
+            // Medium::countLink inline, with the bin computed once per step: this runs per link.
+            const std::uint32_t bin = near.bin[k];
+            if (counts->linkStations.size() <= bin) {
+                counts->linkStations.resize(bin + 1);
+                counts->linkReceptions.resize(bin + 1);
+            }
+            ++counts->linkStations[bin];
+            if (!loss) ++counts->linkReceptions[bin];
+        }
         if (trace() != nullptr && (!loss || distance <= settings_.traceRange)) {
             TraceLine line;
             line.event = loss ? TraceLine::Event::Lost : TraceLine::Event::Rx;

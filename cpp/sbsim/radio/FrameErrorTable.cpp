@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sbsim/radio/Decibels.h"
+
 namespace sbsim::radio {
 
 FrameErrorTable::FrameErrorTable(std::vector<std::pair<double, double>> points) : given_(std::move(points)) {
@@ -23,13 +25,14 @@ FrameErrorTable FrameErrorTable::goubet6Mbps() {
 }
 
 double FrameErrorTable::ferAtEbN0Db(double ebN0Db) const {
-    if (!(ebN0Db > points_.front().first)) return std::pow(10.0, points_.front().second);
-    if (ebN0Db >= points_.back().first) return std::pow(10.0, points_.back().second);
+    // 10^y as dbToLinear(10 y): this runs twice per decoded link, and libm's pow is slower.
+    if (!(ebN0Db > points_.front().first)) return dbToLinear(10 * points_.front().second);
+    if (ebN0Db >= points_.back().first) return dbToLinear(10 * points_.back().second);
     const auto upper = std::upper_bound(points_.begin(), points_.end(), ebN0Db,
                                         [](double v, const std::pair<double, double>& p) { return v < p.first; });
     const auto& [x1, y1] = *upper;
     const auto& [x0, y0] = *(upper - 1);
-    return std::pow(10.0, y0 + (y1 - y0) * (ebN0Db - x0) / (x1 - x0));
+    return dbToLinear(10 * (y0 + (y1 - y0) * (ebN0Db - x0) / (x1 - x0)));
 }
 
 double FrameErrorTable::fer(double sinrDb, double bandwidthHz, double rateBps) const {

@@ -18,6 +18,7 @@ void Middleware::host(Service& service, const ServiceSpec& spec) {
     service.spec_ = &spec;
     service.setName(vehicleId_ + "." + spec.type);
     services_.push_back(&service);
+    handlers_.push_back(dynamic_cast<facilities::ItsMessageHandler*>(&service));
     vehicles_.push_back(std::make_unique<ServiceVehicle>(vehicle_, manager_.registry()));
 }
 
@@ -57,10 +58,21 @@ void Middleware::trigger() {
     }
 }
 
-void Middleware::receive(const radio::V2xMessage& message) {
-    // A cross-cast to the facilities' interface, not a switch on concrete types: the message
-    // itself says where it goes and what is kept of it.
+const facilities::ItsMessage* Middleware::itsPart(const radio::V2xMessage& message) {
+    const std::type_info* type = &typeid(message);
+    // ItsMessage derives from V2xMessage alone and not virtually: once a type is known to be
+    // one, the static downcast is the dynamic one's result.
+    if (type == itsType_) return static_cast<const facilities::ItsMessage*>(&message);
+    if (type == otherType_) return nullptr;
     const auto* its = dynamic_cast<const facilities::ItsMessage*>(&message);
+    (its != nullptr ? itsType_ : otherType_) = type;
+    return its;
+}
+
+void Middleware::receive(const radio::V2xMessage& message) {
+    // A cast to the facilities' interface, not a switch on concrete types: the message itself
+    // says where it goes and what is kept of it.
+    const facilities::ItsMessage* its = itsPart(message);
     if (its != nullptr) {
         if (!its->reaches(position())) return;
         its->store(manager_.stations(), vehicleId_, simTime());
@@ -73,13 +85,12 @@ void Middleware::receive(const radio::V2xMessage& message) {
         }
     }
     if (its != nullptr) {
-        for (Service* s : services_) {
-            auto* handler = dynamic_cast<facilities::ItsMessageHandler*>(s);
-            if (handler == nullptr) continue;
+        for (std::size_t k = 0; k < services_.size(); ++k) {
+            if (handlers_[k] == nullptr) continue;
             try {
-                its->dispatch(*handler);
+                its->dispatch(*handlers_[k]);
             } catch (...) {
-                s->failed();
+                services_[k]->failed();
             }
         }
     }

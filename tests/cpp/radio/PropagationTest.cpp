@@ -1,10 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "sbsim/radio/ChannelSettings.h"
 #include "sbsim/radio/CounterRandom.h"
+#include "sbsim/radio/Decibels.h"
 #include "sbsim/radio/FrameErrorTable.h"
 #include "sbsim/radio/FreeSpaceLoss.h"
 #include "sbsim/radio/LogDistanceLoss.h"
@@ -94,6 +97,63 @@ TEST(Shadowing, NormalDrawsHaveUnitSpreadAndNoBias) {
     EXPECT_NEAR(mean, 0.0, 0.03);
     EXPECT_NEAR(sd, 3.0, 0.03);
     EXPECT_NEAR(static_cast<double>(beyondTwoSigma) / n, 0.0455, 0.003);
+}
+
+TEST(Shadowing, ZigguratNormalHasTheMomentsAndTailsOfTheNormal) {
+    // The medium draws one normal per link key; the ziggurat's rare paths (wedges, the tail
+    // beyond 3.65) must give the exact distribution too, so the tails are checked as well as
+    // the moments. Bounds: 5 standard errors of each estimate over n draws.
+    constexpr int n = 10'000'000;
+    double sum = 0, squares = 0, fourth = 0;
+    std::int64_t beyond[5] = {0, 0, 0, 0, 0};  // |z| > 1, 2, 3, 4
+    std::int64_t below = 0;                    // z < 0.5
+    for (int k = 0; k < n; ++k) {
+        CounterRandom r(29, 31, static_cast<std::uint64_t>(k / 1000), static_cast<std::uint64_t>(k % 1000),
+                        DrawPurpose::Shadowing);
+        const double z = r.normal();
+        sum += z;
+        squares += z * z;
+        fourth += z * z * z * z;
+        for (int s = 1; s <= 4; ++s) beyond[s] += std::abs(z) > s ? 1 : 0;
+        below += z < 0.5 ? 1 : 0;
+    }
+    const double mean = sum / n;
+    const double variance = squares / n - mean * mean;
+    const auto share = [&](std::int64_t count) { return static_cast<double>(count) / n; };
+    const auto bound = [&](double p) { return 5 * std::sqrt(p * (1 - p) / n); };
+    // The normal's figures: P(|z| > s) = erfc(s / √2); P(z < 0.5) = Φ(0.5).
+    const double published[5] = {0, 0.31731050786291415, 0.04550026389635842, 0.0026997960632601866,
+                                 6.334248366623996e-05};
+    std::printf("normal over %d draws: mean %.5f (0), variance %.5f (1), kurtosis %.4f (3), P(z<0.5) %.6f (%.6f)\n", n,
+                mean, variance, fourth / n, share(below), 0.6914624612740131);
+    for (int s = 1; s <= 4; ++s)
+        std::printf("  P(|z|>%d) %.7f, the normal's %.7f\n", s, share(beyond[s]), published[s]);
+    EXPECT_NEAR(mean, 0.0, 5 / std::sqrt(n));
+    EXPECT_NEAR(variance, 1.0, 5 * std::sqrt(2.0 / n));
+    EXPECT_NEAR(fourth / n, 3.0, 5 * std::sqrt(96.0 / n));
+    EXPECT_NEAR(share(below), 0.6914624612740131, bound(0.6914624612740131));
+    for (int s = 1; s <= 4; ++s) EXPECT_NEAR(share(beyond[s]), published[s], bound(published[s])) << "|z| > " << s;
+}
+
+TEST(Decibels, TableConversionMatchesPowAsExpDoes) {
+    // Every hundredth of a dB from −250 to +80 dB. The error grows with |dB| (the rounding of
+    // the argument y = dB · log2(10) / 10), as it does for std::exp(dB · ln 10 / 10).
+    double worst = 0;
+    double worstExp = 0;
+    for (int c = -25000; c <= 8000; ++c) {
+        const double db = c / 100.0 + 0.00123;
+        const double exact = std::pow(10.0, db / 10);
+        worst = std::max(worst, std::abs(dbToLinear(db) - exact) / exact);
+        worstExp = std::max(worstExp, std::abs(std::exp(db * (std::numbers::ln10 / 10)) - exact) / exact);
+    }
+    std::printf("dB to linear, worst relative error against std::pow: %.2e (std::exp: %.2e)\n", worst, worstExp);
+    EXPECT_LT(worst, 2e-14);
+    EXPECT_EQ(dbToLinear(0), 1.0);
+    EXPECT_NEAR(dbToLinear(30), 1000.0, 1e-12);
+    EXPECT_NEAR(dbToLinear(-95), 3.1622776601683794e-10, 1e-24);
+    EXPECT_EQ(dbToLinear(-1e9), 0.0);
+    EXPECT_TRUE(std::isinf(dbToLinear(1e9)));
+    EXPECT_NEAR(linearToDb(dbToLinear(-71.2)), -71.2, 1e-12);
 }
 
 TEST(Shadowing, DrawsArePureFunctionsOfTheirKey) {
