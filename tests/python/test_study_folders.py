@@ -68,6 +68,7 @@ args = ["--threads", "1", "--sumo-log", "sumo.log", "--",
         "--fcd-output", "{{run_dir}}/fcd.xml", "--additional-files", "extra.add.xml"]
 [outputs]
 directory = "results"
+statistics = true
 """,
         encoding="utf-8",
     )
@@ -95,6 +96,13 @@ directory = "results"
     runs = pd.read_parquet(folder / "results" / "runs.parquet")
     assert list(runs["run"]) == ["seed-1", "seed-2"]
     assert (runs["stat:speed:count"] > 0).all() and (runs["exit_code"] == 0).all()
+    # statistics = true: each run keeps its --statistics file; statistics.parquet holds them all, by run.
+    for seed in (1, 2):
+        assert (runs_folder / f"seed-{seed}" / "statistics.parquet").is_file()
+    stats = pd.read_parquet(folder / "results" / "statistics.parquet")
+    speed = stats[stats["name"] == "speed"].groupby("run").size()
+    assert speed.to_dict() == dict(zip(runs["run"], runs["stat:speed:count"], strict=True))
+    assert set(stats["seed"]) == {1, 2}
 
 
 def test_run_dir_in_a_parameter_value(trips_cfg: Path, tmp_path: Path) -> None:

@@ -15,6 +15,7 @@ The TOML names the scenario, the seeds and the parameter values (paths relative 
     [outputs]
     directory = "results/rain"
     messages = false                    # true: every run's --messages trace, and messages.parquet
+    statistics = false                  # true: every run's --statistics file, and statistics.parquet
 
 Each run is one ``sbsim`` process (crash isolation; SUMO is not re-entrant) started by a Dask task,
 on a ``distributed.LocalCluster`` with one single-threaded worker process per core, or on an
@@ -28,7 +29,8 @@ is made absolute; other words are passed as written. A run whose folder still ho
 again, so an interrupted study resumes where it stopped; SIGINT (Ctrl-C) or SIGTERM stops the runs
 under way and exits with 130. At the end ``runs.parquet`` (one row per run) and ``events.parquet``
 (every event with its run's parameters and seed) are written beside them, and with ``messages = true``
-``messages.parquet`` (every line of the runs' message traces, likewise).
+``messages.parquet`` (every line of the runs' message traces, likewise), with ``statistics = true``
+``statistics.parquet`` (every value the runs recorded, likewise).
 
 The package, one job a module: :mod:`~sbsim.study.spec` (the TOML file and its runs),
 :mod:`~sbsim.study.execution` (the runs on Dask), :mod:`~sbsim.study.tables` (Parquet tables and

@@ -38,7 +38,8 @@ RESULT = "result.json"
 
 def outputs(spec: StudySpec) -> tuple[str, ...]:
     """The files sbsim writes into each run's folder for the study (checked when the study resumes)."""
-    return ("events.jsonl", "summary.json", *(("messages.jsonl",) if spec.messages else ()))
+    kept = (("messages.jsonl",) if spec.messages else ()) + (("statistics.parquet",) if spec.statistics else ())
+    return ("events.jsonl", "summary.json", *kept)
 
 
 def result_of(folder: Path) -> dict[str, Any] | None:

@@ -108,6 +108,7 @@ class StudySpec:
     services: Path | None = None
     radio: Path | None = None
     messages: bool = False
+    statistics: bool = False
     end: float | None = None
     args: tuple[str, ...] = ()
     plugins: tuple[Path, ...] = ()
@@ -192,6 +193,9 @@ class StudySpec:
         messages = outputs.get("messages", False)
         if not isinstance(messages, bool):
             raise StudyError(f"{source}: [outputs] messages must be true or false")
+        statistics = outputs.get("statistics", False)
+        if not isinstance(statistics, bool):
+            raise StudyError(f"{source}: [outputs] statistics must be true or false")
         end = data.get("end")
         if end is not None and (not isinstance(end, int | float) or isinstance(end, bool) or not math.isfinite(end)):
             raise StudyError(f"{source}: 'end' must be a finite number of seconds")
@@ -216,6 +220,7 @@ class StudySpec:
             services=file("services"),
             radio=file("radio"),
             messages=messages,
+            statistics=statistics,
             end=None if end is None else float(end),
             args=tuple(resolve_word(str(a), base) for a in args),
             plugins=tuple(existing("plugin", p) for p in plugins),
@@ -241,6 +246,8 @@ class StudySpec:
             cmd += ["--plugin", str(plugin)]
         if self.messages:
             cmd += ["--messages", str(folder / "messages.jsonl")]
+        if self.statistics:
+            cmd += ["--statistics", str(folder / "statistics.parquet")]
         if self.end is not None:
             cmd += ["--end", repr(self.end)]
         return cmd + run.arguments(folder) + [fill(a, folder) for a in self.args]

@@ -26,7 +26,7 @@ def table_of(records: Sequence[dict[str, Any]]) -> Any:
 
 def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
     """runs.parquet (one row per run), events.parquet (the complete runs' events, every field) and, when
-    the study keeps them, messages.parquet (their message traces, every field)."""
+    the study keeps them, messages.parquet (their message traces, every field) and statistics.parquet."""
     import pyarrow.parquet as pq
 
     spec.directory.mkdir(parents=True, exist_ok=True)
@@ -43,6 +43,28 @@ def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, 
             context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
             lines.extend({**context, **line} for line in read(path))
         pq.write_table(table_of(lines), spec.directory / f"{name}.parquet")
+    if spec.statistics:
+        write_statistics(spec, runs, rows)
+
+
+def write_statistics(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
+    """statistics.parquet: every complete run's --statistics rows (vehicle, service or story, name, time,
+    value), each with its run's id, parameters and seed in front."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    parts = []
+    for r, row in zip(runs, rows, strict=True):
+        path = spec.directory / "runs" / r.id / "statistics.parquet"
+        if row["exit_code"] not in COMPLETE or not path.exists():
+            continue
+        table = pq.read_table(path)
+        context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
+        for k, (name, value) in enumerate(context.items()):
+            table = table.add_column(k, name, pa.array([value] * table.num_rows))
+        parts.append(table)
+    if parts:
+        pq.write_table(pa.concat_tables(parts, promote_options="default"), spec.directory / "statistics.parquet")
 
 
 def plot(directory: Path, spec: StudySpec) -> list[Path]:
