@@ -335,6 +335,9 @@ class ReachedRegion(Criterion):
 class KeepsLane(Criterion):
     def __init__(self, vehicles: str | Iterable[str] | None = None) -> None: ...
 
+class NoRedLightRunning(Criterion):
+    def __init__(self, vehicles: str | Iterable[str] | None = None) -> None: ...
+
 class StoryActivated(Criterion):
     def __init__(self, story: str, at_least: int = 1) -> None: ...
 

@@ -118,6 +118,30 @@ def test_keeps_lane(loops_cfg: Path, two_lanes: Path, tmp_path: Path) -> None:
     assert not changes["passed"] and "veh01" in changes["actual"], changes
 
 
+def test_no_red_light_running(loops_cfg: Path, tmp_path: Path) -> None:
+    # The loops grid has traffic lights at its inner junctions; SUMO's drivers stop for red.
+    ok = verdict_of(loops_cfg, tmp_path / "ok", "NoRedLightRunning()")
+    assert ok["passed"] and ok["actual"] == "0 red-light passages", ok
+    # From 10 s, five drivers ignore red lights: speed mode 15 lacks bit 4 ("brake hard for red").
+    reckless = (
+        "class IgnoreRed(Effect):\n"
+        "    def apply(self, vehicle):\n"
+        "        vehicle.set_speed_mode(15)\n"
+        "    def remove(self, vehicle):\n"
+        "        pass\n"
+        "ids = ['veh01', 'veh02', 'veh03', 'veh04', 'veh05']\n"
+        "board.registerStory(Story(AndCondition(TimeCondition(10), CarSetCondition(ids)), [IgnoreRed()]))"
+    )
+    red = verdict_of(loops_cfg, tmp_path / "red", "NoRedLightRunning()", reckless)
+    assert not red["passed"] and red["expected"] == "0 red-light passages", red
+    runners = red["actual"].split("(")[1].split(")")[0].split(", ")
+    assert runners and set(runners) <= {"veh01", "veh02", "veh03", "veh04", "veh05"}, red
+    # Only the reckless five: the others, watched alone, still pass.
+    others = ", ".join(repr(f"veh{k:02d}") for k in range(6, 30))
+    rest = verdict_of(loops_cfg, tmp_path / "rest", f"NoRedLightRunning(vehicles=[{others}])", reckless)
+    assert rest["passed"], rest
+
+
 def test_story_activated(loops_cfg: Path, tmp_path: Path) -> None:
     when = "AndCondition(TimeCondition(10), CarSetCondition(['veh01', 'veh02']))"
     story = f"board.registerStory(Story({when}, [], name='two'))"

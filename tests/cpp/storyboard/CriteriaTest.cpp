@@ -2,6 +2,7 @@
 // reporting what it saw and what was expected.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "sbsim/storyboard/criteria/KeepsLane.h"
 #include "sbsim/storyboard/criteria/MaxSpeed.h"
 #include "sbsim/storyboard/criteria/NoCollision.h"
+#include "sbsim/storyboard/criteria/NoRedLightRunning.h"
 #include "sbsim/storyboard/criteria/ReachedRegion.h"
 #include "sbsim/storyboard/criteria/StoryActivated.h"
 #include "sbsim/traffic/TrafficQueries.h"
@@ -17,12 +19,21 @@
 namespace sbsim::storyboard::test {
 namespace {
 
-/// Collisions as a test sets them, for the step that ends at any time.
+/// Collisions as a test sets them, for the step that ends at any time; traffic lights as it sets
+/// their links and states.
 class CollisionsAsSet : public traffic::TrafficQueries {
 public:
     std::optional<Leader> leader(const std::string&, double) override { return std::nullopt; }
     const std::vector<Collision>& collisions(kernel::SimTime) override { return now; }
+    std::optional<SignalPassage> signalPassage(const std::string&, const std::string& from,
+                                               const std::string& to) override {
+        const auto link = signals.passed(from, to);
+        if (!link) return std::nullopt;
+        return SignalPassage{*link, states.at(link->signal).at(static_cast<std::size_t>(link->index))};
+    }
     std::vector<Collision> now;
+    traffic::SignalLinks signals;
+    std::map<std::string, std::string> states;  // per light
 };
 
 Vehicle onLane(std::string id, double x, std::string road, std::string lane, double speed = 10) {
@@ -40,7 +51,9 @@ CriterionVerdict over(Criterion& c, const std::vector<std::vector<Vehicle>>& ste
     for (std::size_t k = 0; k < steps.size(); ++k) {
         snapshot.assign(steps[k], SimTime::fromSeconds(static_cast<double>(k + 1)));
         grid.build(snapshot, 100);
-        c.observe(EvaluationContext(snapshot, grid, queries));
+        const EvaluationContext ctx(snapshot, grid, queries);
+        c.prepare(ctx);
+        c.observe(ctx);
     }
     return c.verdict(CriterionRun{stories});
 }
@@ -98,6 +111,47 @@ TEST(Criteria, KeepsLaneCountsChangesOnOneRoadOnly) {
     KeepsLane others{VehicleSet({"b"})};
     EXPECT_TRUE(over(others, {{onLane("a", 0, "e1", "e1_0")}, {onLane("a", 5, "e1", "e1_1")}}).passed);
     EXPECT_EQ(others.describe(), "KeepsLane(vehicles=[b])");
+}
+
+TEST(Criteria, NoRedLightRunningCountsPassagesOfARedStopLine) {
+    // Light "J" controls link 0 (north, e1_0 over :J_0_0 to e2_0) and link 1 (e1_1 over :J_1_0
+    // then :J_5_0 to e3_0).
+    CollisionsAsSet lights;
+    lights.signals.add({"J", 0}, "e1_0", {":J_0_0"}, "e2_0");
+    lights.signals.add({"J", 1}, "e1_1", {":J_1_0", ":J_5_0"}, "e3_0");
+    const auto at = [](std::string id, std::string lane) {
+        const std::string road = lane.substr(0, lane.rfind('_'));
+        return onLane(std::move(id), 0, road, std::move(lane));
+    };
+    lights.states["J"] = "Gr";
+    NoRedLightRunning green{VehicleSet{}};
+    // a passes link 0 on green, then moves on inside the junction and beyond; b waits on red.
+    const CriterionVerdict ok = over(
+        green,
+        {{at("a", "e1_0"), at("b", "e1_1")}, {at("a", ":J_0_0"), at("b", "e1_1")}, {at("a", "e2_0"), at("b", "e1_1")}},
+        &lights);
+    EXPECT_TRUE(ok.passed) << ok.actual;
+    EXPECT_EQ(ok.expected, "0 red-light passages");
+
+    NoRedLightRunning red{VehicleSet{}};
+    // b passes link 1 on red onto the junction's second internal lane in one step; c changes to
+    // link 1's lane (no passage), then jumps straight onto its target lane.
+    const CriterionVerdict v = over(
+        red,
+        {{at("b", "e1_1"), at("c", "e1_0")}, {at("b", ":J_5_0"), at("c", "e1_1")}, {at("b", "e3_0"), at("c", "e3_0")}},
+        &lights);
+    EXPECT_FALSE(v.passed);
+    EXPECT_EQ(v.actual, "2 red-light passages by 2 vehicles (b, c), first b at J link 1 ('r') at t=2 s");
+    NoRedLightRunning onlyA{VehicleSet({"a"})};
+    EXPECT_TRUE(over(onlyA, {{at("b", "e1_1")}, {at("b", ":J_1_0")}}, &lights).passed);
+    EXPECT_EQ(onlyA.describe(), "NoRedLightRunning(vehicles=[a])");
+
+    // Red-yellow is red too (SUMO stops for it); yellow is not.
+    lights.states["J"] = "uy";
+    NoRedLightRunning amber{VehicleSet{}};
+    EXPECT_FALSE(over(amber, {{at("a", "e1_0")}, {at("a", ":J_0_0")}}, &lights).passed);
+    NoRedLightRunning yellow{VehicleSet{}};
+    EXPECT_TRUE(over(yellow, {{at("b", "e1_1")}, {at("b", ":J_1_0")}}, &lights).passed);
 }
 
 TEST(Criteria, StoryActivatedCountsTheNamedStory) {

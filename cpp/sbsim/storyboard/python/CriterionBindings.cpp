@@ -9,6 +9,7 @@
 #include "sbsim/storyboard/criteria/KeepsLane.h"
 #include "sbsim/storyboard/criteria/MaxSpeed.h"
 #include "sbsim/storyboard/criteria/NoCollision.h"
+#include "sbsim/storyboard/criteria/NoRedLightRunning.h"
 #include "sbsim/storyboard/criteria/ReachedRegion.h"
 #include "sbsim/storyboard/criteria/StoryActivated.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
@@ -61,6 +62,10 @@ void bindCriteria(py::module_& m) {
              py::arg("vehicle"), py::arg("area"), py::arg("by"));
     py::class_<KeepsLane, Criterion, py::smart_holder>(m, "KeepsLane")
         .def(py::init([](const py::object& vehicles) { return std::make_shared<KeepsLane>(vehicleSet(vehicles)); }),
+             py::arg("vehicles") = py::none());
+    py::class_<NoRedLightRunning, Criterion, py::smart_holder>(m, "NoRedLightRunning")
+        .def(py::init(
+                 [](const py::object& vehicles) { return std::make_shared<NoRedLightRunning>(vehicleSet(vehicles)); }),
              py::arg("vehicles") = py::none());
     py::class_<StoryActivated, Criterion, py::smart_holder>(m, "StoryActivated")
         .def(py::init([](const std::string& story, std::int64_t atLeast) {
