@@ -44,6 +44,9 @@ public:
     virtual void prepare(const EvaluationContext& /*ctx*/) {}
     /// After each step's stories: what this step shows.
     virtual void observe(const EvaluationContext& /*ctx*/) {}
+    /// Whether it reads the stations' DENM memories, which only a DEN service fills: a run without
+    /// one refuses it (exit 2) rather than fail every vehicle as unwarned.
+    virtual bool readsDenmMemory() const { return false; }
     /// Whether verdict() reads the event log (the board then keeps its lines in memory).
     virtual bool needsEvents() const { return false; }
     /// At the end of the run, over what it observed and `run`.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "StoryboardTestSupport.h"
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/criteria/KeepsLane.h"
 #include "sbsim/storyboard/criteria/MaxSpeed.h"
@@ -14,6 +15,7 @@
 #include "sbsim/storyboard/criteria/NoRedLightRunning.h"
 #include "sbsim/storyboard/criteria/ReachedRegion.h"
 #include "sbsim/storyboard/criteria/StoryActivated.h"
+#include "sbsim/storyboard/criteria/WarnedBefore.h"
 #include "sbsim/traffic/TrafficQueries.h"
 
 namespace sbsim::storyboard::test {
@@ -169,6 +171,82 @@ TEST(Criteria, StoryActivatedCountsTheNamedStory) {
     EXPECT_EQ(v.expected, ">= 3 activations");
     EXPECT_EQ(StoryActivated("fog", 1).verdict(CriterionRun{stories}).actual, "no story named fog");
     EXPECT_THROW(StoryActivated("rain", 0), std::invalid_argument);
+}
+
+/// A DENM of `cause` from `station`, detected at `at`.
+facilities::DenmContent denm(const std::string& station, int cause, double at) {
+    facilities::DenmContent d;
+    d.action = {station, 1};
+    d.detectionTime = d.referenceTime = SimTime::fromSeconds(at);
+    d.cause = cause;
+    return d;
+}
+
+/// Four steps (t = 1..4 s) towards a place at x in [100, 120] on edge "e2": "crash" (which sends
+/// the DENM) enters at 3 s, a, b, c and e at 4 s, d is there from the start. a hears the accident
+/// DENM (cause 2) at 1.5 s, b at 3.5 s, e only a cause 6 one at 1.5 s; c hears nothing.
+CriterionVerdict approach(WarnedBefore& c) {
+    facilities::StationRegistry stations;
+    traffic::VehicleSnapshot snapshot;
+    traffic::NeighbourGrid grid;
+    for (int k = 1; k <= 4; ++k) {
+        const SimTime now = SimTime::fromSeconds(k);
+        if (k == 2) {
+            stations.of("a").denms.received(denm("crash", 2, 1.5), SimTime::fromSeconds(1.5));
+            stations.of("e").denms.received(denm("slip", 6, 1.5), SimTime::fromSeconds(1.5));
+        }
+        if (k == 4) stations.of("b").denms.received(denm("crash", 2, 1.5), SimTime::fromSeconds(3.5));
+        const auto at = [&](std::string id, bool there) {
+            Vehicle v = onLane(std::move(id), there ? 110 : 50, there ? "e2" : "e1", there ? "e2_0" : "e1_0");
+            v.y = 0;
+            return v;
+        };
+        snapshot.assign(
+            {at("a", k == 4), at("b", k == 4), at("c", k == 4), at("crash", k >= 3), at("d", true), at("e", k == 4)},
+            now);
+        grid.build(snapshot, 100);
+        const EvaluationContext ctx(snapshot, grid, nullptr, nullptr, &stations);
+        c.prepare(ctx);
+        c.observe(ctx);
+    }
+    return c.verdict(CriterionRun{{}, nullptr, {}});
+}
+
+TEST(Criteria, WarnedBeforeJudgesTheVehiclesThatReachedThePlace) {
+    const geometry::Polygon box({{100, -5}, {120, -5}, {120, 5}, {100, 5}});
+    const SimTime zero = SimTime::zero();
+    // crash sent the warning and d started there: neither is judged.
+    auto accident = WarnedBefore::inArea(box, 2, zero, zero, std::nullopt);
+    const CriterionVerdict v = approach(*accident);
+    EXPECT_FALSE(v.passed);
+    EXPECT_EQ(v.actual, "2 of 4 vehicles reached it unwarned (c, e), first c at t=4 s, never warned");
+    EXPECT_EQ(v.expected, "0 vehicles reached it unwarned (warned >= 0 s before)");
+    EXPECT_EQ(accident->describe(), "WarnedBefore(4 points, cause=2, seconds=0)");
+
+    auto anyCause = WarnedBefore::inArea(box, std::nullopt, zero, zero, std::nullopt);
+    EXPECT_EQ(approach(*anyCause).actual, "1 of 4 vehicles reached it unwarned (c), first c at t=4 s, never warned");
+    // b heard it 0.5 s before it arrived: too late for a 1 s lead.
+    auto early = WarnedBefore::inArea(box, std::nullopt, SimTime::fromSeconds(1), zero, std::nullopt);
+    EXPECT_EQ(approach(*early).actual,
+              "2 of 4 vehicles reached it unwarned (b, c), first b at t=4 s, warned at t=3.5 s");
+    // Only those reaching it from 5 s on: nobody.
+    auto later = WarnedBefore::inArea(box, 2, zero, SimTime::fromSeconds(5), std::nullopt);
+    const CriterionVerdict none = approach(*later);
+    EXPECT_TRUE(none.passed);
+    EXPECT_EQ(none.actual, "no vehicle reached it");
+    // Up to 3 s: crash, its sender, alone.
+    auto before = WarnedBefore::inArea(box, 2, zero, zero, SimTime::fromSeconds(3));
+    EXPECT_EQ(approach(*before).actual, "no vehicle reached it");
+
+    // The edge, with a and b warned in time.
+    auto edge = WarnedBefore::onEdge("e2", std::nullopt, SimTime::fromSeconds(0.5), zero, std::nullopt);
+    EXPECT_EQ(edge->describe(), "WarnedBefore(edge e2, seconds=0.5)");
+    EXPECT_EQ(approach(*edge).actual, "1 of 4 vehicles reached it unwarned (c), first c at t=4 s, never warned");
+
+    EXPECT_THROW(WarnedBefore::onEdge("e2", 300, zero, zero, std::nullopt), std::invalid_argument);
+    EXPECT_THROW(WarnedBefore::onEdge("e2", 2, SimTime::fromSeconds(-1), zero, std::nullopt), std::invalid_argument);
+    EXPECT_THROW(WarnedBefore::onEdge("e2", 2, zero, SimTime::fromSeconds(5), SimTime::fromSeconds(4)),
+                 std::invalid_argument);
 }
 
 TEST(Criteria, AGivenNameReplacesTheDescription) {
