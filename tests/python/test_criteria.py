@@ -152,6 +152,32 @@ def test_no_red_light_running(loops_cfg: Path, tmp_path: Path) -> None:
     assert rest["passed"], rest
 
 
+def test_no_red_light_running_ignores_teleports_and_a_story_switching_a_light(loops_cfg: Path, tmp_path: Path) -> None:
+    # Every light of the loops grid held all red for 8 s every 20 s: the loops jam, SUMO teleports the
+    # vehicles stuck for 120 s onto their next road (10 of them over a red light's line, counted as
+    # red-light passages before teleports were told apart), and a hold that begins in a step when a
+    # vehicle crossed on green made a criterion reading the light after the stories see red (1).
+    lights = {"A1": 6, "B0": 6, "B1": 12, "B2": 6, "C1": 6}
+    holds = "\n".join(
+        f"board.registerStory(WorldStory(TimeCondition({20 * k}, {20 * k + 8}), "
+        f"[TrafficLightEffect({tls!r}, {'r' * n!r})], name='red-{tls}-{k}'))"
+        for k in range(1, 14)
+        for tls, n in lights.items()
+    )
+    statistics = tmp_path / "sumo-statistics.xml"
+    entry = verdict_of(
+        loops_cfg,
+        tmp_path / "holds",
+        "NoRedLightRunning()",
+        holds,
+        end=300.0,
+        extra=["--sumo-option", f"--statistic-output {statistics}"],
+    )
+    assert entry["passed"] and entry["actual"] == "0 red-light passages", entry
+    teleports = ET.parse(statistics).getroot().find("teleports")
+    assert teleports is not None and int(teleports.get("total", "0")) > 0  # the jam did happen
+
+
 MOTORWAY = STORIES / "motorway-accident"
 # The motorway-accident story as it is (the crash at x = 1,490 m from 40 s, its DENM, cause 2), and
 # a 40 m stretch of all three lanes around the crash.

@@ -31,6 +31,11 @@ std::optional<TrafficQueries::SignalPassage> SumoQueries::signalPassage(const st
                                                                         const std::string& to) {
     if (!signals_) signals_ = SignalLinks::ofLoadedSumo();
     if (!signals_->isApproach(from)) return std::nullopt;
+    // SUMO moved a vehicle stuck for --time-to-teleport onto its next road: no driver passed a line.
+    for (const auto& teleported :
+         {libsumo::Simulation::getStartingTeleportIDList(), libsumo::Simulation::getEndingTeleportIDList()}) {
+        if (std::find(teleported.begin(), teleported.end(), vehicle) != teleported.end()) return std::nullopt;
+    }
     std::optional<SignalLinks::Link> link = signals_->passed(from, to);
     if (!link && !to.empty() && libsumo::Lane::getEdgeID(to) != libsumo::Lane::getEdgeID(from)) {
         // Past the junction's target lane within one step (a short edge, a long step): the route

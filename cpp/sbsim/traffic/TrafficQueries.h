@@ -40,7 +40,8 @@ public:
     /// Whether `vehicle`, on lane `from` after the last step and on lane `to` now, passed a
     /// traffic light's stop line in between: the link it used and that link's state now (the
     /// state it moved under: SUMO switches its lights before it moves the vehicles). Ask before
-    /// anything else switches a light in this step.
+    /// anything else switches a light in this step. A teleport (SUMO moving a vehicle stuck for
+    /// --time-to-teleport) passes no line.
     virtual std::optional<SignalPassage> signalPassage(const std::string& vehicle, const std::string& from,
                                                        const std::string& to) = 0;
 };

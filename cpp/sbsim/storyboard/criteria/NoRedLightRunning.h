@@ -15,7 +15,8 @@ namespace sbsim::storyboard {
 /// Passing the line is what SUMO's junction model decides on: a vehicle leaves a lane that ends at
 /// a signal-controlled link for the junction (or beyond) in one step. Red is what SUMO makes a
 /// vehicle stop for (MSLink::haveRed): 'r', and 'u' (red-yellow, still red); yellow is not, nor is
-/// a green that turned red while the vehicle waited inside the junction (it passed on green).
+/// a green that turned red while the vehicle waited inside the junction (it passed on green), nor
+/// a SUMO teleport of a vehicle stuck at the line.
 /// Vehicles respecting the lights never fail it; ones told to ignore them (a speed mode without
 /// bit 4, a junction model's jmDriveAfterRedTime, a story's effect) do.
 class NoRedLightRunning : public Criterion {
