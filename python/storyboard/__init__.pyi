@@ -335,8 +335,24 @@ class ReachedRegion(Criterion):
 class KeepsLane(Criterion):
     def __init__(self, vehicles: str | Iterable[str] | None = None) -> None: ...
 
+class NoRedLightRunning(Criterion):
+    def __init__(self, vehicles: str | Iterable[str] | None = None) -> None: ...
+
 class StoryActivated(Criterion):
     def __init__(self, story: str, at_least: int = 1) -> None: ...
+
+class WarnedBefore(Criterion):
+    """Every vehicle that reached the place (an edge id, or an area of points) between `since` and `until` had
+    heard a DENM of `cause` (any if None) at least `seconds` before; needs a DEN service (--services)."""
+
+    def __init__(
+        self,
+        area_or_edge: str | Iterable[Point],
+        cause: int | None = None,
+        seconds: Seconds = 0,
+        since: Seconds = 0,
+        until: Seconds | None = None,
+    ) -> None: ...
 
 class Storyboard:
     stories: list[Story]

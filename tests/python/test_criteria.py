@@ -5,12 +5,13 @@ from __future__ import annotations
 
 import json
 import xml.etree.ElementTree as ET
+from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
 from sbsim.runner import RunResult, run
 from sbsim.scenarios.grid import make_grid
-from sbsim_helpers import assert_no_crash, write_story
+from sbsim_helpers import STORIES, assert_bad_input, assert_no_crash, write_story
 
 # The loops scenario (conftest.loops_cfg): a 3 x 3 grid, 200 m blocks, one lane, 30 vehicles veh00..veh29.
 INSIDE = [(-50.0, -50.0), (1000.0, -50.0), (1000.0, 1000.0), (-50.0, 1000.0)]  # the whole net
@@ -31,23 +32,32 @@ class Ram(Effect):
 """
 
 
-def run_criteria(cfg: Path, directory: Path, body: str, end: float = 120.0) -> tuple[RunResult, dict, ET.Element]:
+def run_criteria(
+    cfg: Path, directory: Path, body: str, end: float | None = 120.0, extra: Sequence[str] = ()
+) -> tuple[RunResult, dict, ET.Element]:
     directory.mkdir(parents=True, exist_ok=True)
     story = write_story(directory, HEADER + "def createStories(board):\n" + body)
     summary, junit = directory / "summary.json", directory / "junit.xml"
     result = run(
-        cfg, story=story, end=end, seed=2, extra=["--summary", str(summary), "--junit", str(junit)], timeout=180
+        cfg,
+        story=story,
+        end=end,
+        seed=2,
+        extra=["--summary", str(summary), "--junit", str(junit), *extra],
+        timeout=180,
     )
     assert_no_crash(result)
     assert result.returncode in (0, 3), result.stderr
     return result, json.loads(summary.read_text(encoding="utf-8")), ET.parse(junit).getroot()
 
 
-def verdict_of(cfg: Path, directory: Path, criterion: str, stories: str = "") -> dict:
+def verdict_of(
+    cfg: Path, directory: Path, criterion: str, stories: str = "", end: float | None = 120.0, extra: Sequence[str] = ()
+) -> dict:
     """Runs one criterion (after `stories`, lines of createStories) and returns its JSON entry,
     checking that exit code, text summary and JUnit say the same."""
     body = "".join(f"    {line}\n" for line in [*stories.splitlines(), f"board.registerCriterion({criterion})"] if line)
-    result, summary, junit = run_criteria(cfg, directory, body)
+    result, summary, junit = run_criteria(cfg, directory, body, end, extra)
     [entry] = summary["criteria"]
     assert summary["verdict"] == ("passed" if entry["passed"] else "failed")
     assert result.returncode == (0 if entry["passed"] else 3), result.stderr
@@ -116,6 +126,101 @@ def test_keeps_lane(loops_cfg: Path, two_lanes: Path, tmp_path: Path) -> None:
     )
     changes = verdict_of(two_lanes, tmp_path / "changes", "KeepsLane(vehicles=['veh01'])", moves)
     assert not changes["passed"] and "veh01" in changes["actual"], changes
+
+
+def test_no_red_light_running(loops_cfg: Path, tmp_path: Path) -> None:
+    # The loops grid has traffic lights at its inner junctions; SUMO's drivers stop for red.
+    ok = verdict_of(loops_cfg, tmp_path / "ok", "NoRedLightRunning()")
+    assert ok["passed"] and ok["actual"] == "0 red-light passages", ok
+    # From 10 s, five drivers ignore red lights: speed mode 15 lacks bit 4 ("brake hard for red").
+    reckless = (
+        "class IgnoreRed(Effect):\n"
+        "    def apply(self, vehicle):\n"
+        "        vehicle.set_speed_mode(15)\n"
+        "    def remove(self, vehicle):\n"
+        "        pass\n"
+        "ids = ['veh01', 'veh02', 'veh03', 'veh04', 'veh05']\n"
+        "board.registerStory(Story(AndCondition(TimeCondition(10), CarSetCondition(ids)), [IgnoreRed()]))"
+    )
+    red = verdict_of(loops_cfg, tmp_path / "red", "NoRedLightRunning()", reckless)
+    assert not red["passed"] and red["expected"] == "0 red-light passages", red
+    runners = red["actual"].split("(")[1].split(")")[0].split(", ")
+    assert runners and set(runners) <= {"veh01", "veh02", "veh03", "veh04", "veh05"}, red
+    # Only the reckless five: the others, watched alone, still pass.
+    others = ", ".join(repr(f"veh{k:02d}") for k in range(6, 30))
+    rest = verdict_of(loops_cfg, tmp_path / "rest", f"NoRedLightRunning(vehicles=[{others}])", reckless)
+    assert rest["passed"], rest
+
+
+def test_no_red_light_running_ignores_teleports_and_a_story_switching_a_light(loops_cfg: Path, tmp_path: Path) -> None:
+    # Every light of the loops grid held all red for 8 s every 20 s: the loops jam, SUMO teleports the
+    # vehicles stuck for 120 s onto their next road (10 of them over a red light's line, counted as
+    # red-light passages before teleports were told apart), and a hold that begins in a step when a
+    # vehicle crossed on green made a criterion reading the light after the stories see red (1).
+    lights = {"A1": 6, "B0": 6, "B1": 12, "B2": 6, "C1": 6}
+    holds = "\n".join(
+        f"board.registerStory(WorldStory(TimeCondition({20 * k}, {20 * k + 8}), "
+        f"[TrafficLightEffect({tls!r}, {'r' * n!r})], name='red-{tls}-{k}'))"
+        for k in range(1, 14)
+        for tls, n in lights.items()
+    )
+    statistics = tmp_path / "sumo-statistics.xml"
+    entry = verdict_of(
+        loops_cfg,
+        tmp_path / "holds",
+        "NoRedLightRunning()",
+        holds,
+        end=300.0,
+        extra=["--sumo-option", f"--statistic-output {statistics}"],
+    )
+    assert entry["passed"] and entry["actual"] == "0 red-light passages", entry
+    teleports = ET.parse(statistics).getroot().find("teleports")
+    assert teleports is not None and int(teleports.get("total", "0")) > 0  # the jam did happen
+
+
+MOTORWAY = STORIES / "motorway-accident"
+# The motorway-accident story as it is (the crash at x = 1,490 m from 40 s, its DENM, cause 2), and
+# a 40 m stretch of all three lanes around the crash.
+ACCIDENT_STORY = (
+    f"import sys\nsys.path.insert(0, {str(MOTORWAY)!r})\nfrom story import createStories\ncreateStories(board)"
+)
+AT_THE_CRASH = [(1470.0, -20.0), (1510.0, -20.0), (1510.0, 20.0), (1470.0, 20.0)]
+
+
+def test_warned_before(tmp_path: Path) -> None:
+    services = ["--services", str(MOTORWAY / "services.xml")]
+
+    def warned(directory: str, seconds: float) -> dict:
+        # From the crash until it is cleared: before, there is nothing to warn of; after, nobody is told.
+        criterion = f"WarnedBefore({AT_THE_CRASH}, cause=2, seconds={seconds}, since=40, until=160)"
+        return verdict_of(
+            MOTORWAY / "motorway.sumocfg", tmp_path / directory, criterion, ACCIDENT_STORY, None, services
+        )
+
+    ok = warned("ok", 0)
+    assert ok["passed"] and ok["actual"].startswith("0 of "), ok
+    judged = int(ok["actual"].split()[2])
+    assert judged > 50, ok  # every vehicle passing the crash in those 120 s, warned before it got there
+    # Those close behind the crash at 40 s were warned when the DENM went out, seconds before they
+    # arrived, not half a minute.
+    late = warned("late", 30)
+    assert not late["passed"] and late["expected"] == "0 vehicles reached it unwarned (warned >= 30 s before)", late
+    unwarned = int(late["actual"].split()[0])
+    assert 0 < unwarned < judged and f"of {judged} vehicles" in late["actual"], late
+    assert "warned at t=40.001 s" in late["actual"], late
+
+
+def test_warned_before_needs_a_den_service(tmp_path: Path) -> None:
+    body = "".join(
+        f"    {line}\n" for line in [*ACCIDENT_STORY.splitlines(), "board.registerCriterion(WarnedBefore('highway'))"]
+    )
+    story = write_story(tmp_path, HEADER + "def createStories(board):\n" + body)
+    done = run(MOTORWAY / "motorway.sumocfg", story=story, end=5.0, timeout=120)
+    assert_bad_input(done, "WarnedBefore(edge highway, seconds=0)", "no DEN service runs")
+    with_ca_only = tmp_path / "services.xml"
+    with_ca_only.write_text('<services><service type="artery.application.CaService"/></services>')
+    done = run(MOTORWAY / "motorway.sumocfg", story=story, end=5.0, extra=["--services", str(with_ca_only)])
+    assert_bad_input(done, "no DEN service runs")
 
 
 def test_story_activated(loops_cfg: Path, tmp_path: Path) -> None:

@@ -29,8 +29,8 @@ struct CriterionRun {
     std::string_view events;
 };
 
-/// A pass/fail test of a whole run (ScenarioRunner's criteria): it observes every step after the
-/// stories acted, and judges at the end. Registered with Storyboard::registerCriterion.
+/// A pass/fail test of a whole run (ScenarioRunner's criteria): it observes every step (before
+/// and after the stories act), and judges at the end. Registered with Storyboard::registerCriterion.
 class SBSIM_API Criterion {
 public:
     virtual ~Criterion() = default;
@@ -39,8 +39,14 @@ public:
     virtual std::string describe() const = 0;
     /// The snapshot values observe() reads.
     virtual traffic::SnapshotColumns columns() const { return {}; }
+    /// Before each step's stories act: what the step's traffic did under the network as it moved
+    /// (a story's effect may switch a traffic light before observe() sees the step).
+    virtual void prepare(const EvaluationContext& /*ctx*/) {}
     /// After each step's stories: what this step shows.
     virtual void observe(const EvaluationContext& /*ctx*/) {}
+    /// Whether it reads the stations' DENM memories, which only a DEN service fills: a run without
+    /// one refuses it (exit 2) rather than fail every vehicle as unwarned.
+    virtual bool readsDenmMemory() const { return false; }
     /// Whether verdict() reads the event log (the board then keeps its lines in memory).
     virtual bool needsEvents() const { return false; }
     /// At the end of the run, over what it observed and `run`.

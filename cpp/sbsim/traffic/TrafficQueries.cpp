@@ -1,7 +1,11 @@
 #include "sbsim/traffic/TrafficQueries.h"
 
+#include <libsumo/Lane.h>
 #include <libsumo/Simulation.h>
+#include <libsumo/TrafficLight.h>
 #include <libsumo/Vehicle.h>
+
+#include <algorithm>
 
 namespace sbsim::traffic {
 
@@ -20,6 +24,30 @@ const std::vector<TrafficQueries::Collision>& SumoQueries::collisions(kernel::Si
         collisionsAt_ = now;
     }
     return collisions_;
+}
+
+std::optional<TrafficQueries::SignalPassage> SumoQueries::signalPassage(const std::string& vehicle,
+                                                                        const std::string& from,
+                                                                        const std::string& to) {
+    if (!signals_) signals_ = SignalLinks::ofLoadedSumo();
+    if (!signals_->isApproach(from)) return std::nullopt;
+    // SUMO moved a vehicle stuck for --time-to-teleport onto its next road: no driver passed a line.
+    for (const auto& teleported :
+         {libsumo::Simulation::getStartingTeleportIDList(), libsumo::Simulation::getEndingTeleportIDList()}) {
+        if (std::find(teleported.begin(), teleported.end(), vehicle) != teleported.end()) return std::nullopt;
+    }
+    std::optional<SignalLinks::Link> link = signals_->passed(from, to);
+    if (!link && !to.empty() && libsumo::Lane::getEdgeID(to) != libsumo::Lane::getEdgeID(from)) {
+        // Past the junction's target lane within one step (a short edge, a long step): the route
+        // says which edge followed the approach.
+        const std::vector<std::string> route = libsumo::Vehicle::getRoute(vehicle);
+        const auto at = std::find(route.begin(), route.end(), libsumo::Lane::getEdgeID(from));
+        if (at != route.end() && at + 1 != route.end()) link = signals_->toward(from, *(at + 1));
+    }
+    if (!link) return std::nullopt;
+    const std::string state = libsumo::TrafficLight::getRedYellowGreenState(link->signal);
+    const auto index = static_cast<std::size_t>(link->index);
+    return SignalPassage{*link, index < state.size() ? state[index] : 'O'};
 }
 
 }  // namespace sbsim::traffic

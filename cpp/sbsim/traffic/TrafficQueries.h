@@ -6,6 +6,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/traffic/SignalLinks.h"
 
 namespace sbsim::traffic {
 
@@ -23,12 +24,26 @@ public:
         std::string collider;
         std::string victim;
     };
+    /// A traffic light's stop line that a vehicle passed, and its link's state now.
+    struct SignalPassage {
+        SignalLinks::Link link;
+        /// SUMO's link state: 'r' red, 'u' red-yellow, 'y'/'Y' yellow, 'g'/'G' green, 's' stop then
+        /// go (green right-turn arrow), 'o'/'O' off.
+        char state = 'O';
+    };
 
     virtual ~TrafficQueries() = default;
     /// The vehicle ahead of `vehicle` on its route within `lookAhead` m, if any.
     virtual std::optional<Leader> leader(const std::string& vehicle, double lookAhead) = 0;
     /// The collisions of the step that ended at `now` (asked of SUMO once per step).
     virtual const std::vector<Collision>& collisions(kernel::SimTime now) = 0;
+    /// Whether `vehicle`, on lane `from` after the last step and on lane `to` now, passed a
+    /// traffic light's stop line in between: the link it used and that link's state now (the
+    /// state it moved under: SUMO switches its lights before it moves the vehicles). Ask before
+    /// anything else switches a light in this step. A teleport (SUMO moving a vehicle stuck for
+    /// --time-to-teleport) passes no line.
+    virtual std::optional<SignalPassage> signalPassage(const std::string& vehicle, const std::string& from,
+                                                       const std::string& to) = 0;
 };
 
 /// TrafficQueries answered by libsumo (a loaded SUMO).
@@ -36,8 +51,11 @@ class SBSIM_API SumoQueries : public TrafficQueries {
 public:
     std::optional<Leader> leader(const std::string& vehicle, double lookAhead) override;
     const std::vector<Collision>& collisions(kernel::SimTime now) override;
+    std::optional<SignalPassage> signalPassage(const std::string& vehicle, const std::string& from,
+                                               const std::string& to) override;
 
 private:
+    std::optional<SignalLinks> signals_;  // read at the first question (SUMO is loaded by then)
     std::optional<kernel::SimTime> collisionsAt_;
     std::vector<Collision> collisions_;
 };

@@ -1,7 +1,7 @@
 """Watching a story: what one run's stories did, as figures and a table in one HTML file.
 
     python -m sbsim.report events.jsonl --sumocfg C [--story S [--param N=V]] [--fcd f.xml] [--summary s.json]
-        -o report.html [--png DIR]
+        [--messages m.jsonl] -o report.html [--png DIR]
 
 Figures (also as functions returning :class:`matplotlib.figure.Figure`, :mod:`sbsim.report.figures`):
 
@@ -12,7 +12,13 @@ Figures (also as functions returning :class:`matplotlib.figure.Figure`, :mod:`sb
 3. :func:`plot_map`: the network's lanes (the sumocfg's ``net-file``, read with sumolib), with
    ``--story`` each story's areas, and where vehicles were when each story activated for them;
 4. :func:`plot_speeds` (needs ``--fcd``): mean speed per time step of the vehicles under each story
-   against the other running vehicles.
+   against the other running vehicles (world stories, which have no vehicles, have none).
+
+With the run's message trace (``--messages``), the V2X panels (:mod:`sbsim.report.v2x_figures`, their
+tables in :mod:`sbsim.report.v2x` and ``Report.v2x``): messages sent per type over time, packet
+delivery ratio against distance (50 m bins, per type; also a table on the page), the channel busy
+ratio over time (the 802.11p channel model's, ``--radio``), and with ``--fcd`` the mean speed of the
+vehicles that had received a DENM against the others.
 
 Where stories act: the event log and the summary carry neither the stories' areas nor positions
 (an event is ``t``, ``type``, ``story``, ``vehicle``). The areas live in the story script, which

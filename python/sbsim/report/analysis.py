@@ -32,6 +32,15 @@ def stories(events: Events, summary: Mapping[str, Any] | None = None) -> list[st
     return names
 
 
+def world_stories(events: Events) -> list[str]:
+    """The stories whose every line has no vehicle (``"vehicle": null``): WorldStory's, about the network, in
+    log order. A story that never activated has no line and is in neither list."""
+    frame = events_frame(events)
+    named = frame[frame["story"].notna()]
+    worldly = named["vehicle"].isna().groupby(named["story"], sort=False).all()
+    return [str(name) for name, world in worldly.items() if world]
+
+
 def stays(events: Events) -> pd.DataFrame:
     """One row per activation: ``story``, ``vehicle``, ``start``, ``end`` (NaN while still active at the
     end of the log), ``duration`` (NaN likewise) and ``reason`` (the deactivation's)."""

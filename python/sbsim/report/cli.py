@@ -27,12 +27,19 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     parser.add_argument("--fcd", type=Path, help="SUMO's FCD output of the run (positions and speeds)")
     parser.add_argument("--summary", type=Path, help="the run's --summary JSON")
+    parser.add_argument("--messages", type=Path, help="the run's --messages trace: adds the V2X panels")
     parser.add_argument("-o", "--output", type=Path, required=True, help="the HTML file to write")
     parser.add_argument("--png", type=Path, metavar="DIR", help="also write each figure as DIR/<name>.png")
     args = parser.parse_args(argv)
     try:
         report = build(
-            args.events, args.sumocfg, fcd=args.fcd, summary=args.summary, story=args.story, params=args.param
+            args.events,
+            args.sumocfg,
+            fcd=args.fcd,
+            summary=args.summary,
+            story=args.story,
+            params=args.param,
+            messages=args.messages,
         )
         page = to_html(report)
         try:

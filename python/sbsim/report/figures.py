@@ -30,6 +30,7 @@ from sbsim.report.analysis import (
     speeds_by_story,
     stays,
     stories,
+    world_stories,
 )
 from sbsim.report.areas import Area
 
@@ -44,28 +45,43 @@ def _color(index: int) -> str:
 def plot_activity(events: Events, end: float | None = None, names: Sequence[str] | None = None) -> Figure:
     """Vehicles under each story over time, stacked and step-wise.
 
-    One :class:`matplotlib.patches.StepPatch` per story (labelled with its name) on the single axes:
-    ``values - baseline`` over ``edges`` is that story's count. The last step lasts until ``end``
-    (default: one second after the last change)."""
+    One :class:`matplotlib.patches.StepPatch` per vehicle story (labelled with its name) on the single
+    axes: ``values - baseline`` over ``edges`` is that story's count. The last step lasts until ``end``
+    (default: one second after the last change). A world story counts no vehicles: each period it was
+    active is a hatched span (the first labelled ``<name> (world story, active)``)."""
     frame = events_frame(events)
     names = list(names) if names is not None else stories(frame)
-    counts = active_counts(frame, names)
+    world = set(world_stories(frame))
+    counts = active_counts(frame, [n for n in names if n not in world])
     fig = Figure(figsize=(9, 4), layout="constrained")
     ax = fig.add_subplot()
     ax.set_xlabel("time [s]")
     ax.set_ylabel("vehicles under the story")
-    ax.set_title("Vehicles under each story (stacked)")
-    if counts.empty:
+    ax.set_title("Vehicles under each story (stacked)" + ("; world stories shaded while active" if world else ""))
+    periods = stays(frame)
+    periods = periods[periods["story"].isin(world)]
+    if counts.empty and periods.empty:
         ax.text(0.5, 0.5, "no activations", ha="center", va="center", transform=ax.transAxes)
         return fig
-    times = counts.index.to_list()
+    times = sorted({*counts.index.to_list(), *periods["start"].to_list(), *periods["end"].dropna().to_list()})
     last = times[-1] + 1.0 if end is None or end <= times[-1] else end
-    edges = [*times, last]
-    bottom = pd.Series(0, index=counts.index)
+    # A world story has no vehicles to count: its active periods are spans behind the counts.
     for i, name in enumerate(names):
-        top = bottom + counts[name]
-        ax.stairs(top.to_numpy(), edges, baseline=bottom.to_numpy(), fill=True, label=name, color=_color(i))
-        bottom = top
+        if name not in world:
+            continue
+        for k, (_, row) in enumerate(periods[periods["story"] == name].iterrows()):
+            stop = last if math.isnan(row["end"]) else row["end"]
+            label = f"{name} (world story, active)" if k == 0 else "_nolegend_"
+            ax.axvspan(row["start"], stop, color=_color(i), alpha=0.2, hatch="//", label=label)
+    if not counts.empty:
+        edges = [*counts.index.to_list(), last]
+        bottom = pd.Series(0, index=counts.index)
+        for i, name in enumerate(names):
+            if name in world:
+                continue
+            top = bottom + counts[name]
+            ax.stairs(top.to_numpy(), edges, baseline=bottom.to_numpy(), fill=True, label=name, color=_color(i))
+            bottom = top
     ax.set_xlim(min(0.0, times[0]), last)
     ax.set_ylim(bottom=0)
     ax.legend(loc="upper right")
@@ -114,8 +130,8 @@ def plot_map(
     """The network's lanes; each story's ``areas`` (:func:`story_areas`) as semi-transparent patches in
     its colour (a :class:`~matplotlib.patches.Polygon`, ``get_xy()`` closed, or a
     :class:`~matplotlib.patches.Circle`; the first of a story labelled with its name); and, with the
-    FCD, where each story activated: one scatter per story, labelled ``<name> (<count>)``
-    (``get_offsets()`` are the SUMO x, y of its activations)."""
+    FCD, where each vehicle story activated: one scatter per story, labelled ``<name> (<count>)``
+    (``get_offsets()`` are the SUMO x, y of its activations); world stories have no such place."""
     frame = events_frame(events)
     names = list(names) if names is not None else stories(frame)
     areas = areas or {}
@@ -145,7 +161,10 @@ def plot_map(
         return fig
     ax.set_title(f"{'The stories’ areas and w' if drawn_areas else 'W'}here vehicles were when each story activated")
     points = activation_positions(frame, fcd)
+    world = set(world_stories(frame))
     for i, name in enumerate(names):
+        if name in world:
+            continue  # about the network: no vehicle, no place it activated at
         mine = points[points["story"] == name]
         # Stories often share places (one condition inside another): distinct markers keep both visible.
         marker = MARKERS[i % len(MARKERS)]
@@ -165,15 +184,19 @@ def _area_patch(area: Area, color: str, label: str) -> Polygon | Circle:
 
 def plot_speeds(events: Events, fcd: pd.DataFrame, names: Sequence[str] | None = None) -> Figure:
     """Per story (one axes each, labelled with its name), the mean speed over time of the vehicles under
-    it (line labelled ``under <story>``) and of the other running vehicles (``others``)."""
+    it (line labelled ``under <story>``) and of the other running vehicles (``others``). World stories
+    have no vehicles under them, so no axes."""
     frame = events_frame(events)
     names = list(names) if names is not None else stories(frame)
-    shown = names or ["(no stories)"]
+    world = set(world_stories(frame))
+    shown = [name for name in names if name not in world] or ["(no vehicle stories)"]
     fig = Figure(figsize=(9, 2.8 * len(shown)), layout="constrained")
     axes = fig.subplots(len(shown), 1, squeeze=False, sharex=True).ravel()
-    for i, (ax, name) in enumerate(zip(axes, shown, strict=True)):
+    for ax, name in zip(axes, shown, strict=True):
         ax.set_label(name)
         means = speeds_by_story(frame, fcd, name)
+        # The story's colour in every figure: its place among all the stories, world ones too.
+        i = names.index(name) if name in names else 0
         ax.plot(means.index, means["under"], color=_color(i), label=f"under {name}")
         ax.plot(means.index, means["others"], color="0.4", linewidth=0.8, label="others")
         ax.set_title(f"{name}: mean speed", fontsize="medium")

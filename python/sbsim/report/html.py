@@ -18,7 +18,16 @@ CAPTIONS = {
     "map": "The network, the stories' areas (with --story) and where vehicles were when each story activated "
     "(from the FCD output).",
     "speeds": "Mean speed of the vehicles under each story against the other running vehicles.",
+    "messages": "Messages sent per type and second (the --messages trace).",
+    "delivery": "Packet delivery ratio against the sender-receiver distance, per message type (50 m bins; "
+    "losses as far as the trace keeps them, --messages-range).",
+    "busy_ratio": "Channel busy ratio the senders measured, mean and max per second (802.11p channel model).",
+    "denm_speeds": "Mean speed of the vehicles that had received a DENM against the others (trace and FCD).",
 }
+
+
+def _ratio(value: float) -> str:
+    return f"{value:.3f}"
 
 
 def png(figure: Figure) -> bytes:
@@ -55,6 +64,9 @@ def to_html(report: Report) -> str:
     ]
     if report.run is not None:
         parts += ["<h2>Run</h2>", report.run.to_html(classes="run")]
+    if "delivery" in report.v2x and not report.v2x["delivery"].empty:
+        table = report.v2x["delivery"].set_index(["type", "distance"])
+        parts += ["<h2>Delivery ratio by distance</h2>", table.to_html(classes="delivery", float_format=_ratio)]
     for name, figure in report.figures.items():
         data = base64.b64encode(png(figure)).decode("ascii")
         caption = html.escape(CAPTIONS.get(name, name))

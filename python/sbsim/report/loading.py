@@ -13,6 +13,7 @@ import sumolib
 
 from sbsim.events import EventLogError, read_events
 from sbsim.fcd import FcdError, read_fcd
+from sbsim.messages import read_messages
 from sbsim.summary import SummaryError, read_summary
 
 
@@ -101,3 +102,15 @@ def load_fcd(path: str | os.PathLike[str], fallback_step: float = 1.0) -> pd.Dat
         raise _unreadable(path, e) from e
     except FcdError as e:
         raise ReportError(str(e)) from e
+
+
+def load_messages(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+    """The run's message trace (:func:`sbsim.messages.read_messages`)."""
+    try:
+        return read_messages(path)
+    except EventLogError as e:
+        raise ReportError(str(e)) from e
+    except OSError as e:
+        raise _unreadable(path, e) from e
+    except UnicodeDecodeError as e:
+        raise ReportError(f"{path}: not UTF-8 text") from e

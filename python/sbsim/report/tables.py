@@ -8,18 +8,20 @@ from typing import Any
 
 import pandas as pd
 
-from sbsim.report.analysis import Events, events_frame, stays, stories
+from sbsim.report.analysis import Events, events_frame, stays, stories, world_stories
 from sbsim.summary import run_figures, story_figures
 
 
 def story_table(
     events: Events, summary: Mapping[str, Any] | None = None, names: Sequence[str] | None = None
 ) -> pd.DataFrame:
-    """Per story: activations, vehicles, completed stays, their mean duration, stays still open at the
-    end; with the summary, its activation count and active vehicle-seconds beside them."""
+    """Per story: its kind (``vehicle``, or ``world`` for a WorldStory, whose lines have no vehicle),
+    activations, vehicles (none for a world story), completed stays, their mean duration, stays still
+    open at the end; with the summary, its activation count and active vehicle-seconds beside them."""
     frame = events_frame(events)
     names = list(names) if names is not None else stories(frame, summary)
     table = stays(frame)
+    world = set(world_stories(frame))
     rows = []
     for name in names:
         mine = table[table["story"] == name]
@@ -27,15 +29,26 @@ def story_table(
         rows.append(
             {
                 "story": name,
+                "kind": "world" if name in world else "vehicle",
                 "activations": len(mine),
-                "vehicles": mine["vehicle"].nunique(),
+                # A world story's periods have no vehicle: none to count.
+                "vehicles": math.nan if name in world else mine["vehicle"].nunique(),
                 "completed stays": len(done),
                 "mean duration [s]": done.mean() if len(done) else math.nan,
                 "active at the end": len(mine) - len(done),
             }
         )
     out = pd.DataFrame(
-        rows, columns=["story", "activations", "vehicles", "completed stays", "mean duration [s]", "active at the end"]
+        rows,
+        columns=[
+            "story",
+            "kind",
+            "activations",
+            "vehicles",
+            "completed stays",
+            "mean duration [s]",
+            "active at the end",
+        ],
     ).set_index("story")
     if summary is not None:
         figures = story_figures(summary)

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from sbsim.study.execution import StudyInterrupted, run
 from sbsim.study.spec import StudyError, StudySpec
-from sbsim.study.tables import plot
+from sbsim.study.tables import plot, plot_column
 
 #: What --scheduler accepts: Dask's protocol://host:port, or host:port.
 SCHEDULER_ADDRESS = re.compile(r"((tcp|tls|ucx|inproc)://)?[\w.\-\[\]:]+:\d{1,5}")
@@ -28,7 +28,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--scheduler", help="address of a running Dask scheduler (default: a local cluster)")
     parser.add_argument("--workers", type=int, help="local worker processes (default: one per core)")
     parser.add_argument("--timeout", type=float, help="seconds a single run may take (default: no limit)")
-    parser.add_argument("--plot", action="store_true", help="also draw activations per story (PNG files)")
+    parser.add_argument(
+        "--plot",
+        action="append",
+        nargs="?",
+        const="",
+        metavar="COLUMN",
+        help="also draw PNG files: alone, activations per story; with a runs.parquet column (stat:warned:mean), "
+        "that column against the first parameter (repeatable)",
+    )
     args = parser.parse_args(argv)
     if argv is None:  # the command: SIGINT and SIGTERM stop the study, even if started with SIGINT ignored (`&`)
         signal.signal(signal.SIGINT, signal.default_int_handler)
@@ -67,7 +75,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     print(f"study: {len(result.rows)} runs ({result.ran} run now, {len(result.failed)} failed) in {spec.directory}")
     for row in result.failed:
         print(f"study: run {row['run']} failed with exit code {row['exit_code']}", file=sys.stderr)
-    if args.plot:
-        for path in plot(spec.directory, spec):
+    for column in dict.fromkeys(args.plot or []):
+        try:
+            paths = [plot_column(spec.directory, spec, column)] if column else plot(spec.directory, spec)
+        except StudyError as e:
+            print(f"study: {e}", file=sys.stderr)
+            return 2
+        for path in paths:
             print(f"study: plot {path}")
     return 1 if result.failed else 0

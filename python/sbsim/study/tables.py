@@ -8,7 +8,7 @@ from typing import Any
 
 from sbsim.events import read_events
 from sbsim.messages import read_messages
-from sbsim.study.spec import Run, StudySpec
+from sbsim.study.spec import Run, StudyError, StudySpec
 
 #: Exit codes of runs that went to their end: 0, and 3 (a scenario criterion failed; the verdict is a column).
 COMPLETE = (0, 3)
@@ -95,3 +95,67 @@ def plot(directory: Path, spec: StudySpec) -> list[Path]:
         plt.close(fig)
         out.append(path)
     return out
+
+
+def column_by_parameter(table: Any, column: str, parameters: Sequence[str]) -> Any:
+    """``column`` of the complete runs (``runs.parquet``'s rows) over the seeds, per value of the first
+    parameter (``x``) and combination of the others (``group``, "" when there is none; ``x`` is the seed in a
+    study without parameters): ``mean``, ``std`` (0 for one run), ``min``, ``max`` and ``runs``.
+
+    Raises :class:`StudyError` for a column the table lacks or that is not numeric."""
+    import pandas as pd
+
+    if column not in table.columns:
+        known = ", ".join(c for c in table.columns if c.startswith(("stat:", "activations:"))) or "none"
+        raise StudyError(f"--plot: runs.parquet has no column '{column}' (statistics and activations: {known})")
+    done = table[table["exit_code"].isin(COMPLETE)]
+    values = pd.to_numeric(done[column], errors="coerce")
+    if values.isna().all() and len(done):
+        raise StudyError(f"--plot: column '{column}' holds no numbers")
+    x = parameters[0] if parameters else "seed"
+    others = list(parameters[1:])
+    group = done[others].astype(str).agg(", ".join, axis=1) if others else pd.Series("", index=done.index)
+    frame = pd.DataFrame({"group": group, "x": done[x], "value": values})
+    out = frame.groupby(["group", "x"], sort=True)["value"].agg(["mean", "std", "min", "max", "count"])
+    out = out.rename(columns={"count": "runs"}).reset_index()
+    out["std"] = out["std"].fillna(0.0)
+    return out
+
+
+def draw_column(data: Any, column: str, parameters: Sequence[str]) -> Any:
+    """A figure of :func:`column_by_parameter`'s ``data``: per group one line of the means against ``x``
+    with the seeds' standard deviation as error bars (labelled with the group, or ``column``)."""
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(6.4, 4.2), layout="constrained")
+    ax = fig.add_subplot()
+    x_name = parameters[0] if parameters else "seed"
+    others = ", ".join(parameters[1:])
+    for i, (group, rows) in enumerate(data.groupby("group", sort=True)):
+        label = f"{others} = {group}" if group else column
+        ax.errorbar(
+            rows["x"].astype(str) if rows["x"].dtype == object else rows["x"],
+            rows["mean"],
+            yerr=rows["std"],
+            marker="o",
+            capsize=3,
+            color=f"C{i % 10}",
+            label=label,
+        )
+    ax.set_xlabel(x_name)
+    ax.set_ylabel(column)
+    runs = int(data["runs"].max()) if len(data) else 0
+    ax.set_title(f"{column} against {x_name}" + (f" (mean ± sd over up to {runs} seeds)" if parameters else ""))
+    ax.legend(loc="best")
+    return fig
+
+
+def plot_column(directory: Path, spec: StudySpec, column: str) -> Path:
+    """Draws ``column`` of runs.parquet against the study's first parameter as ``plot-<column>.png``."""
+    import pandas as pd
+
+    names = list(spec.parameters)
+    data = column_by_parameter(pd.read_parquet(directory / "runs.parquet"), column, names)
+    path = directory / f"plot-{''.join(c if c.isalnum() else '_' for c in column)}.png"
+    draw_column(data, column, names).savefig(path, dpi=100)
+    return path

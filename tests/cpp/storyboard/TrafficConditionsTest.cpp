@@ -34,6 +34,9 @@ public:
         ++collisionQueries;
         return reported;
     }
+    std::optional<SignalPassage> signalPassage(const std::string&, const std::string&, const std::string&) override {
+        return std::nullopt;  // a road without traffic lights
+    }
 };
 
 /// A snapshot with its grid and a context that queries `traffic`.

@@ -136,6 +136,18 @@ int RunCommand::run(const CommandLine& cl) {
         Interruption::reassert();  // the script may have set handlers of its own
         Interruption::checkpoint("while the story was being created");
         if (created == 0) fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
+        // Without a DEN service no DENM memory fills: such a criterion would fail every vehicle.
+        const bool denService =
+            servicesConfig && std::any_of(servicesConfig->services().begin(), servicesConfig->services().end(),
+                                          [](const services::ServiceSpec& s) { return s.type == "DenService"; });
+        for (const storyboard::CriterionPtr& c : scenario.board()->criteria()) {
+            if (c->readsDenmMemory() && !denService) {
+                throw InputError(
+                    fmt::format("{}: criterion '{}' reads the vehicles' DENM memory, but no DEN service "
+                                "runs (--services has no DenService)",
+                                story->string(), c->name()));
+            }
+        }
     }
     storyboard::Storyboard* board = scenario.board();
     storyboard::StoryPainter painter;

@@ -1,6 +1,7 @@
 #include <pybind11/stl.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <memory>
 #include <set>
 #include <vector>
@@ -9,8 +10,10 @@
 #include "sbsim/storyboard/criteria/KeepsLane.h"
 #include "sbsim/storyboard/criteria/MaxSpeed.h"
 #include "sbsim/storyboard/criteria/NoCollision.h"
+#include "sbsim/storyboard/criteria/NoRedLightRunning.h"
 #include "sbsim/storyboard/criteria/ReachedRegion.h"
 #include "sbsim/storyboard/criteria/StoryActivated.h"
+#include "sbsim/storyboard/criteria/WarnedBefore.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/Bindings.h"
 #include "sbsim/storyboard/python/PythonCriterion.h"
@@ -62,6 +65,10 @@ void bindCriteria(py::module_& m) {
     py::class_<KeepsLane, Criterion, py::smart_holder>(m, "KeepsLane")
         .def(py::init([](const py::object& vehicles) { return std::make_shared<KeepsLane>(vehicleSet(vehicles)); }),
              py::arg("vehicles") = py::none());
+    py::class_<NoRedLightRunning, Criterion, py::smart_holder>(m, "NoRedLightRunning")
+        .def(py::init(
+                 [](const py::object& vehicles) { return std::make_shared<NoRedLightRunning>(vehicleSet(vehicles)); }),
+             py::arg("vehicles") = py::none());
     py::class_<StoryActivated, Criterion, py::smart_holder>(m, "StoryActivated")
         .def(py::init([](const std::string& story, std::int64_t atLeast) {
                  try {
@@ -71,6 +78,39 @@ void bindCriteria(py::module_& m) {
                  }
              }),
              py::arg("story"), py::arg("at_least") = 1);
+    py::class_<WarnedBefore, Criterion, py::smart_holder>(m, "WarnedBefore")
+        .def(py::init([](const py::object& place, const py::object& cause, const py::object& seconds,
+                         const py::object& since, const py::object& until) {
+                 std::optional<int> code;
+                 if (!cause.is_none()) {
+                     if (!py::isinstance<py::int_>(cause) || py::isinstance<py::bool_>(cause))
+                         throw py::type_error("WarnedBefore cause must be a whole number (a cause code), got " +
+                                              py::repr(cause).cast<std::string>());
+                     code = static_cast<int>(std::clamp(cause.cast<long long>(), -1LL, 256LL));
+                 }
+                 const kernel::SimTime lead = toSimTime(seconds, "WarnedBefore seconds");
+                 const kernel::SimTime from = toSimTime(since, "WarnedBefore since");
+                 std::optional<kernel::SimTime> to;
+                 if (!until.is_none()) to = toSimTime(until, "WarnedBefore until");
+                 try {
+                     if (py::isinstance<py::str>(place))
+                         return WarnedBefore::onEdge(place.cast<std::string>(), code, lead, from, to);
+                     if (!py::isinstance<py::iterable>(place))
+                         throw py::type_error("WarnedBefore needs an edge id or an area (points), got " +
+                                              py::repr(place).cast<std::string>());
+                     std::vector<Eigen::Vector2d> vertices;
+                     for (const py::handle p : place.cast<py::iterable>()) vertices.push_back(toSumoPoint(p));
+                     if (vertices.size() < 3) {
+                         throw py::value_error("WarnedBefore needs an area of 3 or more points, got " +
+                                               std::to_string(vertices.size()));
+                     }
+                     return WarnedBefore::inArea(geometry::Polygon(std::move(vertices)), code, lead, from, to);
+                 } catch (const std::invalid_argument& e) {
+                     throw py::value_error(e.what());
+                 }
+             }),
+             py::arg("area_or_edge"), py::arg("cause") = py::none(), py::arg("seconds") = 0, py::arg("since") = 0,
+             py::arg("until") = py::none());
 }
 
 }  // namespace sbsim::storyboard
