@@ -11,6 +11,12 @@ void NetworkStack::pushClosure(Token token, const std::vector<std::string>& edge
     for (const std::string& edge : edges) {
         if (!network_->hasEdge(edge)) throw std::invalid_argument(fmt::format("no edge '{}' in the network", edge));
     }
+    if (closures_.empty()) {
+        // SUMO makes a flow's vehicle and inserts it within one step: with its route checks on, one
+        // whose trip the closure cut would stop the run before step() could take it out.
+        savedRouteChecks_ = network_->routeChecks();
+        network_->setRouteChecks(false);
+    }
     bool newlyClosed = false;
     for (const std::string& edge : std::set<std::string>(edges.begin(), edges.end())) {
         auto [it, first] = closures_.try_emplace(edge);
@@ -23,7 +29,9 @@ void NetworkStack::pushClosure(Token token, const std::vector<std::string>& edge
         newlyClosed = true;
     }
     if (!newlyClosed) return;
-    for (const std::string& vehicle : network_->knownVehicles()) steer(vehicle, !network_->hasDeparted(vehicle));
+    for (const std::string& vehicle : network_->knownVehicles()) {
+        steer(vehicle, network_->hasDeparted(vehicle) ? Phase::Running : Phase::Waiting);
+    }
 }
 
 void NetworkStack::pushSignalState(Token token, const std::string& tls, const std::string& state) {
@@ -53,6 +61,10 @@ void NetworkStack::remove(Token token) {
         for (const auto& [lane, recorded] : it->second.lanes) network_->setPermissions(lane, recorded);
         it = closures_.erase(it);
     }
+    if (closures_.empty() && savedRouteChecks_) {
+        network_->setRouteChecks(*savedRouteChecks_);
+        savedRouteChecks_.reset();
+    }
     for (auto it = signals_.begin(); it != signals_.end();) {
         SignalHold& hold = it->second;
         if (!hold.states.contains(token)) {
@@ -77,14 +89,17 @@ void NetworkStack::step() {
         onClosed_.clear();
         return;
     }
-    // A flow's vehicles are loaded as they depart: SUMO routed them already (or stopped the run).
+    // Route files load vehicles ahead of their departure; SUMO makes a flow's vehicle (and a
+    // trip's given with no time to spare) in the step it inserts it. Those whose first edge is
+    // closed SUMO dropped already, with its warning; the others are on their first edge now.
     for (const std::string& id : network_->loadedVehicles()) {
-        if (network_->hasVehicle(id) && !network_->hasDeparted(id)) steer(id, true);
+        if (!network_->hasVehicle(id)) continue;
+        steer(id, network_->hasDeparted(id) ? Phase::Inserted : Phase::Waiting);
     }
     for (auto it = onClosed_.begin(); it != onClosed_.end();) {
         const std::string id = *it;
         it = onClosed_.erase(it);
-        if (network_->hasVehicle(id)) steer(id, false);  // back in the set while still on a closed edge
+        if (network_->hasVehicle(id)) steer(id, Phase::Running);  // back in the set while still on a closed edge
     }
 }
 
@@ -105,11 +120,11 @@ bool NetworkStack::crossesClosure(const std::vector<std::string>& route, std::si
                        [this](const std::string& edge) { return closed(edge); });
 }
 
-void NetworkStack::steer(const std::string& vehicle, bool waiting) {
+void NetworkStack::steer(const std::string& vehicle, Phase phase) {
     const std::vector<std::string> route = network_->route(vehicle);
     if (route.empty()) return;
     std::size_t from = 0;
-    if (!waiting) {
+    if (phase == Phase::Running) {
         from =
             static_cast<std::size_t>(std::clamp(network_->routeIndex(vehicle), 0, static_cast<int>(route.size()) - 1));
         if (closed(route[from])) {
@@ -125,11 +140,17 @@ void NetworkStack::steer(const std::string& vehicle, bool waiting) {
     std::vector<std::string> around;
     if (!closed(start) && !closed(end)) around = network_->findRoute(start, end, network_->vehicleType(vehicle));
     if (around.empty() || crossesClosure(around, 0)) {
-        if (waiting) {
+        if (phase == Phase::Waiting) {
             network_->removeVehicle(vehicle);
             warn(
                 fmt::format("vehicle '{}' removed before it departed: its trip from {} to {} cannot avoid the closed "
                             "edges (SUMO would stop the run with 'no valid route' when inserting it)",
+                            vehicle, start, end));
+        } else if (phase == Phase::Inserted) {
+            network_->removeVehicle(vehicle);
+            warn(
+                fmt::format("vehicle '{}' removed in the step SUMO made and inserted it, before it moved: its trip "
+                            "from {} to {} cannot avoid the closed edges",
                             vehicle, start, end));
         } else {
             warn(

@@ -63,7 +63,11 @@ private:
         int phase = 0;
     };
 
-    void steer(const std::string& vehicle, bool waiting);
+    /// Where a vehicle is when it is steered: loaded and waiting to depart; inserted by SUMO in
+    /// the step that made it (a flow's vehicle), not moved yet; or on its way.
+    enum class Phase { Waiting, Inserted, Running };
+
+    void steer(const std::string& vehicle, Phase phase);
     bool crossesClosure(const std::vector<std::string>& route, std::size_t from) const;
     void warn(const std::string& message) const {
         if (warn_) warn_(message);
@@ -74,6 +78,7 @@ private:
     std::map<std::string, Closure> closures_;    // by edge
     std::map<std::string, SignalHold> signals_;  // by traffic light
     std::set<std::string> onClosed_;             // were on a closed edge when it closed: steered once off it
+    std::optional<bool> savedRouteChecks_;       // SUMO's route checks before the first closure (off during)
 };
 
 }  // namespace sbsim::storyboard

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 
+#include "sbsim/traffic/SumoRouteChecks.h"
+
 namespace sbsim::traffic {
 
 namespace {
@@ -55,6 +57,9 @@ void NetworkController::setPermissions(const std::string& lane, const LanePermis
 void NetworkController::closeLane(const std::string& lane) {
     libsumo::Lane::setDisallowed(lane, std::vector<std::string>{"all"});
 }
+
+bool NetworkController::routeChecks() const { return sumoRouteChecks(); }
+void NetworkController::setRouteChecks(bool on) { setSumoRouteChecks(on); }
 
 std::vector<std::string> NetworkController::knownVehicles() const { return libsumo::Vehicle::getLoadedIDList(); }
 std::vector<std::string> NetworkController::loadedVehicles() const { return libsumo::Simulation::getLoadedIDList(); }

@@ -41,6 +41,10 @@ public:
     virtual void setPermissions(const std::string& lane, const LanePermissions& recorded);
     /// Lets no vehicle class onto the lane.
     virtual void closeLane(const std::string& lane);
+    /// SUMO's route checks (see SumoRouteChecks.h): on, a vehicle SUMO cannot insert or route stops
+    /// the run; off, SUMO drops or inserts it with a warning.
+    virtual bool routeChecks() const;
+    virtual void setRouteChecks(bool on);
 
     /// Every vehicle SUMO knows: running, teleporting, or loaded and waiting to depart (route
     /// files load vehicles ahead of their departure; libsumo Vehicle::getLoadedIDList).
