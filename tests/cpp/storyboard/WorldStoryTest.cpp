@@ -83,6 +83,11 @@ public:
         return out;
     }
     std::vector<std::string> loadedVehicles() const override { return loaded; }
+    bool routeChecks() const override { return checks; }
+    void setRouteChecks(bool on) override {
+        checks = on;
+        log.push_back(on ? "checks on" : "checks off");
+    }
     bool hasVehicle(const std::string& id) const override { return cars.contains(id); }
     bool hasDeparted(const std::string& id) const override { return cars.at(id).index >= 0; }
     std::vector<std::string> route(const std::string& v) const override { return cars.at(v).route; }
@@ -143,6 +148,7 @@ public:
     std::map<std::string, std::vector<std::string>> routes;
     std::map<std::string, Light> lights;
     std::vector<std::string> loaded;
+    bool checks = true;  // SUMO's route checks (on unless --ignore-route-errors)
     std::vector<std::string> log;
 };
 
@@ -173,6 +179,11 @@ protected:
         for (double t = from; t <= to; t += 1) step(t);
     }
     void overlap(bool firstEndsFirst);
+
+public:
+    void runFrom(double from, double to) { run(from, to); }
+
+protected:
     std::vector<std::string> lines() {
         std::vector<std::string> lines;
         std::istringstream in(out.str());
@@ -266,6 +277,36 @@ TEST_F(WorldStoryTest, ReroutesRunningAndWaitingVehiclesAroundAClosedEdge) {
     network->loaded = {"free"};
     step(7);
     EXPECT_EQ(network->cars.at("free").route, (std::vector<std::string>{"a", "b", "d"}));
+}
+
+/// SUMO makes a flow's vehicle in the step it inserts it: with its route checks on, one whose trip
+/// the closure cut would stop the run inside that step, so they are off while any edge is closed.
+void routeChecksWhileClosed(WorldStoryTest& t, ModelNetwork& network, Storyboard& board, bool before) {
+    network.checks = before;
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "one"));
+    board.registerStory(world(window(3, 8), {closure({"b", "c"})}, "two"));
+    t.runFrom(1, 1);
+    EXPECT_EQ(network.checks, before);
+    t.runFrom(2, 8);
+    EXPECT_FALSE(network.checks) << "off while either closure is active";
+    EXPECT_EQ(std::count(network.log.begin(), network.log.end(), "checks off"), 1);
+    t.runFrom(9, 9);
+    EXPECT_EQ(network.checks, before) << "back as they were after the last";
+}
+
+TEST_F(WorldStoryTest, RouteChecksAreOffWhileAnEdgeIsClosed) { routeChecksWhileClosed(*this, *network, board, true); }
+TEST_F(WorldStoryTest, RouteChecksTheUserTurnedOffStayOff) { routeChecksWhileClosed(*this, *network, board, false); }
+
+TEST_F(WorldStoryTest, AVehicleSumoInsertedInTheStepThatMadeItIsRemovedIfTheClosureCutItsTrip) {
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "close"));
+    run(1, 2);
+    // A flow's vehicles, made and inserted by SUMO in step 3: on their first edge, not moved yet.
+    network->cars["to-b"] = {{"a", "b"}, 0};            // a trip SUMO could not route: the route it had
+    network->cars["through-b"] = {{"a", "b", "d"}, 0};  // a fixed route with a way around
+    network->loaded = {"to-b", "through-b"};
+    step(3);
+    EXPECT_FALSE(network->cars.contains("to-b"));
+    EXPECT_EQ(network->cars.at("through-b").route, (std::vector<std::string>{"a", "c", "d"}));
 }
 
 TEST_F(WorldStoryTest, UnknownEdgeIsAStoryErrorNamingStoryEffectAndTime) {
