@@ -81,8 +81,14 @@ def _flows(path: Path) -> list[Flow]:
         route = f.find("route")
         edges = route.attrib["edges"].split() if route is not None else [f.attrib["from"], f.attrib["to"]]
         flows.append(
-            Flow(f.attrib["id"], float(f.attrib["begin"]), float(f.attrib["end"]), float(f.attrib["period"]),
-                 edges[0], edges[-1])
+            Flow(
+                f.attrib["id"],
+                float(f.attrib["begin"]),
+                float(f.attrib["end"]),
+                float(f.attrib["period"]),
+                edges[0],
+                edges[-1],
+            )
         )
     return flows
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "sbsim/traffic/SumoBridge.h"
+
 namespace sbsim::storyboard {
 
 void NetworkStack::pushClosure(Token token, const std::vector<std::string>& edges) {
@@ -89,12 +91,27 @@ void NetworkStack::step() {
         onClosed_.clear();
         return;
     }
-    // Route files load vehicles ahead of their departure; SUMO makes a flow's vehicle (and a
-    // trip's given with no time to spare) in the step it inserts it. Those whose first edge is
-    // closed SUMO dropped already, with its warning; the others are on their first edge now.
+    // Route files load vehicles ahead of their departure: they wait, and are steered now.
     for (const std::string& id : network_->loadedVehicles()) {
+        if (network_->hasVehicle(id) && !network_->hasDeparted(id)) steer(id, Phase::Waiting);
+    }
+    // SUMO makes a flow's vehicle in the step it inserts it, and with its route checks off it
+    // inserts whatever it could not route: on their first edge now, they are looked at before
+    // they move. (Those whose first edge is closed SUMO dropped already, with its warning.)
+    for (const std::string& id : network_->departedVehicles()) {
         if (!network_->hasVehicle(id)) continue;
-        steer(id, network_->hasDeparted(id) ? Phase::Inserted : Phase::Waiting);
+        if (steer(id, Phase::Inserted) || network_->routeValid(id)) continue;
+        // SUMO found no way for a trip whose route misses the closed edges: its only ways crossed
+        // them. Any other broken route ends the run, as SUMO's own check would have.
+        if (!network_->routedBySumo(id) || !routableWithoutClosures(id)) {
+            throw traffic::SumoError(fmt::format("Vehicle '{}' has no valid route.", id));
+        }
+        const std::vector<std::string> route = network_->route(id);
+        network_->removeVehicle(id);
+        warn(
+            fmt::format("vehicle '{}' removed in the step SUMO made and inserted it, before it moved: its trip "
+                        "from {} to {} cannot avoid the closed edges",
+                        id, route.front(), route.back()));
     }
     for (auto it = onClosed_.begin(); it != onClosed_.end();) {
         const std::string id = *it;
@@ -115,25 +132,39 @@ std::optional<std::string> NetworkStack::heldState(const std::string& tls) const
     return it->second.states.effective();
 }
 
+bool NetworkStack::routableWithoutClosures(const std::string& vehicle) {
+    // The closed lanes open for the question only (between two steps: no vehicle moves meanwhile).
+    for (const auto& [edge, closure] : closures_) {
+        for (const auto& [lane, recorded] : closure.lanes) network_->setPermissions(lane, recorded);
+    }
+    const std::vector<std::string> route = network_->route(vehicle);
+    const bool way =
+        !route.empty() && !network_->findRoute(route.front(), route.back(), network_->vehicleType(vehicle)).empty();
+    for (const auto& [edge, closure] : closures_) {
+        for (const auto& [lane, recorded] : closure.lanes) network_->closeLane(lane);
+    }
+    return way;
+}
+
 bool NetworkStack::crossesClosure(const std::vector<std::string>& route, std::size_t from) const {
     return std::any_of(route.begin() + static_cast<std::ptrdiff_t>(std::min(from, route.size())), route.end(),
                        [this](const std::string& edge) { return closed(edge); });
 }
 
-void NetworkStack::steer(const std::string& vehicle, Phase phase) {
+bool NetworkStack::steer(const std::string& vehicle, Phase phase) {
     const std::vector<std::string> route = network_->route(vehicle);
-    if (route.empty()) return;
+    if (route.empty()) return false;
     std::size_t from = 0;
     if (phase == Phase::Running) {
         from =
             static_cast<std::size_t>(std::clamp(network_->routeIndex(vehicle), 0, static_cast<int>(route.size()) - 1));
         if (closed(route[from])) {
             onClosed_.insert(vehicle);  // it drives off; its way on is looked at once it has
-            return;
+            return true;
         }
-        if (!crossesClosure(route, from + 1)) return;
+        if (!crossesClosure(route, from + 1)) return false;
     } else if (!crossesClosure(route, 0)) {
-        return;
+        return false;
     }
     const std::string& start = route[from];
     const std::string& end = route.back();
@@ -158,9 +189,10 @@ void NetworkStack::steer(const std::string& vehicle, Phase phase) {
                             "waits at the closure",
                             vehicle, end));
         }
-        return;
+        return true;
     }
     network_->reroute(vehicle);
+    return true;
 }
 
 }  // namespace sbsim::storyboard

@@ -45,7 +45,9 @@ public:
     /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
     void remove(Token token);
     /// Called once per step, before world stories act: while edges are closed, steers the vehicles
-    /// SUMO loaded in the step (and those that left a closed edge since) around them.
+    /// SUMO loaded or inserted in the step (and those that left a closed edge since) around them.
+    /// Throws traffic::SumoError for a vehicle inserted with a route broken for another reason
+    /// (SUMO's route checks, which would have stopped the run, are off while edges are closed).
     void step();
 
     bool closed(const std::string& edge) const { return closures_.contains(edge); }
@@ -67,7 +69,11 @@ private:
     /// the step that made it (a flow's vehicle), not moved yet; or on its way.
     enum class Phase { Waiting, Inserted, Running };
 
-    void steer(const std::string& vehicle, Phase phase);
+    /// Re-routes or removes the vehicle if its way on meets a closure; false if it does not.
+    bool steer(const std::string& vehicle, Phase phase);
+    /// Whether SUMO would find the vehicle a way from its route's first to its last edge were no
+    /// edge closed.
+    bool routableWithoutClosures(const std::string& vehicle);
     bool crossesClosure(const std::vector<std::string>& route, std::size_t from) const;
     void warn(const std::string& message) const {
         if (warn_) warn_(message);

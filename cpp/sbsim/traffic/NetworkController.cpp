@@ -63,6 +63,13 @@ void NetworkController::setRouteChecks(bool on) { setSumoRouteChecks(on); }
 
 std::vector<std::string> NetworkController::knownVehicles() const { return libsumo::Vehicle::getLoadedIDList(); }
 std::vector<std::string> NetworkController::loadedVehicles() const { return libsumo::Simulation::getLoadedIDList(); }
+std::vector<std::string> NetworkController::departedVehicles() const {
+    return libsumo::Simulation::getDepartedIDList();
+}
+bool NetworkController::routeValid(const std::string& vehicle) const { return libsumo::Vehicle::isRouteValid(vehicle); }
+bool NetworkController::routedBySumo(const std::string& vehicle) const {
+    return libsumo::Vehicle::getParameter(vehicle, "has.rerouting.device") == "true";
+}
 bool NetworkController::hasDeparted(const std::string& id) const {
     return libsumo::Vehicle::getDeparture(id) != libsumo::INVALID_DOUBLE_VALUE;
 }

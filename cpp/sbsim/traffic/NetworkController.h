@@ -51,6 +51,13 @@ public:
     virtual std::vector<std::string> knownVehicles() const;
     /// The vehicles SUMO loaded in the last step (libsumo Simulation::getLoadedIDList).
     virtual std::vector<std::string> loadedVehicles() const;
+    /// The vehicles SUMO inserted in the last step (libsumo Simulation::getDepartedIDList).
+    virtual std::vector<std::string> departedVehicles() const;
+    /// Whether SUMO finds the vehicle's route connected for its class (libsumo Vehicle::isRouteValid).
+    virtual bool routeValid(const std::string& vehicle) const;
+    /// Whether SUMO routes the vehicle itself (it has a rerouting device: a trip or a flow given
+    /// from/to, which SUMO routes when inserting it).
+    virtual bool routedBySumo(const std::string& vehicle) const;
     virtual bool hasVehicle(const std::string& id) const;
     virtual bool hasDeparted(const std::string& id) const;
     virtual std::vector<std::string> route(const std::string& vehicle) const;

@@ -30,6 +30,7 @@
 #include "sbsim/storyboard/effects/CloseRoadEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::storyboard {
 namespace {
@@ -83,6 +84,9 @@ public:
         return out;
     }
     std::vector<std::string> loadedVehicles() const override { return loaded; }
+    std::vector<std::string> departedVehicles() const override { return departed; }
+    bool routeValid(const std::string& v) const override { return !broken.contains(v); }
+    bool routedBySumo(const std::string& v) const override { return trips.contains(v); }
     bool routeChecks() const override { return checks; }
     void setRouteChecks(bool on) override {
         checks = on;
@@ -148,7 +152,10 @@ public:
     std::map<std::string, std::vector<std::string>> routes;
     std::map<std::string, Light> lights;
     std::vector<std::string> loaded;
-    bool checks = true;  // SUMO's route checks (on unless --ignore-route-errors)
+    std::vector<std::string> departed;
+    std::set<std::string> broken;  // vehicles whose route SUMO finds disconnected
+    std::set<std::string> trips;   // vehicles SUMO routes itself
+    bool checks = true;            // SUMO's route checks (on unless --ignore-route-errors)
     std::vector<std::string> log;
 };
 
@@ -174,6 +181,7 @@ protected:
         snapshot.assign({}, SimTime::fromSeconds(t));
         board.update(snapshot, {});
         network->loaded.clear();
+        network->departed.clear();
     }
     void run(double from, double to) {
         for (double t = from; t <= to; t += 1) step(t);
@@ -304,9 +312,31 @@ TEST_F(WorldStoryTest, AVehicleSumoInsertedInTheStepThatMadeItIsRemovedIfTheClos
     network->cars["to-b"] = {{"a", "b"}, 0};            // a trip SUMO could not route: the route it had
     network->cars["through-b"] = {{"a", "b", "d"}, 0};  // a fixed route with a way around
     network->loaded = {"to-b", "through-b"};
+    network->departed = {"to-b", "through-b"};
     step(3);
     EXPECT_FALSE(network->cars.contains("to-b"));
     EXPECT_EQ(network->cars.at("through-b").route, (std::vector<std::string>{"a", "c", "d"}));
+    // One whose route is broken for another reason ends the run, as SUMO's check would have.
+    network->cars["broken"] = {{"a", "d"}, 0};
+    network->broken = {"broken"};
+    network->departed = {"broken"};
+    EXPECT_THROW(step(4), traffic::SumoError);
+}
+
+TEST_F(WorldStoryTest, ATripSumoCouldNotRouteOnlyBecauseOfTheClosureIsRemoved) {
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "close"));
+    run(1, 2);
+    // SUMO found no way from a to d for these (all crossed b), so each keeps the route it had.
+    network->cars["trip"] = {{"a", "d"}, 0};
+    network->cars["fixed"] = {{"a", "d"}, 0};
+    network->broken = {"trip", "fixed"};
+    network->trips = {"trip"};
+    network->departed = {"trip"};
+    step(3);
+    EXPECT_FALSE(network->cars.contains("trip"));
+    EXPECT_EQ(network->lanePermissions.at("b_0"), (LanePermissions{{}, {"all"}})) << "closed again after the question";
+    network->departed = {"fixed"};  // a fixed route SUMO would have refused anyway
+    EXPECT_THROW(step(4), traffic::SumoError);
 }
 
 TEST_F(WorldStoryTest, UnknownEdgeIsAStoryErrorNamingStoryEffectAndTime) {
