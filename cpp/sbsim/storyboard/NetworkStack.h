@@ -21,11 +21,14 @@ namespace sbsim::storyboard {
 ///   recorded when the first closure arrives and restored exactly when the last one ends, in
 ///   whatever order they end. Vehicles that would drive onto a closed edge are re-routed around
 ///   it when it closes, and so are vehicles SUMO loads later (route files load vehicles ahead of
-///   their departure). A vehicle already on a closed edge drives off it. A vehicle waiting to
-///   depart that cannot avoid the closure (its trip starts or ends on a closed edge, or there is
-///   no way around) is removed before it departs, with a warning: SUMO would stop the run with
-///   "has no valid route" when inserting it. A running one keeps its route and waits at the
-///   closure (until it opens or SUMO teleports it), with a warning;
+///   their departure) or inserts in the step that made them (a flow's). A vehicle already on a
+///   closed edge drives off it. One that has not moved yet and cannot avoid the closure (its trip
+///   starts or ends on a closed edge, or there is no way around) is removed, with a warning: SUMO
+///   would stop the run with "has no valid route" when inserting it. A running one keeps its
+///   route and waits at the closure (until it opens or SUMO teleports it), with a warning. While
+///   any edge is closed SUMO's route checks are off (SUMO makes a flow's vehicle and inserts it in
+///   one step, with no moment between to take it out): SUMO drops a vehicle whose first edge is
+///   closed itself, and step() checks each inserted vehicle's route in the checks' place;
 /// - held signals: per traffic light, the most recently activated state rules; the programme and
 ///   phase from before the first are set again after the last.
 /// A command goes to SUMO only when an effective value changes.
