@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 from sbsim.scenarios.grid import make_grid
 from sbsim.sumo import sumo_home
-from sbsim_helpers import StoryRun, assert_no_crash, run_story
+from sbsim_helpers import STORIES, StoryRun, assert_no_crash, run_story
 
 CLOSE_FROM, CLOSE_TO = 10, 70  # the closure acts on vehicles SUMO inserts at 10 s .. 70 s
 END = 100.0
@@ -202,3 +202,37 @@ def test_closing_every_edge_in_turn(flow_net: Path, tmp_path: Path) -> None:
         ending = set().union(*(f.vehicles_between(CLOSE_FROM, CLOSE_TO) for f in flows if f.last == edge))
         assert ending - starting <= removed, edge
         assert not removed & dropped, edge
+
+
+@pytest.mark.parametrize(
+    "edge",
+    ["bridge_e", "bridge_w", "east_in", "east_out", "ebank_n", "ebank_s"]
+    + ["south_e", "south_w", "wbank_n", "wbank_s", "west_in", "west_out"],
+)
+def test_closing_each_edge_of_bridge_closure_under_its_own_trips(edge: str, tmp_path: Path) -> None:
+    """The issue's case: stories/bridge-closure's flows (from/to, a car every 8 s each way), one
+    edge closed from 120 s to 360 s instead of the bridge."""
+    cfg = STORIES / "bridge-closure" / "bridge-closure.sumocfg"
+    story = f"""
+        import storyboard as sb
+        def createStories(board):
+            board.registerStory(sb.WorldStory(sb.TimeCondition(120, 360), [sb.CloseRoadEffect([{edge!r}])], "c"))
+    """
+    run_ = run_story(cfg, story, tmp_path, end=400, fcd=True, extra=("--verbose",))
+    stderr = run_.result.stderr
+    removed = _one_each(REMOVED_AT_INSERTION.findall(stderr) + REMOVED_WAITING.findall(stderr))
+    dropped = _one_each([v for v, e in DROPPED.findall(stderr)])
+    assert {e for _, e in DROPPED.findall(stderr)} <= {edge}
+    assert not removed & dropped
+    flows = {"eastbound": ("west_in", "east_out", 0.0), "westbound": ("east_in", "west_out", 4.0)}
+    for flow, (first, last, begin) in flows.items():
+        made = {f"{flow}.{k}" for k in range(63) if 120 <= begin + 8 * k <= 360}
+        if edge == first:
+            assert made == {v for v in dropped if v.startswith(flow + ".")}
+        elif edge == last:
+            assert made <= removed
+    assert run_.fcd is not None
+    for v in dropped:
+        assert v not in run_.fcd.pos
+    for v in removed:
+        assert not _moved(run_, v), f"{v} was removed yet moved"
