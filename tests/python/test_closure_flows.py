@@ -24,7 +24,11 @@ END = 100.0
 #: sbsim's line for a vehicle it took out in the step SUMO made and inserted it.
 REMOVED_AT_INSERTION = re.compile(r"^sbsim: warning: t=\S+ s: vehicle '([^']+)' removed in the step SUMO made", re.M)
 #: sbsim's line for a loaded vehicle it took out before it departed.
-REMOVED_WAITING = re.compile(r"^sbsim: warning: t=\S+ s: vehicle '([^']+)' removed before it departed", re.M)
+REMOVED_WAITING = re.compile(r"^sbsim: warning: t=\S+ s: vehicle '([^']+)' removed before it departed: its trip", re.M)
+#: sbsim's line for a vehicle SUMO dropped in the step that made it (its first edge closed).
+DROPPED_SBSIM = re.compile(
+    r"^sbsim: warning: t=\S+ s: vehicle '([^']+)' removed before it departed: SUMO dropped", re.M
+)
 #: SUMO's line for a vehicle it dropped because no lane of its first edge lets it on.
 DROPPED = re.compile(r"^Warning: Vehicle '([^']+)' is not allowed to depart on any lane of edge '([^']+)'\.", re.M)
 
@@ -150,6 +154,7 @@ def test_closing_the_first_edge_of_waiting_flow_vehicles(flow_net: Path, tmp_pat
     dropped = [v for v, e in DROPPED.findall(run_.result.stderr)]
     assert {e for _, e in DROPPED.findall(run_.result.stderr)} == {edge}
     assert _one_each(dropped) == expected
+    assert _one_each(DROPPED_SBSIM.findall(run_.result.stderr)) == expected  # sbsim's own line, once each
     # Others have no way around that edge (a grid's corner): sbsim takes them out, once each.
     stderr = run_.result.stderr
     removed = _one_each(REMOVED_AT_INSERTION.findall(stderr) + REMOVED_WAITING.findall(stderr))
@@ -199,6 +204,7 @@ def test_closing_every_edge_in_turn(flow_net: Path, tmp_path: Path) -> None:
         # Every flow vehicle made during the closure on a flow that starts there is dropped by SUMO.
         starting = set().union(*(f.vehicles_between(CLOSE_FROM, CLOSE_TO) for f in flows if f.first == edge))
         assert dropped == starting, edge
+        assert _one_each(DROPPED_SBSIM.findall(stderr)) == starting, edge
         ending = set().union(*(f.vehicles_between(CLOSE_FROM, CLOSE_TO) for f in flows if f.last == edge))
         assert ending - starting <= removed, edge
         assert not removed & dropped, edge
@@ -223,6 +229,7 @@ def test_closing_each_edge_of_bridge_closure_under_its_own_trips(edge: str, tmp_
     removed = _one_each(REMOVED_AT_INSERTION.findall(stderr) + REMOVED_WAITING.findall(stderr))
     dropped = _one_each([v for v, e in DROPPED.findall(stderr)])
     assert {e for _, e in DROPPED.findall(stderr)} <= {edge}
+    assert _one_each(DROPPED_SBSIM.findall(stderr)) == dropped
     assert not removed & dropped
     flows = {"eastbound": ("west_in", "east_out", 0.0), "westbound": ("east_in", "west_out", 4.0)}
     for flow, (first, last, begin) in flows.items():

@@ -93,7 +93,16 @@ void NetworkStack::step() {
     }
     // Route files load vehicles ahead of their departure: they wait, and are steered now.
     for (const std::string& id : network_->loadedVehicles()) {
-        if (network_->hasVehicle(id) && !network_->hasDeparted(id)) steer(id, Phase::Waiting);
+        if (!network_->hasVehicle(id)) {
+            // Made and gone in one step: SUMO could not insert it and, its route checks off, dropped
+            // it (its own warning, if SUMO's warnings are on, names the edge).
+            warn(
+                fmt::format("vehicle '{}' removed before it departed: SUMO dropped it, no lane of its first edge "
+                            "letting it on (a closed edge, or one its class may never use)",
+                            id));
+        } else if (!network_->hasDeparted(id)) {
+            steer(id, Phase::Waiting);
+        }
     }
     // SUMO makes a flow's vehicle in the step it inserts it, and with its route checks off it
     // inserts whatever it could not route: on their first edge now, they are looked at before

@@ -309,11 +309,15 @@ TEST_F(WorldStoryTest, AVehicleSumoInsertedInTheStepThatMadeItIsRemovedIfTheClos
     board.registerStory(world(window(2, 5), {closure({"b"})}, "close"));
     run(1, 2);
     // A flow's vehicles, made and inserted by SUMO in step 3: on their first edge, not moved yet.
-    network->cars["to-b"] = {{"a", "b"}, 0};            // a trip SUMO could not route: the route it had
-    network->cars["through-b"] = {{"a", "b", "d"}, 0};  // a fixed route with a way around
-    network->loaded = {"to-b", "through-b"};
+    network->cars["to-b"] = {{"a", "b"}, 0};             // a trip SUMO could not route: the route it had
+    network->cars["through-b"] = {{"a", "b", "d"}, 0};   // a fixed route with a way around
+    network->loaded = {"to-b", "through-b", "dropped"};  // SUMO dropped the last one: its first edge was b
     network->departed = {"to-b", "through-b"};
+    testing::internal::CaptureStderr();
     step(3);
+    const std::string warnings = testing::internal::GetCapturedStderr();
+    EXPECT_NE(warnings.find("vehicle 'to-b' removed in the step SUMO made and inserted it"), std::string::npos);
+    EXPECT_NE(warnings.find("vehicle 'dropped' removed before it departed: SUMO dropped it"), std::string::npos);
     EXPECT_FALSE(network->cars.contains("to-b"));
     EXPECT_EQ(network->cars.at("through-b").route, (std::vector<std::string>{"a", "c", "d"}));
     // One whose route is broken for another reason ends the run, as SUMO's check would have.
