@@ -54,6 +54,8 @@ public:
     void step();
 
     bool closed(const std::string& edge) const { return closures_.contains(edge); }
+    /// SUMO's route checks as they are when no edge is closed (the user's --ignore-route-errors).
+    bool routeChecksOutsideClosures() const { return savedRouteChecks_.value_or(network_->routeChecks()); }
     std::set<std::string> closedEdges() const;
     std::optional<std::string> heldState(const std::string& tls) const;
 

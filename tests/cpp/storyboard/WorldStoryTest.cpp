@@ -89,8 +89,8 @@ public:
     bool routedBySumo(const std::string& v) const override { return trips.contains(v); }
     bool routeChecks() const override { return checks; }
     void setRouteChecks(bool on) override {
+        if (on != checks) log.push_back(on ? "checks on" : "checks off");
         checks = on;
-        log.push_back(on ? "checks on" : "checks off");
     }
     bool hasVehicle(const std::string& id) const override { return cars.contains(id); }
     bool hasDeparted(const std::string& id) const override { return cars.at(id).index >= 0; }
@@ -297,7 +297,7 @@ void routeChecksWhileClosed(WorldStoryTest& t, ModelNetwork& network, Storyboard
     EXPECT_EQ(network.checks, before);
     t.runFrom(2, 8);
     EXPECT_FALSE(network.checks) << "off while either closure is active";
-    EXPECT_EQ(std::count(network.log.begin(), network.log.end(), "checks off"), 1);
+    EXPECT_EQ(std::count(network.log.begin(), network.log.end(), "checks off"), before ? 1 : 0) << "turned off once";
     t.runFrom(9, 9);
     EXPECT_EQ(network.checks, before) << "back as they were after the last";
 }
@@ -341,6 +341,16 @@ TEST_F(WorldStoryTest, ATripSumoCouldNotRouteOnlyBecauseOfTheClosureIsRemoved) {
     EXPECT_EQ(network->lanePermissions.at("b_0"), (LanePermissions{{}, {"all"}})) << "closed again after the question";
     network->departed = {"fixed"};  // a fixed route SUMO would have refused anyway
     EXPECT_THROW(step(4), traffic::SumoError);
+}
+
+TEST_F(WorldStoryTest, ASpawnDuringAClosureIsCheckedAsSumoChecksWithNoEdgeClosed) {
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "close"));
+    board.registerStory(
+        world(window(3, 3), {std::make_shared<SpawnEffect>(SpawnEffect::Spec{"v", {"a", "c"}})}, "spawn"));
+    run(1, 3);
+    EXPECT_TRUE(network->cars.contains("v"));
+    EXPECT_EQ(network->log.end()[-3], "checks on") << "SUMO checks the new vehicle's route";
+    EXPECT_EQ(network->log.end()[-1], "checks off") << "and the closure has them off again";
 }
 
 TEST_F(WorldStoryTest, UnknownEdgeIsAStoryErrorNamingStoryEffectAndTime) {
