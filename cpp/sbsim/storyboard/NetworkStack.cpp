@@ -87,6 +87,7 @@ void NetworkStack::remove(Token token) {
 }
 
 void NetworkStack::step() {
+    removedAfterInsertion_.clear();
     if (closures_.empty()) {
         onClosed_.clear();
         return;
@@ -117,11 +118,13 @@ void NetworkStack::step() {
         }
         const std::vector<std::string> route = network_->route(id);
         network_->removeVehicle(id);
+        removedAfterInsertion_.push_back(id);
         warn(
             fmt::format("vehicle '{}' removed in the step SUMO made and inserted it, before it moved: its trip "
                         "from {} to {} cannot avoid the closed edges",
                         id, route.front(), route.back()));
     }
+    std::sort(removedAfterInsertion_.begin(), removedAfterInsertion_.end());
     for (auto it = onClosed_.begin(); it != onClosed_.end();) {
         const std::string id = *it;
         it = onClosed_.erase(it);
@@ -188,6 +191,7 @@ bool NetworkStack::steer(const std::string& vehicle, Phase phase) {
                             vehicle, start, end));
         } else if (phase == Phase::Inserted) {
             network_->removeVehicle(vehicle);
+            removedAfterInsertion_.push_back(vehicle);
             warn(
                 fmt::format("vehicle '{}' removed in the step SUMO made and inserted it, before it moved: its trip "
                             "from {} to {} cannot avoid the closed edges",

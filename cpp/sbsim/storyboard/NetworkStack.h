@@ -58,6 +58,9 @@ public:
     bool routeChecksOutsideClosures() const { return savedRouteChecks_.value_or(network_->routeChecks()); }
     std::set<std::string> closedEdges() const;
     std::optional<std::string> heldState(const std::string& tls) const;
+    /// The vehicles the last step() removed after SUMO had inserted them (they are in that
+    /// step's snapshot, but gone from SUMO), sorted.
+    const std::vector<std::string>& removedAfterInsertion() const { return removedAfterInsertion_; }
 
 private:
     struct Closure {
@@ -89,7 +92,8 @@ private:
     std::map<std::string, Closure> closures_;    // by edge
     std::map<std::string, SignalHold> signals_;  // by traffic light
     std::set<std::string> onClosed_;             // were on a closed edge when it closed: steered once off it
-    std::optional<bool> savedRouteChecks_;       // SUMO's route checks before the first closure (off during)
+    std::optional<bool> savedRouteChecks_;
+    std::vector<std::string> removedAfterInsertion_;  // SUMO's route checks before the first closure (off during)
 };
 
 }  // namespace sbsim::storyboard
