@@ -21,11 +21,14 @@ namespace sbsim::storyboard {
 ///   recorded when the first closure arrives and restored exactly when the last one ends, in
 ///   whatever order they end. Vehicles that would drive onto a closed edge are re-routed around
 ///   it when it closes, and so are vehicles SUMO loads later (route files load vehicles ahead of
-///   their departure). A vehicle already on a closed edge drives off it. A vehicle waiting to
-///   depart that cannot avoid the closure (its trip starts or ends on a closed edge, or there is
-///   no way around) is removed before it departs, with a warning: SUMO would stop the run with
-///   "has no valid route" when inserting it. A running one keeps its route and waits at the
-///   closure (until it opens or SUMO teleports it), with a warning;
+///   their departure) or inserts in the step that made them (a flow's). A vehicle already on a
+///   closed edge drives off it. One that has not moved yet and cannot avoid the closure (its trip
+///   starts or ends on a closed edge, or there is no way around) is removed, with a warning: SUMO
+///   would stop the run with "has no valid route" when inserting it. A running one keeps its
+///   route and waits at the closure (until it opens or SUMO teleports it), with a warning. While
+///   any edge is closed SUMO's route checks are off (SUMO makes a flow's vehicle and inserts it in
+///   one step, with no moment between to take it out): SUMO drops a vehicle whose first edge is
+///   closed itself, and step() checks each inserted vehicle's route in the checks' place;
 /// - held signals: per traffic light, the most recently activated state rules; the programme and
 ///   phase from before the first are set again after the last.
 /// A command goes to SUMO only when an effective value changes.
@@ -45,12 +48,19 @@ public:
     /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
     void remove(Token token);
     /// Called once per step, before world stories act: while edges are closed, steers the vehicles
-    /// SUMO loaded in the step (and those that left a closed edge since) around them.
+    /// SUMO loaded or inserted in the step (and those that left a closed edge since) around them.
+    /// Throws traffic::SumoError for a vehicle inserted with a route broken for another reason
+    /// (SUMO's route checks, which would have stopped the run, are off while edges are closed).
     void step();
 
     bool closed(const std::string& edge) const { return closures_.contains(edge); }
+    /// SUMO's route checks as they are when no edge is closed (the user's --ignore-route-errors).
+    bool routeChecksOutsideClosures() const { return savedRouteChecks_.value_or(network_->routeChecks()); }
     std::set<std::string> closedEdges() const;
     std::optional<std::string> heldState(const std::string& tls) const;
+    /// The vehicles the last step() removed after SUMO had inserted them (they are in that
+    /// step's snapshot, but gone from SUMO), sorted.
+    const std::vector<std::string>& removedAfterInsertion() const { return removedAfterInsertion_; }
 
 private:
     struct Closure {
@@ -63,7 +73,15 @@ private:
         int phase = 0;
     };
 
-    void steer(const std::string& vehicle, bool waiting);
+    /// Where a vehicle is when it is steered: loaded and waiting to depart; inserted by SUMO in
+    /// the step that made it (a flow's vehicle), not moved yet; or on its way.
+    enum class Phase { Waiting, Inserted, Running };
+
+    /// Re-routes or removes the vehicle if its way on meets a closure; false if it does not.
+    bool steer(const std::string& vehicle, Phase phase);
+    /// Whether SUMO would find the vehicle a way from its route's first to its last edge were no
+    /// edge closed.
+    bool routableWithoutClosures(const std::string& vehicle);
     bool crossesClosure(const std::vector<std::string>& route, std::size_t from) const;
     void warn(const std::string& message) const {
         if (warn_) warn_(message);
@@ -74,6 +92,8 @@ private:
     std::map<std::string, Closure> closures_;    // by edge
     std::map<std::string, SignalHold> signals_;  // by traffic light
     std::set<std::string> onClosed_;             // were on a closed edge when it closed: steered once off it
+    std::optional<bool> savedRouteChecks_;
+    std::vector<std::string> removedAfterInsertion_;  // SUMO's route checks before the first closure (off during)
 };
 
 }  // namespace sbsim::storyboard

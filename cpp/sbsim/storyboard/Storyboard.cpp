@@ -114,7 +114,10 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     const EvaluationContext ctx(snapshot, grid_, queries_.get(), &simulation().parallel(), stations_.get());
     for (Condition* c : conditions_) c->prepare(ctx);
     for (const CriterionPtr& c : criteria_) c->prepare(ctx);
-    if (!world_.empty()) world_.run(now_);
+    if (!world_.empty()) {
+        world_.run(now_);
+        vehicles_.setGone(world_.network().removedAfterInsertion());
+    }
     vehicles_.run(ctx, simulation().parallel());
     for (const CriterionPtr& c : criteria_) c->observe(ctx);
     if (log_ != nullptr) log_->flush();

@@ -137,6 +137,7 @@ void VehiclePass::run(const EvaluationContext& ctx, kernel::ParallelFor& paralle
     const std::size_t stride = stories_.size();
     for (VehicleIndex i = 0; i < snapshot.size(); ++i) {
         const std::string& id = ids[i];
+        if (!gone_.empty() && std::binary_search(gone_.begin(), gone_.end(), id)) continue;
         Row& row = rows_[static_cast<std::size_t>(i)];
         std::uint8_t* const active = activeFlags_.data() + static_cast<std::size_t>(i) * stride;
         bool changed = false;

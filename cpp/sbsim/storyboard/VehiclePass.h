@@ -53,6 +53,9 @@ public:
     void vehicleLeft(const std::string& id, kernel::SimTime now);
     /// Evaluates every story for every vehicle of ctx's snapshot, on `parallel` where pure.
     void run(const EvaluationContext& ctx, kernel::ParallelFor& parallel);
+    /// Vehicles of this step's snapshot that run() leaves alone: a world story removed them from
+    /// SUMO in this step, right after SUMO inserted them (sorted; until the next call).
+    void setGone(std::vector<std::string> ids) { gone_ = std::move(ids); }
 
     bool isActive(const std::string& vehicle, const Story& story) const;
     /// Vehicles the pass keeps state for (effect stacks, activations): never more than are running.
@@ -102,6 +105,7 @@ private:
     EventLog* log_;
     ActivationObserver* observer_ = nullptr;
     kernel::SimTime now_;
+    std::vector<std::string> gone_;
     std::vector<Entry> stories_;
     std::vector<std::size_t> pureStories_;                    // indices into stories_
     std::vector<std::vector<ConditionResult>> precomputed_;   // per story (pure ones), per vehicle of the step

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 
+#include "sbsim/traffic/SumoRouteChecks.h"
+
 namespace sbsim::traffic {
 
 namespace {
@@ -56,8 +58,18 @@ void NetworkController::closeLane(const std::string& lane) {
     libsumo::Lane::setDisallowed(lane, std::vector<std::string>{"all"});
 }
 
+bool NetworkController::routeChecks() const { return sumoRouteChecks(); }
+void NetworkController::setRouteChecks(bool on) { setSumoRouteChecks(on); }
+
 std::vector<std::string> NetworkController::knownVehicles() const { return libsumo::Vehicle::getLoadedIDList(); }
 std::vector<std::string> NetworkController::loadedVehicles() const { return libsumo::Simulation::getLoadedIDList(); }
+std::vector<std::string> NetworkController::departedVehicles() const {
+    return libsumo::Simulation::getDepartedIDList();
+}
+bool NetworkController::routeValid(const std::string& vehicle) const { return libsumo::Vehicle::isRouteValid(vehicle); }
+bool NetworkController::routedBySumo(const std::string& vehicle) const {
+    return libsumo::Vehicle::getParameter(vehicle, "has.rerouting.device") == "true";
+}
 bool NetworkController::hasDeparted(const std::string& id) const {
     return libsumo::Vehicle::getDeparture(id) != libsumo::INVALID_DOUBLE_VALUE;
 }

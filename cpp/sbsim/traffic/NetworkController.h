@@ -41,12 +41,23 @@ public:
     virtual void setPermissions(const std::string& lane, const LanePermissions& recorded);
     /// Lets no vehicle class onto the lane.
     virtual void closeLane(const std::string& lane);
+    /// SUMO's route checks (see SumoRouteChecks.h): on, a vehicle SUMO cannot insert or route stops
+    /// the run; off, SUMO drops or inserts it with a warning.
+    virtual bool routeChecks() const;
+    virtual void setRouteChecks(bool on);
 
     /// Every vehicle SUMO knows: running, teleporting, or loaded and waiting to depart (route
     /// files load vehicles ahead of their departure; libsumo Vehicle::getLoadedIDList).
     virtual std::vector<std::string> knownVehicles() const;
     /// The vehicles SUMO loaded in the last step (libsumo Simulation::getLoadedIDList).
     virtual std::vector<std::string> loadedVehicles() const;
+    /// The vehicles SUMO inserted in the last step (libsumo Simulation::getDepartedIDList).
+    virtual std::vector<std::string> departedVehicles() const;
+    /// Whether SUMO finds the vehicle's route connected for its class (libsumo Vehicle::isRouteValid).
+    virtual bool routeValid(const std::string& vehicle) const;
+    /// Whether SUMO routes the vehicle itself (it has a rerouting device: a trip or a flow given
+    /// from/to, which SUMO routes when inserting it).
+    virtual bool routedBySumo(const std::string& vehicle) const;
     virtual bool hasVehicle(const std::string& id) const;
     virtual bool hasDeparted(const std::string& id) const;
     virtual std::vector<std::string> route(const std::string& vehicle) const;

@@ -40,6 +40,7 @@ public:
     void setStepLength(double seconds) { stepSeconds_ = seconds; }
 
     std::size_t running() const { return running_.size(); }
+    bool isRunning(const std::string& id) const { return running_.contains(id); }
 
     /// `id`'s max speed was changed by a command: it is read again at the next fill. Called by the
     /// VehicleControllers given this builder (through SumoBridge::maxSpeedListener()).

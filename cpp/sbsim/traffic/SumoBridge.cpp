@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 
 #include "sbsim/kernel/OneLine.h"
@@ -164,12 +165,23 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     if (&msg != &stepMessage_) return kernel::Module::handleMessage(msg);
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
+    // A vehicle a command removed since the last step (a world story's closure takes out one SUMO
+    // inserted in that step) arrived then: libsumo lists it until the step begins, then forgets it.
+    // (One removed before it departed never ran: it neither departs nor arrives.)
+    std::vector<std::string> removed = libsumo::Simulation::getArrivedIDList();
+    std::sort(removed.begin(), removed.end());
+    std::vector<std::string> arrived;
+    std::set_difference(removed.begin(), removed.end(), lastArrived_.begin(), lastArrived_.end(),
+                        std::back_inserter(arrived));
+    std::erase_if(arrived, [this](const std::string& id) { return !builder_.isRunning(id); });
     step();
     const Clock::time_point stepped = Clock::now();
     ++steps_;
     std::vector<std::string> departed = libsumo::Simulation::getDepartedIDList();
-    std::vector<std::string> arrived = libsumo::Simulation::getArrivedIDList();
+    lastArrived_ = libsumo::Simulation::getArrivedIDList();
     std::sort(departed.begin(), departed.end());
+    std::sort(lastArrived_.begin(), lastArrived_.end());
+    arrived.insert(arrived.end(), lastArrived_.begin(), lastArrived_.end());
     std::sort(arrived.begin(), arrived.end());
     builder_.addVehicles(departed);
     builder_.removeVehicles(arrived);

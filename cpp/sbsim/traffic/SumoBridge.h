@@ -127,6 +127,7 @@ private:
     kernel::Message stepMessage_{"sumo step"};
     kernel::Message endMessage_{"end of run"};
     SnapshotBuilder builder_;
+    std::vector<std::string> lastArrived_;  // libsumo's arrivals of the last step, sorted
     SnapshotColumns demanded_;
     VehicleSnapshot snapshot_;
     StderrCapture capture_;

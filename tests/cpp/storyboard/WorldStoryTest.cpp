@@ -30,6 +30,7 @@
 #include "sbsim/storyboard/effects/CloseRoadEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
+#include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::storyboard {
 namespace {
@@ -83,6 +84,14 @@ public:
         return out;
     }
     std::vector<std::string> loadedVehicles() const override { return loaded; }
+    std::vector<std::string> departedVehicles() const override { return departed; }
+    bool routeValid(const std::string& v) const override { return !broken.contains(v); }
+    bool routedBySumo(const std::string& v) const override { return trips.contains(v); }
+    bool routeChecks() const override { return checks; }
+    void setRouteChecks(bool on) override {
+        if (on != checks) log.push_back(on ? "checks on" : "checks off");
+        checks = on;
+    }
     bool hasVehicle(const std::string& id) const override { return cars.contains(id); }
     bool hasDeparted(const std::string& id) const override { return cars.at(id).index >= 0; }
     std::vector<std::string> route(const std::string& v) const override { return cars.at(v).route; }
@@ -143,6 +152,10 @@ public:
     std::map<std::string, std::vector<std::string>> routes;
     std::map<std::string, Light> lights;
     std::vector<std::string> loaded;
+    std::vector<std::string> departed;
+    std::set<std::string> broken;  // vehicles whose route SUMO finds disconnected
+    std::set<std::string> trips;   // vehicles SUMO routes itself
+    bool checks = true;            // SUMO's route checks (on unless --ignore-route-errors)
     std::vector<std::string> log;
 };
 
@@ -168,11 +181,17 @@ protected:
         snapshot.assign({}, SimTime::fromSeconds(t));
         board.update(snapshot, {});
         network->loaded.clear();
+        network->departed.clear();
     }
     void run(double from, double to) {
         for (double t = from; t <= to; t += 1) step(t);
     }
     void overlap(bool firstEndsFirst);
+
+public:
+    void runFrom(double from, double to) { run(from, to); }
+
+protected:
     std::vector<std::string> lines() {
         std::vector<std::string> lines;
         std::istringstream in(out.str());
@@ -266,6 +285,72 @@ TEST_F(WorldStoryTest, ReroutesRunningAndWaitingVehiclesAroundAClosedEdge) {
     network->loaded = {"free"};
     step(7);
     EXPECT_EQ(network->cars.at("free").route, (std::vector<std::string>{"a", "b", "d"}));
+}
+
+/// SUMO makes a flow's vehicle in the step it inserts it: with its route checks on, one whose trip
+/// the closure cut would stop the run inside that step, so they are off while any edge is closed.
+void routeChecksWhileClosed(WorldStoryTest& t, ModelNetwork& network, Storyboard& board, bool before) {
+    network.checks = before;
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "one"));
+    board.registerStory(world(window(3, 8), {closure({"b", "c"})}, "two"));
+    t.runFrom(1, 1);
+    EXPECT_EQ(network.checks, before);
+    t.runFrom(2, 8);
+    EXPECT_FALSE(network.checks) << "off while either closure is active";
+    EXPECT_EQ(std::count(network.log.begin(), network.log.end(), "checks off"), before ? 1 : 0) << "turned off once";
+    t.runFrom(9, 9);
+    EXPECT_EQ(network.checks, before) << "back as they were after the last";
+}
+
+TEST_F(WorldStoryTest, RouteChecksAreOffWhileAnEdgeIsClosed) { routeChecksWhileClosed(*this, *network, board, true); }
+TEST_F(WorldStoryTest, RouteChecksTheUserTurnedOffStayOff) { routeChecksWhileClosed(*this, *network, board, false); }
+
+TEST_F(WorldStoryTest, AVehicleSumoInsertedInTheStepThatMadeItIsRemovedIfTheClosureCutItsTrip) {
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "close"));
+    run(1, 2);
+    // A flow's vehicles, made and inserted by SUMO in step 3: on their first edge, not moved yet.
+    network->cars["to-b"] = {{"a", "b"}, 0};             // a trip SUMO could not route: the route it had
+    network->cars["through-b"] = {{"a", "b", "d"}, 0};   // a fixed route with a way around
+    network->loaded = {"to-b", "through-b", "dropped"};  // SUMO dropped the last one: its first edge was b
+    network->departed = {"to-b", "through-b"};
+    testing::internal::CaptureStderr();
+    step(3);
+    const std::string warnings = testing::internal::GetCapturedStderr();
+    EXPECT_NE(warnings.find("vehicle 'to-b' removed in the step SUMO made and inserted it"), std::string::npos);
+    EXPECT_NE(warnings.find("vehicle 'dropped' removed before it departed: SUMO dropped it"), std::string::npos);
+    EXPECT_FALSE(network->cars.contains("to-b"));
+    EXPECT_EQ(network->cars.at("through-b").route, (std::vector<std::string>{"a", "c", "d"}));
+    // One whose route is broken for another reason ends the run, as SUMO's check would have.
+    network->cars["broken"] = {{"a", "d"}, 0};
+    network->broken = {"broken"};
+    network->departed = {"broken"};
+    EXPECT_THROW(step(4), traffic::SumoError);
+}
+
+TEST_F(WorldStoryTest, ATripSumoCouldNotRouteOnlyBecauseOfTheClosureIsRemoved) {
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "close"));
+    run(1, 2);
+    // SUMO found no way from a to d for these (all crossed b), so each keeps the route it had.
+    network->cars["trip"] = {{"a", "d"}, 0};
+    network->cars["fixed"] = {{"a", "d"}, 0};
+    network->broken = {"trip", "fixed"};
+    network->trips = {"trip"};
+    network->departed = {"trip"};
+    step(3);
+    EXPECT_FALSE(network->cars.contains("trip"));
+    EXPECT_EQ(network->lanePermissions.at("b_0"), (LanePermissions{{}, {"all"}})) << "closed again after the question";
+    network->departed = {"fixed"};  // a fixed route SUMO would have refused anyway
+    EXPECT_THROW(step(4), traffic::SumoError);
+}
+
+TEST_F(WorldStoryTest, ASpawnDuringAClosureIsCheckedAsSumoChecksWithNoEdgeClosed) {
+    board.registerStory(world(window(2, 5), {closure({"b"})}, "close"));
+    board.registerStory(
+        world(window(3, 3), {std::make_shared<SpawnEffect>(SpawnEffect::Spec{"v", {"a", "c"}})}, "spawn"));
+    run(1, 3);
+    EXPECT_TRUE(network->cars.contains("v"));
+    EXPECT_EQ(network->log.end()[-3], "checks on") << "SUMO checks the new vehicle's route";
+    EXPECT_EQ(network->log.end()[-1], "checks off") << "and the closure has them off again";
 }
 
 TEST_F(WorldStoryTest, UnknownEdgeIsAStoryErrorNamingStoryEffectAndTime) {

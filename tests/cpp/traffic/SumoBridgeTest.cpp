@@ -14,6 +14,7 @@
 #include "TestPrinters.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/traffic/SumoBridge.h"
+#include "sbsim/traffic/SumoRouteChecks.h"
 
 namespace sbsim::test {
 namespace {
@@ -131,6 +132,20 @@ TEST(SumoBridge, UserOptionsOverrideTheDefaults) {
     settings.extraOptions = {"--no-step-log", "true", "--no-warnings", "true"};
     SumoBridge bridge(settings);
     EXPECT_NO_THROW(bridge.load());
+}
+
+/// The switch sbsim turns off during closures is the one SUMO sets from --ignore-route-errors.
+TEST(SumoBridge, RouteChecksAreSumosOwnSwitch) {
+    for (const bool ignore : {false, true, false}) {
+        traffic::SumoSettings settings = scenarioSettings();
+        if (ignore) settings.extraOptions = {"--ignore-route-errors", "true"};
+        SumoBridge bridge(settings);
+        bridge.load();
+        EXPECT_EQ(libsumo::Simulation::getOption("ignore-route-errors"), ignore ? "true" : "false");
+        EXPECT_EQ(traffic::sumoRouteChecks(), !ignore);
+        traffic::setSumoRouteChecks(ignore);
+        EXPECT_EQ(traffic::sumoRouteChecks(), ignore);
+    }
 }
 
 struct EndCase {

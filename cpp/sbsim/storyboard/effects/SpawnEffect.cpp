@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sbsim/storyboard/CheckContext.h"
+#include "sbsim/storyboard/NetworkStack.h"
 
 namespace sbsim::storyboard {
 
@@ -48,7 +49,17 @@ void SpawnEffect::apply(WorldScope& scope) {
     if (spec_.position) spawn.departPos = *spec_.position;
     if (spec_.speed) spawn.departSpeed = *spec_.speed;
     network.addRoute(spawn.routeId, edges);
-    network.addVehicle(spawn);
+    // SUMO checks the route as it would with no edge closed: one SUMO refuses (through a closed
+    // edge, or not connected) stays an error while a closure has SUMO's route checks off.
+    const bool checks = network.routeChecks();
+    network.setRouteChecks(scope.stack().routeChecksOutsideClosures());
+    try {
+        network.addVehicle(spawn);
+    } catch (...) {
+        network.setRouteChecks(checks);
+        throw;
+    }
+    network.setRouteChecks(checks);
 }
 
 std::string SpawnEffect::describe() const {

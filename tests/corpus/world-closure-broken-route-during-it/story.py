@@ -1,0 +1,5 @@
+import storyboard as sb
+
+
+def createStories(board):
+    board.registerStory(sb.WorldStory(sb.TimeCondition(5, 79), [sb.CloseRoadEffect(["B1C1"])], name="closure"))
