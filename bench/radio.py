@@ -14,7 +14,9 @@ busy ratio is the mean of those senders' CBR at their transmissions.
 `--scale PRESET` instead times the grid benchmark (tools/make_grid.py presets, e.g. bench5k) with
 every vehicle beaconing at 10 Hz: plain `sumo`, sbsim whose beacons never send (the floor: the
 radio's share is what the others cost above it), sbsim with the disc model and sbsim with the
-channel model (defaults), interleaved runs, medians, receptions per second of wall time.
+channel model (defaults), interleaved runs, medians, receptions per second of wall time; with
+`--ca` also every vehicle running Artery's CaService (EN 302 637-2 rules) on both models, beside
+the beacon rows: CAMs sent, receptions and CPU µs per reception above the silent floor.
 """
 
 from __future__ import annotations
@@ -248,10 +250,12 @@ def plot(curves: list[dict], path: Path) -> None:
     fig.savefig(path, dpi=120)
 
 
-def scale(preset: str, end: float, runs: int, threads: int, floor_dbm: list[float]) -> None:
+def scale(preset: str, end: float, runs: int, threads: int, floor_dbm: list[float], ca: bool = False) -> None:
     cfg = scenario(preset)
     services = cfg.parent / "beacon.services.xml"
     services.write_text('<services><service type="Beacon" interval="0.1" bytes="190"/></services>\n')
+    ca_services = cfg.parent / "ca.services.xml"
+    ca_services.write_text('<services><service type="artery.application.CaService"/></services>\n')
     # The floor: the same services, never sending (SUMO, snapshot, middleware triggers only).
     silent = cfg.parent / "silent.services.xml"
     silent.write_text('<services><service type="Beacon" interval="1e9" bytes="190"/></services>\n')
@@ -267,21 +271,34 @@ def scale(preset: str, end: float, runs: int, threads: int, floor_dbm: list[floa
     for floor in floor_dbm:
         name = "sbsim channel" + ("" if floor == -105 else f" floor {floor:g} dBm")
         commands[name] = [*base, "--radio", str(defaults), "--param", f"radio_interference_floor_dbm={floor:g}"]
-    print(f"{preset}, {end:g} s simulated, every vehicle beaconing at 10 Hz, {runs} runs each, interleaved")
+    if ca:
+        # Artery's CA service (EN 302 637-2 rules) on every vehicle instead of the 10 Hz beacon.
+        with_ca = [str(ca_services) if arg == str(services) else arg for arg in base]
+        commands["sbsim CaService disc"] = with_ca
+        commands["sbsim CaService channel"] = [*with_ca, "--radio", str(defaults)]
+    what = "beaconing at 10 Hz" + (" or running the CaService" if ca else "")
+    print(f"{preset}, {end:g} s simulated, every vehicle {what}, {runs} runs each, interleaved")
     results = alternate(commands, runs)
-    print(f"\n{'command':<36} {'wall s':>8} {'cpu s':>8} {'x sumo':>7} {'delivered':>11} {'rx/s wall':>10}")
+    floor_cpu = median([r.cpu for r in results["sbsim beacons silent"]])
+    print(
+        f"\n{'command':<36} {'wall s':>8} {'cpu s':>8} {'x sumo':>7} {'sent':>10} {'delivered':>11} "
+        f"{'rx/s wall':>10} {'µs cpu/rx':>10}"
+    )
     for name, rs in results.items():
         wall = median([r.wall for r in rs])
         cpu = median([r.cpu for r in rs])
         ratio = paired_ratio(results, name)[0] if name != "sumo" else 1.0
-        delivered = ""
-        rate = ""
+        sent = delivered = rate = per = ""
         for line in rs[0].stdout.splitlines():
-            m = re.fullmatch(r"messages Beacon: sent (\d+), delivered (\d+)", line.strip())
+            m = re.fullmatch(r"messages (Beacon|CAM): sent (\d+), delivered (\d+)", line.strip())
             if m:
-                delivered = m.group(2)
-                rate = f"{int(m.group(2)) / wall:,.0f}"
-        print(f"{name:<36} {wall:8.2f} {cpu:8.2f} {ratio:7.2f} {delivered:>11} {rate:>10}")
+                sent, delivered = m.group(2), m.group(3)
+                rate = f"{int(delivered) / wall:,.0f}"
+                # The CPU above the silent floor (SUMO, snapshot, triggers), per reception.
+                per = f"{1e6 * (cpu - floor_cpu) / int(delivered):.2f}" if int(delivered) else ""
+        print(f"{name:<36} {wall:8.2f} {cpu:8.2f} {ratio:7.2f} {sent:>10} {delivered:>11} {rate:>10} {per:>10}")
+    load = os.getloadavg()
+    print(f"\nload average after the runs: {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} ({os.cpu_count()} CPUs)")
 
 
 def main() -> None:
@@ -304,9 +321,12 @@ def main() -> None:
     parser.add_argument(
         "--floor", type=float, nargs="+", default=[-105.0], help="--scale: interference floors to time (dBm)"
     )
+    parser.add_argument(
+        "--ca", action="store_true", help="--scale: also every vehicle running the CaService (disc and channel model)"
+    )
     args = parser.parse_args()
     if args.scale:
-        scale(args.scale, args.end, args.runs, args.threads, args.floor)
+        scale(args.scale, args.end, args.runs, args.threads, args.floor, args.ca)
         return
 
     folder = ROOT / "bench" / "out" / "radio"

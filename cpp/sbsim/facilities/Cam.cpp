@@ -5,6 +5,7 @@
 namespace sbsim::facilities {
 
 std::size_t Cam::byteSize() const {
+    if (content_.stationType == StationType::RoadSideUnit) return kRoadSideUnitBytes;
     std::size_t bytes = kHighFrequencyBytes;
     if (content_.lowFrequency) bytes += 4 + 7 * content_.lowFrequency->pathHistory.size();
     return bytes;

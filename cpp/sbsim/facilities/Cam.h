@@ -49,11 +49,14 @@ public:
     /// The ASN.1 UPER encoding's size, from the fields' widths rounded up to bytes: ITS PDU header
     /// (6), generation delta time (2), basic container (15), high-frequency container (22); the
     /// low-frequency container adds role and lights (3), its list length (1) and 7 per path point.
+    /// A roadside unit's CAM has the RSU high-frequency container instead, without protected
+    /// zones (1): kRoadSideUnitBytes.
     std::size_t byteSize() const override;
     void store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const override;
     void dispatch(ItsMessageHandler& handler) const override { handler.indicateCam(*this); }
 
     static constexpr std::size_t kHighFrequencyBytes = 45;
+    static constexpr std::size_t kRoadSideUnitBytes = 24;
 
 private:
     CamContent content_;

@@ -6,27 +6,27 @@ namespace sbsim::facilities {
 
 void LocalDynamicMap::update(const CamContent& cam, kernel::SimTime now) {
     if (cam.generationTime + kLifetime < now) return;
-    auto it = entries_.find(cam.station);
+    const auto it = entries_.find(cam.station);
     if (it == entries_.end()) {
-        it = entries_.emplace(cam.station, Entry{cam, now}).first;
+        const auto added = entries_.emplace(cam.station, Entry{cam, now}).first;
+        due_.emplace(added->second.expiry(), cam.station);
     } else if (it->second.cam.generationTime <= cam.generationTime) {
         it->second.cam = cam;  // assigned in place: the strings and path history reuse their storage
         it->second.receivedAt = now;
-    } else {
-        return;
     }
-    earliestExpiry_ = std::min(earliestExpiry_, it->second.expiry());
 }
 
 void LocalDynamicMap::dropExpired(kernel::SimTime now) {
-    if (!(earliestExpiry_ < now)) return;
-    earliestExpiry_ = kernel::SimTime::max();
-    for (auto it = entries_.begin(); it != entries_.end();) {
+    while (!due_.empty() && due_.top().first < now) {
+        Due item = due_.top();
+        due_.pop();
+        const auto it = entries_.find(item.second);
+        if (it == entries_.end()) continue;
         if (it->second.expiry() < now) {
-            it = entries_.erase(it);
+            entries_.erase(it);
         } else {
-            earliestExpiry_ = std::min(earliestExpiry_, it->second.expiry());
-            ++it;
+            item.first = it->second.expiry();
+            due_.push(std::move(item));
         }
     }
 }

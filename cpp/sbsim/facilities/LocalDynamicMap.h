@@ -3,8 +3,11 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <queue>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "sbsim/facilities/Cam.h"
 #include "sbsim/kernel/Export.h"
@@ -43,9 +46,12 @@ public:
 
 private:
     std::map<std::string, Entry, std::less<>> entries_;
-    // No entry expires before this (a lower bound: a CAM only moves its sender's expiry later), so
-    // dropExpired() walks the map about once per lifetime instead of on every trigger.
-    kernel::SimTime earliestExpiry_ = kernel::SimTime::max();
+    // One item per entry, keyed by an expiry at or before the entry's (a CAM only moves its
+    // sender's expiry later): dropExpired() pops what is due and erases the entry, or queues it
+    // again at its later expiry. So each entry is visited about once per lifetime, not the whole
+    // map on every trigger (with hundreds of neighbours some entry is always about to expire).
+    using Due = std::pair<kernel::SimTime, std::string>;
+    std::priority_queue<Due, std::vector<Due>, std::greater<>> due_;
 };
 
 }  // namespace sbsim::facilities

@@ -164,6 +164,17 @@ void ChannelMedium::refreshStations() {
         x_[s] = positions(0, i);
         y_[s] = positions(1, i);
     }
+    // Stationary stations stay where they are; they are stations once their module exists.
+    const FixedStations& fixed = fixedStations();
+    for (FixedStations::Index k = 0; k < fixed.size(); ++k) {
+        const std::string& id = fixed.ids()[k];
+        if (slotOf_.count(id) == 0 && receiverOf(id) == nullptr) continue;
+        const Slot s = stationOf(id);
+        present_[s] = 1;
+        receiver_[s] = receivingSide(id);
+        x_[s] = fixed.positions()(0, k);
+        y_[s] = fixed.positions()(1, k);
+    }
     // A station that left keeps its slot (frames may still be on the air) but not its
     // neighbourhood: a long run sees tens of thousands of vehicles.
     for (Slot s = 0; s < static_cast<Slot>(near_.size()); ++s) {
@@ -178,12 +189,15 @@ void ChannelMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMess
     stamp(*message, sender);
     refreshStations();
     const auto index = snapshot_.indexOf(sender);
-    if (!index) return;  // not on the road (yet): nobody hears it
+    const auto fixed = index ? std::nullopt : fixedStations().indexOf(sender);
+    if (!index && !fixed) return;  // not on the road (yet): nobody hears it
     const Slot s = stationOf(sender);
     if (!present_[s]) {
         present_[s] = 1;  // a station whose directory entry appeared after the last refresh
-        x_[s] = snapshot_.positions()(0, *index);
-        y_[s] = snapshot_.positions()(1, *index);
+        const Eigen::Vector2d at =
+            index ? Eigen::Vector2d(snapshot_.positions().col(*index)) : fixedStations().positions().col(*fixed);
+        x_[s] = at.x();
+        y_[s] = at.y();
     }
     std::shared_ptr<const V2xMessage> shared(std::move(message));
     if (queue_[s].size() >= settings_.queueLimit) {
@@ -323,11 +337,23 @@ void ChannelMedium::computeNeighbourhood(Slot s) {
     Neighbourhood& near = near_[s];
     near.at = refreshedAt_;
     near.receivers.clear();
-    if (const auto index = snapshot_.indexOf(ids_[s])) {
-        // The grid's order (by cell, then vehicle index) is the same whatever the thread count,
-        // so the receivers need no sorting.
-        grid_.forEachWithin(*index, cutoff_, [&](traffic::VehicleSnapshot::Index j) {
-            if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
+    const auto index = snapshot_.indexOf(ids_[s]);
+    // The grid's order (by cell, then vehicle index) is the same whatever the thread count,
+    // so the receivers need no sorting; the stationary stations follow in their own order.
+    const auto take = [&](traffic::VehicleSnapshot::Index j) {
+        if (const Slot r = slotOfIndex_[j]; r >= 0 && r != s) near.receivers.push_back(r);
+    };
+    const FixedStations& fixed = fixedStations();
+    const auto fixedSelf = index ? std::nullopt : fixed.indexOf(ids_[s]);
+    if (index) {
+        grid_.forEachWithin(*index, cutoff_, take);
+    } else if (fixedSelf) {
+        grid_.forEachAround(x_[s], y_[s], cutoff_, take);
+    }
+    if ((index || fixedSelf) && !fixed.empty()) {
+        fixed.forEachWithin({x_[s], y_[s]}, cutoff_, fixedSelf, [&](FixedStations::Index k, double) {
+            const auto it = slotOf_.find(fixed.ids()[k]);
+            if (it != slotOf_.end() && present_[it->second]) near.receivers.push_back(it->second);
         });
     }
     const std::size_t n = near.receivers.size();

@@ -37,8 +37,10 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     if (!message) throw std::invalid_argument("cannot send a null V2X message");
     stamp(*message, sender);
 
+    const FixedStations& fixed = fixedStations();
     const auto self = snapshot_.indexOf(sender);
-    if (!self) return;  // not on the road (yet): nobody hears it
+    const auto fixedSelf = self ? std::nullopt : fixed.indexOf(sender);
+    if (!self && !fixedSelf) return;  // not on the road (yet): nobody hears it
     if (gridTime_ != snapshot_.time()) {
         grid_.build(snapshot_, settings_.range);
         gridTime_ = snapshot_.time();
@@ -53,6 +55,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     }
     const std::shared_ptr<const V2xMessage> shared(std::move(message));
     const auto& positions = snapshot_.positions();
+    const Eigen::Vector2d from = self ? Eigen::Vector2d(positions.col(*self)) : fixed.positions().col(*fixedSelf);
     const kernel::SimTime now = simTime();
     if (trace() != nullptr) {
         TraceLine line;
@@ -61,8 +64,8 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         line.message = shared.get();
         line.station = sender;
         line.seq = shared->sequence();
-        line.x = positions(0, *self);
-        line.y = positions(1, *self);
+        line.x = from.x();
+        line.y = from.y();
         trace()->record(line, now);
     }
     // With a trace, stations out to the trace range are visited too (to report them out of range);
@@ -71,27 +74,8 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     std::vector<std::string> stations;
     Counts* counts = countsOf(*shared);
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
-    Neighbourhood& near = near_[*self];
-    if (!near.known || near.radius != radius) {
-        near.others = grid_.within(*self, radius);
-        near.distance.resize(near.others.size());
-        near.bin.resize(near.others.size());
-        for (std::size_t k = 0; k < near.others.size(); ++k) {
-            near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
-            near.bin[k] = static_cast<std::uint32_t>(near.distance[k] / kDistanceBin);
-        }
-        near.known = true;
-        near.radius = radius;
-    }
-    for (std::size_t k = 0; k < near.others.size(); ++k) {
-        const auto other = near.others[k];
-        if (!receiverKnown_[other]) {
-            receivers_[other] = receivingSide(snapshot_.ids()[other]);
-            receiverKnown_[other] = 1;
-        }
-        Receiver* receiver = receivers_[other];
-        if (receiver == nullptr) continue;  // a vehicle without services
-        const double distance = near.distance[k];
+    const auto consider = [&](Receiver* receiver, const std::string& station, double distance) {
+        if (receiver == nullptr) return;  // a vehicle without services
         const double p = receptionProbability(distance);
         std::optional<LossReason> loss;
         if (distance > settings_.range) {
@@ -100,22 +84,13 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             // Draw only where loss is possible, so a lossless medium consumes no random numbers.
             loss = LossReason::Fade;
         }
-        if (distance <= settings_.range && counts != nullptr) {
-            // Medium::countLink inline, with the bin computed once per step: this runs per link.
-            const std::uint32_t bin = near.bin[k];
-            if (counts->linkStations.size() <= bin) {
-                counts->linkStations.resize(bin + 1);
-                counts->linkReceptions.resize(bin + 1);
-            }
-            ++counts->linkStations[bin];
-            if (!loss) ++counts->linkReceptions[bin];
-        }
+        if (distance <= settings_.range && counts != nullptr) countLink(*counts, distance, !loss);
         if (trace() != nullptr && (!loss || distance <= settings_.traceRange)) {
             TraceLine line;
             line.event = loss ? TraceLine::Event::Lost : TraceLine::Event::Rx;
             line.t = loss ? now : now + settings_.latency;
             line.message = shared.get();
-            line.station = snapshot_.ids()[other];
+            line.station = station;
             line.sender = sender;
             line.seq = shared->sequence();
             line.distance = distance;
@@ -125,9 +100,40 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
         if (!loss) {
             receivers.push_back(receiver);
-            stations.push_back(snapshot_.ids()[other]);
+            stations.push_back(station);
+        }
+    };
+    const auto vehicleReceiver = [&](traffic::VehicleSnapshot::Index other) {
+        if (!receiverKnown_[other]) {
+            receivers_[other] = receivingSide(snapshot_.ids()[other]);
+            receiverKnown_[other] = 1;
+        }
+        return receivers_[other];
+    };
+    // Vehicles first, ascending, then the stationary stations in the order they were added.
+    if (self) {
+        Neighbourhood& near = near_[*self];
+        if (!near.known || near.radius != radius) {
+            near.others = grid_.within(*self, radius);
+            near.distance.resize(near.others.size());
+            for (std::size_t k = 0; k < near.others.size(); ++k)
+                near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
+            near.known = true;
+            near.radius = radius;
+        }
+        for (std::size_t k = 0; k < near.others.size(); ++k) {
+            const auto other = near.others[k];
+            consider(vehicleReceiver(other), snapshot_.ids()[other], near.distance[k]);
+        }
+    } else {
+        // A roadside unit sends about once a second: its neighbours are looked up afresh.
+        for (const auto other : grid_.around(from.x(), from.y(), radius)) {
+            consider(vehicleReceiver(other), snapshot_.ids()[other], (positions.col(other) - from).norm());
         }
     }
+    fixed.forEachWithin(from, radius, fixedSelf, [&](FixedStations::Index k, double distance) {
+        consider(receivingSide(fixed.ids()[k]), fixed.ids()[k], distance);
+    });
     deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
 }
 

@@ -56,7 +56,6 @@ private:
         double radius = 0;
         std::vector<traffic::NeighbourGrid::Index> others;
         std::vector<double> distance;
-        std::vector<std::uint32_t> bin;  // distance / kDistanceBin, for the link counts
     };
     std::vector<Neighbourhood> near_;
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()

@@ -11,6 +11,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/radio/FixedStations.h"
 #include "sbsim/radio/MessageTrace.h"
 #include "sbsim/radio/V2xMessage.h"
 
@@ -59,6 +60,12 @@ public:
 
     const std::map<std::string, Counts, std::less<>>& counts() const { return counts_; }
 
+    /// Makes `id` a stationary station (a roadside unit) at `position`: it sends and receives like a
+    /// vehicle of the snapshot, through the directory's module for `id`. Throws
+    /// std::invalid_argument for an id already taken, or a position that is not finite.
+    void addFixedStation(std::string id, const Eigen::Vector2d& position) { fixed_.add(std::move(id), position); }
+    const FixedStations& fixedStations() const { return fixed_; }
+
     /// Reports every transmission, reception and (within the medium's trace range) loss to
     /// `trace` from now on; null: none. The trace must outlive the run.
     void setTrace(MessageTrace* trace) { trace_ = trace; }
@@ -87,6 +94,7 @@ private:
     std::map<std::string, Counts, std::less<>> counts_;
     std::unordered_map<std::string, std::uint64_t> sequences_;  // next per sender
     MessageTrace* trace_ = nullptr;
+    FixedStations fixed_;
 };
 
 }  // namespace sbsim::radio

@@ -1,6 +1,7 @@
 #include "sbsim/services/ServiceManager.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -19,9 +20,13 @@ ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval,
       snapshot_(snapshot),
       registry_(&registry) {
     if (interval_ <= kernel::SimTime::zero()) throw std::invalid_argument("the middleware interval must be > 0 s");
-    for (const ServiceSpec& spec : config_.services()) {
+    const auto check = [](const ServiceSpec& spec) {
         // Fail before the run, naming the line, rather than at the first matching departure.
         if (!ServiceRegistry::instance().contains(spec.type)) (void)ServiceRegistry::instance().create(spec.type);
+    };
+    for (const ServiceSpec& spec : config_.services()) check(spec);
+    for (const RoadsideUnitSpec& rsu : config_.roadsideUnits()) {
+        for (const ServiceSpec& spec : rsu.services) check(spec);
     }
 }
 
@@ -30,6 +35,58 @@ ServiceManager::~ServiceManager() = default;
 void ServiceManager::initialize() {
     simulation().subscribe(traffic::StoryboardSignal::id, *this);
     scheduleAt(interval_ * (simTime() / interval_ + 1), triggerTimer_);
+    makeRoadsideUnits();
+}
+
+void ServiceManager::makeRoadsideUnits() {
+    const auto where = [](const RoadsideUnitSpec& spec) {
+        return spec.source + ":" + std::to_string(spec.line) + ": ";
+    };
+    std::optional<std::vector<traffic::SumoPois::Poi>> pois;  // asked for once, if a unit names a type
+    for (const RoadsideUnitSpec& spec : config_.roadsideUnits()) {
+        if (!spec.poiType) {
+            makeRoadsideUnit(spec, spec.id, {spec.x, spec.y});
+            continue;
+        }
+        if (!pois) pois = pois_();
+        std::size_t made = 0;
+        std::vector<std::string> types;
+        for (const traffic::SumoPois::Poi& poi : *pois) {
+            if (poi.type == *spec.poiType) {
+                makeRoadsideUnit(spec, poi.id, poi.position);
+                ++made;
+            } else if (std::find(types.begin(), types.end(), poi.type) == types.end()) {
+                types.push_back(poi.type);
+            }
+        }
+        if (made == 0) {
+            throw ServicesConfigError(
+                where(spec) + fmt::format("<rsu poiType=\"{}\">: SUMO has no POI of that type ({})", *spec.poiType,
+                                          types.empty()
+                                              ? std::string("it loaded no POIs: they come from <poi> "
+                                                            "elements in the sumocfg's additional-files")
+                                              : "its POI types: " + fmt::format("{}", fmt::join(types, ", "))));
+        }
+    }
+}
+
+void ServiceManager::makeRoadsideUnit(const RoadsideUnitSpec& spec, const std::string& id,
+                                      const Eigen::Vector2d& position) {
+    if (!roadsideUnitIds_.emplace(id, &spec).second) {
+        throw ServicesConfigError(spec.source + ":" + std::to_string(spec.line) + ": two roadside units are called '" +
+                                  id + "'");
+    }
+    auto& middleware = simulation().emplaceModule<Middleware>(*this, id);
+    middleware.setFixedPosition(position);
+    roadsideUnits_.push_back(&middleware);
+    middlewares_[id] = &middleware;  // the medium finds a station's receiving side here
+    if (medium_ != nullptr) medium_->addFixedStation(id, position);
+    for (const ServiceSpec& serviceSpec : spec.services) {
+        std::unique_ptr<Service> service = ServiceRegistry::instance().create(serviceSpec.type);
+        middleware.host(*service, serviceSpec);
+        simulation().addModule(std::move(service));
+        ++servicesCreated_;
+    }
 }
 
 void ServiceManager::handleMessage(kernel::Message& msg) {
@@ -38,6 +95,7 @@ void ServiceManager::handleMessage(kernel::Message& msg) {
     // Index loop: services may not end vehicles, but the list must not be walked by iterator
     // across anything that could grow it.
     for (std::size_t i = 0; i < departureOrder_.size(); ++i) departureOrder_[i]->trigger();
+    for (Middleware* rsu : roadsideUnits_) rsu->trigger();
 }
 
 void ServiceManager::listenToAllSignals(Service& service) {
@@ -100,6 +158,11 @@ void ServiceManager::receiveSignal(kernel::Module&, kernel::SignalId id, const k
 }
 
 void ServiceManager::depart(const std::string& id) {
+    if (const auto rsu = roadsideUnitIds_.find(id); rsu != roadsideUnitIds_.end()) {
+        // One station id, two stations: the medium and the facilities could not tell them apart.
+        throw ServicesConfigError(fmt::format("{}:{}: roadside unit '{}' has the id of a vehicle departing at t={} s",
+                                              rsu->second->source, rsu->second->line, id, simTime().str()));
+    }
     const auto index = snapshot_.indexOf(id);
     const std::string type = index ? snapshot_.typeId(*index) : std::string();
     const bool equipped = penetration_.equipped(id);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -16,6 +17,7 @@
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/SnapshotColumns.h"
+#include "sbsim/traffic/SumoPois.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::services {
@@ -23,7 +25,9 @@ namespace sbsim::services {
 /// Gives each departing vehicle a middleware with the services its filters select, removes them
 /// when it arrives, triggers all services every interval — on the interval's grid, vehicles in
 /// departure order, one kernel event for all — and routes storyboard signals to the ego vehicle's
-/// services (and to services listening to all). Attach it to the SUMO bridge.
+/// services (and to services listening to all). Attach it to the SUMO bridge. The services
+/// file's roadside units are made at initialize(): a middleware at a fixed position each, a
+/// stationary station of the medium, triggered after the vehicles.
 class SBSIM_API ServiceManager : public kernel::Module, private kernel::Listener {
 public:
     /// Vehicles are commanded through `registry`, shared with the storyboard; `snapshot` is the
@@ -52,6 +56,11 @@ public:
     /// the services whose filters ask for them (<equipped match="inverse"/> or "any").
     void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
 
+    /// Where roadside units with a `poiType` find their POIs (default: the loaded SUMO's).
+    void setPoiSource(std::function<std::vector<traffic::SumoPois::Poi>()> source) { pois_ = std::move(source); }
+    /// The roadside units made so far (at initialize()).
+    std::size_t roadsideUnits() const { return roadsideUnits_.size(); }
+
     kernel::SimTime interval() const { return interval_; }
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     radio::Medium& medium() const;
@@ -60,8 +69,9 @@ public:
     std::size_t servicesCreated() const { return servicesCreated_; }
     /// Storyboard signals fired for a vehicle that has no services (the first is warned of).
     std::size_t signalsWithoutServices() const { return signalsWithoutServices_; }
-    /// Vehicles with a middleware now (each running vehicle its filters selected).
-    std::size_t middlewares() const { return middlewares_.size(); }
+    /// Vehicles with a middleware now (each running vehicle its filters selected; roadside units
+    /// not counted).
+    std::size_t middlewares() const { return middlewares_.size() - roadsideUnits_.size(); }
 
     void initialize() override;
     void handleMessage(kernel::Message& msg) override;
@@ -70,6 +80,8 @@ private:
     void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
     void receiveSignal(kernel::Module& source, kernel::SignalId id, const kernel::Object& value) override;
     void depart(const std::string& id);
+    void makeRoadsideUnits();
+    void makeRoadsideUnit(const RoadsideUnitSpec& spec, const std::string& id, const Eigen::Vector2d& position);
     void arrive(const std::string& id);
 
     ServicesConfig config_;
@@ -80,6 +92,9 @@ private:
     traffic::Penetration penetration_;
     std::unordered_map<std::string, Middleware*> middlewares_;
     std::vector<Middleware*> departureOrder_;
+    std::vector<Middleware*> roadsideUnits_;  // in the services file's order
+    std::unordered_map<std::string, const RoadsideUnitSpec*> roadsideUnitIds_;
+    std::function<std::vector<traffic::SumoPois::Poi>()> pois_ = &traffic::SumoPois::all;
     kernel::Message triggerTimer_{"service trigger"};
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;

@@ -313,9 +313,67 @@ ServiceSpec parseService(const XMLElement& element, const std::string& source, I
     return spec;
 }
 
-// A file's elements under its root `rootName`, each a `childName` read like a <service>.
+// A coordinate attribute: a finite number.
+double coordinate(const std::string& value, std::string_view name, const std::string& source, int line) {
+    const std::string_view text = trimmed(value);
+    double out = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(out)) {
+        fail(source, line, "attribute '" + std::string(name) + "' of <rsu> must be a number, got '" + value + "'");
+    }
+    return out;
+}
+
+// <rsu id x y> or <rsu poiType>, with its <service> children (no filters: they run on the unit).
+RoadsideUnitSpec parseRoadsideUnit(const XMLElement& element, const std::string& source, Ignored& ignored) {
+    RoadsideUnitSpec rsu;
+    rsu.source = source;
+    rsu.line = element.GetLineNum();
+    std::optional<double> x, y;
+    bool hasId = false;
+    for (const auto& [key, value] : attributesOf(element)) {
+        if (key == "id") {
+            if (trimmed(value).empty()) fail(source, rsu.line, "<rsu> has an empty 'id'");
+            rsu.id = value;
+            hasId = true;
+        } else if (key == "x") {
+            x = coordinate(value, key, source, rsu.line);
+        } else if (key == "y") {
+            y = coordinate(value, key, source, rsu.line);
+        } else if (key == "poiType") {
+            if (trimmed(value).empty()) fail(source, rsu.line, "<rsu> has an empty 'poiType'");
+            rsu.poiType = value;
+        } else {
+            fail(source, rsu.line, "unexpected attribute '" + key + "' on <rsu> (expected id, x and y, or poiType)");
+        }
+    }
+    if (rsu.poiType) {
+        if (hasId || x || y)
+            fail(source, rsu.line, "an <rsu> with 'poiType' takes its id and position from each POI: no id, x or y");
+    } else if (!hasId || !x || !y) {
+        fail(source, rsu.line, "an <rsu> needs 'id', 'x' and 'y' (or 'poiType' for every SUMO POI of that type)");
+    } else {
+        rsu.x = *x;
+        rsu.y = *y;
+    }
+    rejectText(element, source);
+    for (const XMLElement* child = element.FirstChildElement(); child; child = child->NextSiblingElement()) {
+        if (std::string_view(child->Name()) != "service") {
+            fail(source, child->GetLineNum(), "unexpected element " + tag(*child) + " in <rsu> (expected <service>)");
+        }
+        ServiceSpec spec = parseService(*child, source, ignored);
+        if (!spec.filters.empty() || spec.equipment != ServiceSpec::Equipment::Equipped)
+            fail(source, spec.line, "a roadside unit's <service> takes no <filters>: it runs on the unit");
+        rsu.services.push_back(std::move(spec));
+    }
+    if (rsu.services.empty()) fail(source, rsu.line, "<rsu> has no <service>");
+    return rsu;
+}
+
+// A file's elements under its root `rootName`, each a `childName` read like a <service>; with
+// `roadsideUnits`, <rsu> elements too.
 std::vector<ServiceSpec> readSpecs(std::string_view text, const std::string& source, std::string_view rootName,
-                                   std::string_view childName) {
+                                   std::string_view childName, std::vector<RoadsideUnitSpec>* roadsideUnits = nullptr) {
     // tinyxml2 reads a C string: a NUL byte would silently end the file there.
     if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
         fail(source, lineAt(text, nul), "NUL character in the file");
@@ -331,9 +389,19 @@ std::vector<ServiceSpec> readSpecs(std::string_view text, const std::string& sou
     std::vector<ServiceSpec> out;
     Ignored ignored;
     for (const XMLElement* child = root.FirstChildElement(); child; child = child->NextSiblingElement()) {
+        if (roadsideUnits != nullptr && std::string_view(child->Name()) == "rsu") {
+            RoadsideUnitSpec rsu = parseRoadsideUnit(*child, source, ignored);
+            for (const RoadsideUnitSpec& other : *roadsideUnits) {
+                if (!rsu.id.empty() && other.id == rsu.id)
+                    fail(source, rsu.line, "two roadside units are called '" + rsu.id + "'");
+            }
+            roadsideUnits->push_back(std::move(rsu));
+            continue;
+        }
         if (std::string_view(child->Name()) != childName) {
             fail(source, child->GetLineNum(),
-                 "unexpected element " + tag(*child) + " in " + tag(rootName) + " (expected " + tag(childName) + ")");
+                 "unexpected element " + tag(*child) + " in " + tag(rootName) + " (expected " + tag(childName) +
+                     (roadsideUnits != nullptr ? " or <rsu>)" : ")"));
         }
         out.push_back(parseService(*child, source, ignored, childName));
     }
@@ -388,8 +456,9 @@ void attachUseCases(ServiceSpec& spec) {
     spec.useCases = std::make_shared<const std::vector<ServiceSpec>>(std::move(useCases));
 }
 
-std::vector<ServiceSpec> readServices(std::string_view text, const std::string& source) {
-    std::vector<ServiceSpec> out = readSpecs(text, source, "services", "service");
+std::vector<ServiceSpec> readServices(std::string_view text, const std::string& source,
+                                      std::vector<RoadsideUnitSpec>& roadsideUnits) {
+    std::vector<ServiceSpec> out = readSpecs(text, source, "services", "service", &roadsideUnits);
     for (ServiceSpec& spec : out) {
         if (spec.type == "DenService") attachUseCases(spec);
     }
@@ -447,7 +516,7 @@ bool ServiceSpec::boolean(std::string_view name, bool fallback) const {
 
 ServicesConfig ServicesConfig::parse(std::string_view text, const std::string& source) {
     ServicesConfig config;
-    config.services_ = readServices(text, source);
+    config.services_ = readServices(text, source, config.roadsideUnits_);
     return config;
 }
 

@@ -85,6 +85,21 @@ private:
     [[noreturn]] void badParameter(std::string_view name, std::string_view expected) const;
 };
 
+/// One <rsu> of a services file: stationary stations (roadside units) and the services they run.
+/// Either one unit at a position (`id`, `x`, `y`, SUMO network frame) or one per SUMO POI of a
+/// type (`poiType`; the unit takes the POI's id and position), e.g.
+///
+///     <rsu id="rsu0" x="500" y="0"> <service type="RsuCaService"/> </rsu>
+///     <rsu poiType="rsu"> <service type="artery.application.RsuCaService"/> </rsu>
+struct SBSIM_API RoadsideUnitSpec {
+    std::string id;       ///< empty with poiType
+    double x = 0, y = 0;  ///< m, SUMO network frame (not with poiType)
+    std::optional<std::string> poiType;
+    std::vector<ServiceSpec> services;  ///< in file order; no filters
+    std::string source;
+    int line = 0;
+};
+
 /// An Artery-format services file:
 ///
 ///     <services>
@@ -98,6 +113,9 @@ private:
 ///       </service>
 ///     </services>
 ///
+/// Roadside units (sbsim's; Artery places them in omnetpp.ini) are <rsu> elements beside the
+/// <service> elements (RoadsideUnitSpec); their services run on the unit, not on vehicles.
+///
 /// Anything else (an unknown element or filter attribute, a bad regex, Artery's random
 /// <penetration> filter) is an error, so that a typo cannot silently change which vehicles run what.
 class SBSIM_API ServicesConfig {
@@ -110,11 +128,14 @@ public:
 
     /// In file order, which is the order services are created in on each vehicle.
     const std::vector<ServiceSpec>& services() const { return services_; }
+    /// The <rsu> elements, in file order.
+    const std::vector<RoadsideUnitSpec>& roadsideUnits() const { return roadsideUnits_; }
     /// The services that run on this vehicle, in file order.
     std::vector<const ServiceSpec*> matching(std::string_view vehicleId, std::string_view vehicleType) const;
 
 private:
     std::vector<ServiceSpec> services_;
+    std::vector<RoadsideUnitSpec> roadsideUnits_;
 };
 
 }  // namespace sbsim::services

@@ -80,4 +80,11 @@ std::vector<NeighbourGrid::Index> NeighbourGrid::within(Index i, double radius) 
     return out;
 }
 
+std::vector<NeighbourGrid::Index> NeighbourGrid::around(double x, double y, double radius) const {
+    std::vector<Index> out;
+    forEachAround(x, y, radius, [&out](Index j) { out.push_back(j); });
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 }  // namespace sbsim::traffic

@@ -32,7 +32,21 @@ public:
     /// The indices of forEachWithin, in ascending order.
     std::vector<Index> within(Index i, double radius) const;
 
+    /// Calls `visit(j)` for every vehicle j whose position is within `radius` of the point (x, y):
+    /// the neighbours of a place rather than of a vehicle (a roadside unit's). Order unspecified.
+    template <typename Visit>
+    void forEachAround(double x, double y, double radius, Visit&& visit) const {
+        if (snapshot_ != nullptr) visitNear(x, y, radius, kNoVehicle, visit);
+    }
+    /// The indices of forEachAround, in ascending order.
+    std::vector<Index> around(double x, double y, double radius) const;
+
 private:
+    static constexpr Index kNoVehicle = std::numeric_limits<Index>::max();
+    /// forEachWithin's and forEachAround's search: every vehicle but `skip` within `radius` of (x, y).
+    template <typename Visit>
+    void visitNear(double x, double y, double radius, Index skip, Visit& visit) const;
+
     // Vehicles are counting-sorted by bucket, so a bucket is one contiguous run of items_. Where the
     // vehicles' bounding box has few cells (O(n)), a bucket is one cell, numbered row by row, so the
     // cells of a query row are one run as well ("dense"). Otherwise (a network spanning tens of
@@ -79,10 +93,15 @@ private:
 
 template <typename Visit>
 void NeighbourGrid::forEachWithin(Index i, double radius, Visit&& visit) const {
-    if (snapshot_ == nullptr || !(radius >= 0)) return;
+    if (snapshot_ == nullptr) return;
     const Eigen::Matrix2Xd& positions = snapshot_->positions();
-    const double x = positions(0, i);
-    const double y = positions(1, i);
+    visitNear(positions(0, i), positions(1, i), radius, i, visit);
+}
+
+template <typename Visit>
+void NeighbourGrid::visitNear(double x, double y, double radius, Index i, Visit& visit) const {
+    if (!(radius >= 0)) return;
+    const Eigen::Matrix2Xd& positions = snapshot_->positions();
     const double r2 = radius * radius;
     const auto near = [&](double px, double py) {
         const double dx = px - x;

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+#include <random>
+#include <string>
 #include <vector>
 
 #include "sbsim/facilities/Cam.h"
@@ -56,6 +59,39 @@ TEST(LocalDynamicMap, KeepsTheNewestCamPerStationForItsLifetime) {
     EXPECT_EQ(ldm.count(secs(2.7), [](const auto&) { return true; }), 0u);  // past its lifetime, not yet dropped
     ldm.update(cam("c", 0.0), secs(2.0));                                   // already past its lifetime
     EXPECT_EQ(ldm.find("c"), nullptr);
+}
+
+TEST(LocalDynamicMap, DropsExactlyWhatABruteForceMapDrops) {
+    // Many stations, CAMs at uneven intervals and drops at every trigger: the map keeps exactly the
+    // entries whose last CAM is within its lifetime, as walking every entry would.
+    std::mt19937_64 rng(3);
+    std::uniform_int_distribution<int> station(0, 59);
+    std::uniform_real_distribution<double> gap(0.0, 0.05);
+    LocalDynamicMap ldm;
+    std::map<std::string, SimTime> last;  // the model: station -> generation time of its last CAM
+    double t = 0;
+    std::size_t dropped = 0;
+    for (int k = 0; k < 20000; ++k) {
+        t += gap(rng);
+        const std::string id = "s" + std::to_string(station(rng) * (k < 10000 ? 1 : 2));
+        const double generated = t - gap(rng);  // a little older than its reception
+        ldm.update(cam(id, generated), secs(t));
+        if (generated + 1.1 >= t && (!last.count(id) || last[id] <= secs(generated))) last[id] = secs(generated);
+        if (k % 7 == 0) {
+            ldm.dropExpired(secs(t));
+            for (auto it = last.begin(); it != last.end();) {
+                if (it->second + LocalDynamicMap::kLifetime < secs(t)) {
+                    it = last.erase(it);
+                    ++dropped;
+                } else {
+                    ++it;
+                }
+            }
+            ASSERT_EQ(ldm.size(), last.size()) << "t=" << t;
+            for (const auto& [id, generated] : last) ASSERT_EQ(ldm.find(id)->cam.generationTime, generated);
+        }
+    }
+    EXPECT_GT(dropped, 100u);  // not vacuous
 }
 
 TEST(DenmMemory, NewestReferenceTimeWinsAndRepetitionsChangeNothing) {

@@ -349,7 +349,7 @@ TEST(ServicesConfigErrors, WrongRoot) {
 
 TEST(ServicesConfigErrors, UnknownElements) {
     EXPECT_EQ(errorOf("<services>\n  <service type='S'/>\n  <servce type='T'/>\n</services>"),
-              "s.xml:3: unexpected element <servce> in <services> (expected <service>)");
+              "s.xml:3: unexpected element <servce> in <services> (expected <service> or <rsu>)");
     EXPECT_EQ(errorOf(oneService("<listener port='1'/>\n<filter/>\n")),
               "s.xml:4: unexpected element <filter> in <service> (expected <filters> or <listener>)");
     EXPECT_EQ(errorOf(oneService("<filters/>\n<filters/>\n")), "s.xml:4: a <service> may have only one <filters>");

@@ -131,6 +131,45 @@ TEST(NeighbourGrid, DistanceIsInclusiveAndExcludesTheVehicleItself) {
     EXPECT_TRUE(grid.within(0, -1).empty());
 }
 
+TEST(NeighbourGrid, AroundAPointMatchesBruteForceInBothLayouts) {
+    // A roadside unit's neighbours: every vehicle within the radius of a place, none skipped.
+    std::mt19937_64 rng(77);
+    std::vector<Vehicle> vehicles = randomVehicles(rng, 500, 400, false);
+    VehicleSnapshot compact;
+    compact.assign(vehicles, kernel::SimTime::zero());
+    vehicles.push_back(car("stray", -1073741824.0, -1073741824.0));
+    VehicleSnapshot sparse;
+    sparse.assign(vehicles, kernel::SimTime::zero());
+    std::uniform_real_distribution<double> coordinate(-450, 450);
+    std::size_t found = 0;
+    for (const VehicleSnapshot* s : {&compact, &sparse}) {
+        NeighbourGrid grid;
+        grid.build(*s, 40);
+        for (int k = 0; k < 50; ++k) {
+            const double x = coordinate(rng);
+            const double y = coordinate(rng);
+            for (const double radius : {0.0, 30.0, 100.0, 5000.0}) {
+                std::vector<Index> expected;
+                for (Index j = 0; j < s->size(); ++j) {
+                    const double dx = s->positions()(0, j) - x;
+                    const double dy = s->positions()(1, j) - y;
+                    if (dx * dx + dy * dy <= radius * radius) expected.push_back(j);
+                }
+                ASSERT_EQ(grid.around(x, y, radius), expected) << "(" << x << ", " << y << "), radius " << radius;
+                found += expected.size();
+            }
+        }
+    }
+    EXPECT_GT(found, 1000u);  // not vacuous
+    // Inclusive, and a vehicle standing on the point counts.
+    VehicleSnapshot s;
+    s.assign({car("a", 0, 0), car("b", 3, 4)}, kernel::SimTime::zero());
+    NeighbourGrid grid;
+    grid.build(s, 5);
+    EXPECT_EQ(grid.around(0, 0, 5), (std::vector<Index>{0, 1}));
+    EXPECT_EQ(grid.around(0, 0, 4.999), (std::vector<Index>{0}));
+}
+
 TEST(NeighbourGrid, RebuildsForANewSnapshot) {
     VehicleSnapshot s;
     s.assign({car("a", 0, 0), car("b", 3, 0)}, kernel::SimTime::zero());

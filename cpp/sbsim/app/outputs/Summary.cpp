@@ -51,6 +51,7 @@ void printSummary(const RunFigures& f) {
     }
     if (f.services != nullptr) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
+        if (f.services->roadsideUnits() > 0) fmt::print("roadside units: {}\n", f.services->roadsideUnits());
         if (f.services->signalsWithoutServices() > 0)
             fmt::print("signals without services: {}\n", f.services->signalsWithoutServices());
         for (const auto& [type, counts] : f.medium->counts()) {
@@ -127,6 +128,7 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
     ordered_json messages = ordered_json::object();
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();
+        if (f.services->roadsideUnits() > 0) out["roadside_units"] = f.services->roadsideUnits();
         out["signals_without_services"] = f.services->signalsWithoutServices();
         for (const auto& [type, counts] : f.medium->counts()) {
             ordered_json bins = ordered_json::array();
