@@ -27,7 +27,7 @@ STORY = f"""
         board.registerStory(sb.Story(sb.AndCondition(sb.CarSetCondition("veh0"), away), [ROUTE("C2B2")], "detour",
                                      max_activations=1))
         board.registerStory(sb.Story(sb.CarSetCondition("veh1"), [ROUTE(via=["C1C0"])], "via"))
-        board.registerStory(sb.Story(sb.CarSetCondition("veh2"), [ROUTE("nowhere")], "unknown"))
+        board.registerStory(sb.Story(sb.CarSetCondition("veh2"), [ROUTE(":A0_0")], "unknown"))
 """
 
 
@@ -152,7 +152,11 @@ def test_route_effect_via_edges_then_the_own_destination(
 
 def test_a_route_sumo_cannot_find_is_a_counted_warning(with_effects: StoryRun, two_lanes: Path) -> None:
     assert with_effects.activated("unknown") == ["veh2"]
-    assert "vehicle 'veh2' keeps its route: Destination edge 'nowhere' is not known" in with_effects.result.stderr
+    # An internal edge exists (the run accepts it) but no route ends there.
+    expected = (
+        "vehicle 'veh2' keeps its route: ChangeTarget failed for vehicle 'veh2', destination edge ':A0_0' unreachable"
+    )
+    assert expected in with_effects.result.stderr
     assert "sumo warnings:" in with_effects.result.stdout
     assert _arrival_edge(with_effects, "veh2") == _own_route(two_lanes, "veh2")[-1]
 
@@ -167,6 +171,9 @@ def test_a_route_sumo_cannot_find_is_a_counted_warning(with_effects: StoryRun, t
         ("sb.RouteEffect(via='ab')", "TypeError: RouteEffect via must be a list of edge ids, got 'ab'"),
         ("sb.RouteEffect(via=[])", "ValueError: RouteEffect via needs at least one edge"),
         ("sb.RouteEffect('')", "ValueError: RouteEffect edges must not be empty strings"),
+        # An id the network does not have: refused when the story is registered, not when it acts.
+        ("sb.RouteEffect('nowhere')", "RouteEffect names edges the network does not have: nowhere"),
+        ("sb.RouteEffect(via=['B1C1', 'nowhere'])", "RouteEffect names edges the network does not have: nowhere"),
     ],
 )
 def test_bad_arguments_are_one_line_errors(two_lanes: Path, tmp_path: Path, effect: str, message: str) -> None:

@@ -149,11 +149,11 @@ def test_traffic_light_holds_its_state_then_its_programme_resumes(
         ),
         (
             'sb.WorldStory(sb.TimeCondition(5), [sb.CloseRoadEffect(["B1C1", "nowhere"])], "c")',
-            "story 'c': CloseRoadEffect at t=5 s: no edge 'nowhere' in the network",
+            "story 'c': CloseRoadEffect names edges the network does not have: nowhere",
         ),
         (
             'sb.WorldStory(sb.TimeCondition(5), [sb.TrafficLightEffect("nolight", "r")], "t")',
-            "story 't': TrafficLightEffect at t=5 s: no traffic light 'nolight' in the network",
+            "story 't': TrafficLightEffect names traffic lights the network does not have: nolight",
         ),
         (
             'sb.WorldStory(sb.TimeCondition(5), [sb.TrafficLightEffect("B1", "rr")], "t")',
@@ -165,7 +165,7 @@ def test_traffic_light_holds_its_state_then_its_programme_resumes(
         ),
         (
             'sb.WorldStory(sb.TimeCondition(5), [sb.SpawnEffect("x", from_edge="A0B0", to_edge="nowhere")], "s")',
-            "no edge 'nowhere' in the network",
+            "story 's': SpawnEffect names edges the network does not have: nowhere",
         ),
     ],
 )

@@ -76,7 +76,9 @@ void CheckContext::warnUnknown(std::string_view who, NetworkObject kind, const s
     for (const std::string& id : ids) {
         if (!exists(kind, id)) unknown.insert(id);
     }
-    if (!unknown.empty()) warn(fmt::format("{} names {}: {}", who, questionFor(kind).missing, describeIds(unknown)));
+    if (unknown.empty()) return;
+    warnings_.push_back(
+        {story_, fmt::format("{} names {}: {}", who, questionFor(kind).missing, describeIds(unknown)), true});
 }
 
 void CheckContext::warnNeverHolds(std::string_view who, const std::optional<TimeWindow>& window) {

@@ -35,6 +35,8 @@ struct SBSIM_API CheckScenario {
 struct SBSIM_API CheckWarning {
     std::string story;
     std::string message;
+    /// It names a network object or vehicle type that does not exist: a run refuses the story.
+    bool unknownId = false;
 };
 
 /// The kinds of network ids a story may name.

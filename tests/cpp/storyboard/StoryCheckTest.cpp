@@ -236,6 +236,15 @@ TEST(StoryCheck, IdsTheNetworkLacksAreWarnedByTheNodeThatNamesThem) {
     EXPECT_EQ(messages(stories, blind), std::vector<std::string>{});
 }
 
+TEST(StoryCheck, UnknownIdsAreMarkedForARunToRefuseAndOtherWarningsAreNot) {
+    // A run refuses a story whose warning names a missing id; the other warnings stay warnings.
+    const auto warnings = checkStories(
+        {story(std::make_shared<RoadCondition>(Ids{"nowhere"})), story(window(200, 300), {}, "late")}, scenario());
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_TRUE(warnings[0].unknownId);
+    EXPECT_FALSE(warnings[1].unknownId);
+}
+
 TEST(StoryCheck, EffectsOfOneDomainInOneStoryAreWarnedAbout) {
     const auto t = window(1, 2);
     EXPECT_EQ(messages({story(t, {std::make_shared<SpeedEffect>(5), std::make_shared<SpeedFactorEffect>(0.5),

@@ -1,7 +1,6 @@
 #include "sbsim/app/run/CheckCommand.h"
 
 #include <fmt/format.h>
-#include <tinyxml2.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -15,55 +14,16 @@
 #include "sbsim/app/inputs/FileLedger.h"
 #include "sbsim/app/inputs/ScenarioInputs.h"
 #include "sbsim/app/inputs/SumoOptions.h"
+#include "sbsim/app/run/NetworkQuestions.h"
 #include "sbsim/app/run/Scenario.h"
 #include "sbsim/storyboard/StoryAreas.h"
 #include "sbsim/storyboard/StoryCheck.h"
 #include "sbsim/storyboard/Storyboard.h"
-#include "sbsim/traffic/NetworkIds.h"
 #include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::app {
 
-namespace {
-
 namespace fs = std::filesystem;
-
-/// The vehicle ids the route files define: <vehicle>/<trip> ids, and <flow> ids as prefixes of
-/// the "<flow>.<n>" ids SUMO gives a flow's vehicles. A file that does not parse adds nothing
-/// (SUMO itself reported it when it loaded).
-class RouteIds {
-public:
-    explicit RouteIds(const std::vector<fs::path>& files) {
-        for (const fs::path& file : files) {
-            tinyxml2::XMLDocument doc;
-            if (doc.LoadFile(file.c_str()) != tinyxml2::XML_SUCCESS || doc.RootElement() == nullptr) continue;
-            for (const auto* e = doc.RootElement()->FirstChildElement(); e; e = e->NextSiblingElement()) {
-                const char* id = e->Attribute("id");
-                if (id == nullptr) continue;
-                const std::string_view tag = e->Name();
-                if (tag == "vehicle" || tag == "trip") ids_.insert(id);
-                if (tag == "flow") flows_.insert(id);
-                if (tag == "vType" || tag == "vTypeDistribution") types_.insert(id);
-            }
-        }
-    }
-    bool defines(std::string_view id) const {
-        if (ids_.count(std::string(id)) != 0) return true;
-        const auto dot = id.rfind('.');
-        return dot != std::string_view::npos && flows_.count(std::string(id.substr(0, dot))) != 0;
-    }
-
-    /// Whether a route file defines this vehicle type (SUMO reads a route file's types only as it
-    /// reaches them).
-    bool definesType(std::string_view id) const { return types_.count(std::string(id)) != 0; }
-
-private:
-    std::set<std::string> ids_;
-    std::set<std::string> types_;
-    std::set<std::string> flows_;
-};
-
-}  // namespace
 
 void CheckCommand::declareOptions(CLI::App& command) {
     command.add_flag("--strict", strict_, "exit 1 when there are warnings");
@@ -85,19 +45,13 @@ int CheckCommand::run(const CommandLine& cl) {
     const storyboard::Storyboard& board = *scenario.board();
     const traffic::SumoBridge& sumo = scenario.sumo();
 
-    const RouteIds routes(SumoOptions(sumocfg, cl.sumoOptions).files("route-files"));
+    const NetworkQuestions network(RouteIds(SumoOptions(sumocfg, cl.sumoOptions).files("route-files")));
     storyboard::CheckScenario checked;
     checked.boundary = sumo.netBoundary();
     checked.begin = sumo.beginTime();
     checked.end = sumo.endTime();
-    checked.vehicleDefined = [&](std::string_view id) { return routes.defines(id); };
-    const traffic::NetworkIds network = traffic::NetworkIds::ofLoadedSumo();
-    checked.edgeExists = [&](std::string_view id) { return network.hasEdge(id); };
-    checked.laneExists = [&](std::string_view id) { return network.hasLane(id); };
-    checked.trafficLightExists = [&](std::string_view id) { return network.hasTrafficLight(id); };
-    checked.vehicleTypeExists = [&](std::string_view id) {
-        return network.hasVehicleType(id) || routes.definesType(id);
-    };
+    checked.vehicleDefined = [&](std::string_view id) { return network.routes().defines(id); };
+    network.answer(checked);
     const auto warnings = storyboard::checkStories(board.stories(), checked);
 
     if (json_) {

@@ -15,6 +15,7 @@
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/inputs/BundledScenario.h"
 #include "sbsim/app/inputs/FileLedger.h"
+#include "sbsim/app/inputs/RouteIds.h"
 #include "sbsim/app/inputs/ScenarioInputs.h"
 #include "sbsim/app/inputs/SumoOptions.h"
 #include "sbsim/app/inputs/SumoStateFile.h"
@@ -25,12 +26,15 @@
 #include "sbsim/app/run/AfterEachStep.h"
 #include "sbsim/app/run/GuiWatch.h"
 #include "sbsim/app/run/Interruption.h"
+#include "sbsim/app/run/NetworkQuestions.h"
 #include "sbsim/app/run/ProgressDisplay.h"
 #include "sbsim/app/run/Scenario.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/services/ServiceError.h"
 #include "sbsim/services/ServicesConfig.h"
+#include "sbsim/storyboard/CheckContext.h"
 #include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/StoryCheck.h"
 #include "sbsim/storyboard/StoryError.h"
 #include "sbsim/storyboard/StoryPainter.h"
 #include "sbsim/storyboard/Storyboard.h"
@@ -147,6 +151,14 @@ int RunCommand::run(const CommandLine& cl) {
                                 "runs (--services has no DenService)",
                                 story->string(), c->name()));
             }
+        }
+        // An id the network does not have would never match (or fail minutes in): refused now, as
+        // `sbsim check` warns of it. Only the network questions are asked (the other checks warn).
+        const NetworkQuestions network(RouteIds(SumoOptions(sumocfg, cl.sumoOptions).files("route-files")));
+        storyboard::CheckScenario questions;
+        network.answer(questions);
+        for (const storyboard::CheckWarning& w : storyboard::checkStories(scenario.board()->stories(), questions)) {
+            if (w.unknownId) throw InputError(fmt::format("{}: story '{}': {}", story->string(), w.story, w.message));
         }
     }
     storyboard::Storyboard* board = scenario.board();
