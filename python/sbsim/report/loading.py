@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import xml.sax
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -82,16 +83,23 @@ def load_summary(path: str | os.PathLike[str]) -> dict[str, Any]:
         raise ReportError(str(e)) from e
 
 
-def load_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
-    """The run's event log (:func:`sbsim.events.read_events`)."""
+def _load_lines(
+    path: str | os.PathLike[str], read: Callable[[str | os.PathLike[str]], list[dict[str, Any]]]
+) -> list[dict[str, Any]]:
+    """A JSON Lines file read by `read`, its failures as one-line ReportErrors."""
     try:
-        return read_events(path)
+        return read(path)
     except EventLogError as e:
         raise ReportError(str(e)) from e
     except OSError as e:
         raise _unreadable(path, e) from e
     except UnicodeDecodeError as e:
         raise ReportError(f"{path}: not UTF-8 text") from e
+
+
+def load_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
+    """The run's event log (:func:`sbsim.events.read_events`)."""
+    return _load_lines(path, read_events)
 
 
 def load_fcd(path: str | os.PathLike[str], fallback_step: float = 1.0) -> pd.DataFrame:
@@ -106,11 +114,4 @@ def load_fcd(path: str | os.PathLike[str], fallback_step: float = 1.0) -> pd.Dat
 
 def load_messages(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
     """The run's message trace (:func:`sbsim.messages.read_messages`)."""
-    try:
-        return read_messages(path)
-    except EventLogError as e:
-        raise ReportError(str(e)) from e
-    except OSError as e:
-        raise _unreadable(path, e) from e
-    except UnicodeDecodeError as e:
-        raise ReportError(f"{path}: not UTF-8 text") from e
+    return _load_lines(path, read_messages)
