@@ -7,6 +7,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Statistics.h"
+#include "sbsim/storyboard/CheckContext.h"
 #include "sbsim/storyboard/EvaluationContext.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/traffic/SnapshotColumns.h"
@@ -47,6 +48,8 @@ public:
     /// Whether it reads the stations' DENM memories, which only a DEN service fills: a run without
     /// one refuses it (exit 2) rather than fail every vehicle as unwarned.
     virtual bool readsDenmMemory() const { return false; }
+    /// What `sbsim check` warns of and a run refuses: the ids it names that the scenario lacks.
+    virtual void check(CheckContext& /*ctx*/) const {}
     /// Whether verdict() reads the event log (the board then keeps its lines in memory).
     virtual bool needsEvents() const { return false; }
     /// At the end of the run, over what it observed and `run`.

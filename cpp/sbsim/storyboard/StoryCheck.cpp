@@ -65,4 +65,13 @@ std::vector<CheckWarning> checkStories(const std::vector<StoryPtr>& stories, con
     return std::move(ctx.warnings());
 }
 
+std::vector<CheckWarning> checkCriteria(const std::vector<CriterionPtr>& criteria, const CheckScenario& scenario) {
+    CheckContext ctx(scenario, {});
+    for (const CriterionPtr& c : criteria) {
+        ctx.beginStory(c->name());
+        c->check(ctx);
+    }
+    return std::move(ctx.warnings());
+}
+
 }  // namespace sbsim::storyboard

@@ -40,6 +40,7 @@
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
+#include "sbsim/storyboard/criteria/WarnedBefore.h"
 #include "sbsim/storyboard/effects/CloseRoadEffect.h"
 #include "sbsim/storyboard/effects/ColorEffect.h"
 #include "sbsim/storyboard/effects/EmergencyStopEffect.h"
@@ -234,6 +235,19 @@ TEST(StoryCheck, IdsTheNetworkLacksAreWarnedByTheNodeThatNamesThem) {
     CheckScenario blind;
     blind.end = s(100);
     EXPECT_EQ(messages(stories, blind), std::vector<std::string>{});
+}
+
+TEST(StoryCheck, CriteriaReportTheIdsTheyNameThatTheNetworkLacks) {
+    const std::vector<CriterionPtr> criteria{
+        WarnedBefore::onEdge("a", std::nullopt, s(0), s(0), std::nullopt),
+        WarnedBefore::onEdge("nowhere", std::nullopt, s(0), s(0), std::nullopt),
+    };
+    criteria[1]->setName("warned");
+    const auto warnings = checkCriteria(criteria, scenario());
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].story, "warned");
+    EXPECT_EQ(warnings[0].message, "WarnedBefore names edges the network does not have: nowhere");
+    EXPECT_TRUE(warnings[0].unknownId);
 }
 
 TEST(StoryCheck, UnknownIdsAreMarkedForARunToRefuseAndOtherWarningsAreNot) {

@@ -53,6 +53,8 @@ int CheckCommand::run(const CommandLine& cl) {
     checked.vehicleDefined = [&](std::string_view id) { return network.routes().defines(id); };
     network.answer(checked);
     const auto warnings = storyboard::checkStories(board.stories(), checked);
+    const auto criterionWarnings = storyboard::checkCriteria(board.criteria(), checked);
+    const std::size_t warningCount = warnings.size() + criterionWarnings.size();
 
     if (json_) {
         nlohmann::ordered_json out;
@@ -80,6 +82,9 @@ int CheckCommand::run(const CommandLine& cl) {
         for (const auto& c : board.criteria()) out["criteria"].push_back(c->name());
         out["warnings"] = nlohmann::ordered_json::array();
         for (const auto& w : warnings) out["warnings"].push_back({{"story", w.story}, {"message", w.message}});
+        for (const auto& w : criterionWarnings) {
+            out["warnings"].push_back({{"criterion", w.story}, {"message", w.message}});
+        }
         fmt::print("{}\n", out.dump(2));
     } else {
         fmt::print("{}: {} stor{} on {}\n", story->string(), board.stories().size(),
@@ -92,9 +97,12 @@ int CheckCommand::run(const CommandLine& cl) {
         }
         for (const auto& c : board.criteria()) fmt::print("criterion '{}'\n", c->name());
         for (const auto& w : warnings) fmt::print(stderr, "sbsim: warning: story '{}': {}\n", w.story, w.message);
-        fmt::print("{} warning{}\n", warnings.size(), warnings.size() == 1 ? "" : "s");
+        for (const auto& w : criterionWarnings) {
+            fmt::print(stderr, "sbsim: warning: criterion '{}': {}\n", w.story, w.message);
+        }
+        fmt::print("{} warning{}\n", warningCount, warningCount == 1 ? "" : "s");
     }
-    return strict_ && !warnings.empty() ? 1 : 0;
+    return strict_ && warningCount != 0 ? 1 : 0;
 }
 
 }  // namespace sbsim::app

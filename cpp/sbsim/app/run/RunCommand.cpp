@@ -160,6 +160,11 @@ int RunCommand::run(const CommandLine& cl) {
         for (const storyboard::CheckWarning& w : storyboard::checkStories(scenario.board()->stories(), questions)) {
             if (w.unknownId) throw InputError(fmt::format("{}: story '{}': {}", story->string(), w.story, w.message));
         }
+        for (const storyboard::CheckWarning& w : storyboard::checkCriteria(scenario.board()->criteria(), questions)) {
+            if (w.unknownId) {
+                throw InputError(fmt::format("{}: criterion '{}': {}", story->string(), w.story, w.message));
+            }
+        }
     }
     storyboard::Storyboard* board = scenario.board();
     storyboard::StoryPainter painter;

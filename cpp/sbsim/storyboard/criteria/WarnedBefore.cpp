@@ -32,6 +32,10 @@ std::shared_ptr<WarnedBefore> WarnedBefore::onEdge(std::string edge, std::option
     return std::shared_ptr<WarnedBefore>(new WarnedBefore(std::nullopt, std::move(edge), cause, lead, since, until));
 }
 
+void WarnedBefore::check(CheckContext& ctx) const {
+    if (!area_) ctx.warnUnknown("WarnedBefore", NetworkObject::Edge, {edge_});
+}
+
 std::string WarnedBefore::describe() const {
     std::string out = area_ ? fmt::format("WarnedBefore({} points", area_->vertices().size())
                             : fmt::format("WarnedBefore(edge {}", edge_);

@@ -30,6 +30,7 @@ public:
     std::string describe() const override;
     traffic::SnapshotColumns columns() const override;
     bool readsDenmMemory() const override { return true; }
+    void check(CheckContext& ctx) const override;
     void observe(const EvaluationContext& ctx) override;
     CriterionVerdict verdict(const CriterionRun& run) const override;
 
