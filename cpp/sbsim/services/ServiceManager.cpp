@@ -83,6 +83,10 @@ void ServiceManager::makeRoadsideUnit(const RoadsideUnitSpec& spec, const std::s
     if (medium_ != nullptr) medium_->addFixedStation(id, position);
     for (const ServiceSpec& serviceSpec : spec.services) {
         std::unique_ptr<Service> service = ServiceRegistry::instance().create(serviceSpec.type);
+        if (const std::string_view why = service->needsVehicle(); !why.empty()) {
+            throw ServicesConfigError(fmt::format("{}:{}: {} cannot run on roadside unit '{}': {}", serviceSpec.source,
+                                                  serviceSpec.line, serviceSpec.type, id, why));
+        }
         middleware.host(*service, serviceSpec);
         simulation().addModule(std::move(service));
         ++servicesCreated_;

@@ -171,6 +171,19 @@ TEST_F(RoadsideUnit, NoPoiOfTheTypeIsAnError) {
     }
 }
 
+TEST_F(RoadsideUnit, AVehicleServiceOnAUnitIsAnError) {
+    Harness h(R"(<services><rsu id="u" x="0" y="0">
+                     <service type="artery.application.CaService"/></rsu></services>)");
+    try {
+        h.sim.run(secs(0.5));
+        FAIL() << "no error";
+    } catch (const ServicesConfigError& e) {
+        EXPECT_STREQ(e.what(),
+                     "test.xml:2: CaService cannot run on roadside unit 'u': its CAMs describe its "
+                     "vehicle's motion (a unit sends CAMs with RsuCaService)");
+    }
+}
+
 TEST_F(RoadsideUnit, AVehicleWithAUnitsIdIsAnError) {
     Harness h(R"(<services><service type="RsuProbe"/>
         <rsu id="v" x="0" y="0"><service type="RsuCaService"/></rsu></services>)");

@@ -25,6 +25,9 @@ public:
 
     void initialize() override;
     void trigger() override;
+    std::string_view needsVehicle() const override {
+        return "its CAMs describe its vehicle's motion (a unit sends CAMs with RsuCaService)";
+    }
 
     const CamGenerationRules& rules() const { return *rules_; }
     std::size_t camsSent() const { return sent_; }

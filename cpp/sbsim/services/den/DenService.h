@@ -25,6 +25,9 @@ class SBSIM_API DenService : public Service, public facilities::ItsMessageHandle
 public:
     DenService();
     ~DenService() override;
+    std::string_view needsVehicle() const override {
+        return "its use cases watch its vehicle (a unit announces an event with RsuDenService)";
+    }
 
     void initialize() override;
     void trigger() override;

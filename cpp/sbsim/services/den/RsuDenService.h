@@ -29,6 +29,8 @@ class SBSIM_API RsuDenService : public DenService {
 public:
     RsuDenService();
     ~RsuDenService() override;
+    /// Its one event needs no vehicle: it is the roadside unit's DEN service.
+    std::string_view needsVehicle() const override { return {}; }
 
     void initialize() override;
     void trigger() override {}

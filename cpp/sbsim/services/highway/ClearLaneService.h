@@ -11,6 +11,7 @@ class ClearLaneService : public Service {
 public:
     void initialize() override;
     void indicate(const radio::V2xMessage& message) override;
+    std::string_view needsVehicle() const override { return "it commands its vehicle"; }
 
     bool slowed() const { return slowed_; }
 
