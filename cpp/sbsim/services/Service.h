@@ -48,9 +48,6 @@ public:
     virtual void receiveSignal(const traffic::StoryboardSignal& /*signal*/) {}
     /// A message another vehicle's service broadcast, arriving here.
     virtual void indicate(const radio::V2xMessage& /*message*/) {}
-    /// Why it needs a vehicle of its own, if it does (empty: it runs on a roadside unit too). A
-    /// unit refuses such a service when it is made, rather than host one that never acts.
-    virtual std::string_view needsVehicle() const { return {}; }
 
     const std::string& vehicleId() const;
     /// This service's entry of the services file.

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/services/NeedsVehicle.h"
 #include "sbsim/services/ServiceRegistry.h"
 #include "sbsim/traffic/SumoBridge.h"
 
@@ -83,7 +84,8 @@ void ServiceManager::makeRoadsideUnit(const RoadsideUnitSpec& spec, const std::s
     if (medium_ != nullptr) medium_->addFixedStation(id, position);
     for (const ServiceSpec& serviceSpec : spec.services) {
         std::unique_ptr<Service> service = ServiceRegistry::instance().create(serviceSpec.type);
-        if (const std::string_view why = service->needsVehicle(); !why.empty()) {
+        const auto* vehicleOnly = dynamic_cast<const NeedsVehicle*>(service.get());
+        if (const std::string_view why = vehicleOnly ? vehicleOnly->whyVehicle() : ""; !why.empty()) {
             throw ServicesConfigError(fmt::format("{}:{}: {} cannot run on roadside unit '{}': {}", serviceSpec.source,
                                                   serviceSpec.line, serviceSpec.type, id, why));
         }

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "sbsim/facilities/Cam.h"
+#include "sbsim/services/NeedsVehicle.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ca/CamGenerationRules.h"
 
@@ -19,13 +20,13 @@ namespace sbsim::services {
 /// Parameters (Artery's names; times in seconds): minInterval (0.1), maxInterval (1),
 /// headingDelta (4°), positionDelta (4 m), speedDelta (0.5 m/s), fixedRate (false: the rules;
 /// true: every T_GenCamDcc), withDccRestriction (true).
-class CaService : public Service {
+class CaService : public Service, public NeedsVehicle {
 public:
     static constexpr kernel::SimTime kLowFrequencyInterval = kernel::SimTime::fromMilliseconds(500);
 
     void initialize() override;
     void trigger() override;
-    std::string_view needsVehicle() const override {
+    std::string_view whyVehicle() const override {
         return "its CAMs describe its vehicle's motion (a unit sends CAMs with RsuCaService)";
     }
 

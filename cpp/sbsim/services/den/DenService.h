@@ -8,6 +8,7 @@
 #include "sbsim/facilities/ActionId.h"
 #include "sbsim/facilities/Denm.h"
 #include "sbsim/kernel/Message.h"
+#include "sbsim/services/NeedsVehicle.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/services/den/Repetition.h"
@@ -21,11 +22,11 @@ namespace sbsim::services {
 /// repetition. Unlike Artery it ends events: terminate() stops the repetition and sends a
 /// cancellation DENM, which makes receivers drop the event. Reports "new" and "terminate" DENM
 /// phases of its own events to the station registry's sink.
-class SBSIM_API DenService : public Service, public facilities::ItsMessageHandler {
+class SBSIM_API DenService : public Service, public facilities::ItsMessageHandler, public NeedsVehicle {
 public:
     DenService();
     ~DenService() override;
-    std::string_view needsVehicle() const override {
+    std::string_view whyVehicle() const override {
         return "its use cases watch its vehicle (a unit announces an event with RsuDenService)";
     }
 

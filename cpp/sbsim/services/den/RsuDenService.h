@@ -30,7 +30,7 @@ public:
     RsuDenService();
     ~RsuDenService() override;
     /// Its one event needs no vehicle: it is the roadside unit's DEN service.
-    std::string_view needsVehicle() const override { return {}; }
+    std::string_view whyVehicle() const override { return {}; }
 
     void initialize() override;
     void trigger() override {}

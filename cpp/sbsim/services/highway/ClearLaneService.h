@@ -1,5 +1,6 @@
 #pragma once
 
+#include "sbsim/services/NeedsVehicle.h"
 #include "sbsim/services/Service.h"
 
 namespace sbsim::services {
@@ -7,11 +8,11 @@ namespace sbsim::services {
 /// Reacts to an emergency vehicle's ClearLaneMessage: a vehicle on the same road but in another
 /// lane slows to `speed` m/s (default 25) by capping its max speed, so the emergency vehicle
 /// passes safely. Vehicles in the emergency vehicle's own lane are left alone.
-class ClearLaneService : public Service {
+class ClearLaneService : public Service, public NeedsVehicle {
 public:
     void initialize() override;
     void indicate(const radio::V2xMessage& message) override;
-    std::string_view needsVehicle() const override { return "it commands its vehicle"; }
+    std::string_view whyVehicle() const override { return "it commands its vehicle"; }
 
     bool slowed() const { return slowed_; }
 
