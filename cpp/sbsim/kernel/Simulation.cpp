@@ -56,6 +56,15 @@ void Simulation::removeModule(Module& module) {
     ++moduleChanges_;
 }
 
+void Simulation::startAt(SimTime begin) {
+    if (events_ > 0) throw std::logic_error("the simulation's start time is set before its first event");
+    if (!fes_.empty() && fes_.peek().arrivalTime() < begin) {
+        throw std::logic_error("message '" + fes_.peek().name() + "' is scheduled before the start time " +
+                               begin.str() + " s");
+    }
+    now_ = begin;
+}
+
 void Simulation::initialize() {
     if (initialized_) return;
     initialized_ = true;

@@ -64,6 +64,11 @@ public:
     StudyParameters& parameters() { return parameters_; }
     const StudyParameters& parameters() const { return parameters_; }
 
+    /// Sets the clock to `begin` before the run: a run that begins later than 0 s (SUMO's --begin, a
+    /// loaded state) starts its timers there instead of firing every period missed since 0 s at once.
+    /// Allowed until the first event is delivered; throws std::logic_error after that, or if an event
+    /// is already scheduled before `begin`.
+    void startAt(SimTime begin);
     /// initialize() on every module, in the order they were added.
     void initialize();
     /// Delivers events in order while their time is <= `limit`.

@@ -132,6 +132,9 @@ void SumoBridge::checkTimes(double begin, double end) {
 
 void SumoBridge::initialize() {
     load();
+    // The kernel's clock starts where SUMO does, so the modules initialized after the bridge (services,
+    // media) start their timers at the run's begin, not at 0 s.
+    simulation().startAt(begin_);
     // Vehicles already on the road (a loaded state) count as departed at the beginning.
     std::vector<std::string> present = libsumo::Vehicle::getIDList();
     std::sort(present.begin(), present.end());

@@ -431,3 +431,42 @@ TEST(Simulation, IdenticalSeededWorkloadsGiveIdenticalTraces) {
 
 }  // namespace
 }  // namespace sbsim::kernel
+
+namespace sbsim::kernel {
+namespace {
+
+TEST(SimulationStart, ClockStartsAtTheRunsBeginSoNoTimerLiesInThePast) {
+    // A run from a saved state at 600 s: a module initialized afterwards schedules from 600 s, not
+    // from 0 s (which fired every period since 0 s at once).
+    Trace trace;
+    Simulation sim;
+    auto& first = sim.emplaceModule<Recorder>("sumo", trace);
+    auto& later = sim.emplaceModule<Recorder>("service", trace);
+    Message tick("tick");
+    first.onInitialize = [&](Recorder& r) { r.simulation().startAt(sec(600)); };
+    later.onInitialize = [&](Recorder& r) { r.scheduleAfter(ms(100), tick); };
+    int ticks = 0;
+    later.onMessage = [&](Recorder& r, Message& m) {
+        if (++ticks < 3) r.scheduleAfter(ms(100), m);
+    };
+    sim.run();
+    EXPECT_EQ(ticks, 3);
+    EXPECT_EQ(sim.now(), ms(600'300));
+    EXPECT_EQ(sim.eventCount(), 3u);
+}
+
+TEST(SimulationStart, RefusedOnceEventsRanOrWhenOneIsDueEarlier) {
+    Trace trace;
+    Simulation sim;
+    auto& m = sim.emplaceModule<Recorder>("m", trace);
+    Message early("early");
+    m.scheduleAt(sec(5), early);
+    EXPECT_THROW(sim.startAt(sec(10)), std::logic_error) << "an event is due before the start";
+    sim.startAt(sec(5));
+    EXPECT_EQ(sim.now(), sec(5));
+    sim.run();
+    EXPECT_THROW(sim.startAt(sec(6)), std::logic_error) << "events ran";
+}
+
+}  // namespace
+}  // namespace sbsim::kernel
