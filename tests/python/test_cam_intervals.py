@@ -5,9 +5,10 @@ before T_GenCamMax elapsed is explained by the FCD: the heading changed by more 
 position by more than 4 m or the speed by more than 0.5 m/s since that vehicle's last CAM, or it
 is one of the (at most 3) CAMs sent at T_GenCam = the interval of the last such CAM.
 
-Granularity: SUMO steps and middleware triggers are both 0.1 s, so each CAM is generated at a
-trigger that sees the snapshot of that very step (the FCD state at that time), and every interval
-is a multiple of 0.1 s. A run with positionDelta="2" (a broken rule) must be caught."""
+Granularity: SUMO steps and middleware triggers are both 0.1 s, each station's triggers on its own
+clock (a phase in (0, 0.1] s after its departure), so each CAM is generated at a trigger that sees
+the snapshot of the last step before it (the FCD state at that step), and every interval is a
+multiple of 0.1 s. A run with positionDelta="2" (a broken rule) must be caught."""
 
 from __future__ import annotations
 
@@ -72,6 +73,11 @@ def cam_run(grid: Path, folder: Path, ca_attributes: str = "") -> tuple[dict[str
     return cams, states
 
 
+def last_step(t: float) -> int:
+    """The index of the last SUMO step at or before sbsim time ``t`` (what a trigger at ``t`` sees)."""
+    return math.floor(t / STEP + 1e-6)
+
+
 def heading_change(a: float, b: float) -> float:
     d = abs(a - b) % 360.0
     return min(d, 360.0 - d)
@@ -87,8 +93,8 @@ def violations(cams: dict[str, list[float]], states: dict[int, dict[str, State]]
             if not (T_MIN - EPS <= dt <= T_MAX + EPS):
                 out.append(f"{vehicle}: CAM interval {dt:.3f} s at t={t}")
                 continue
-            a = states[round(previous / STEP)][vehicle]
-            b = states[round(t / STEP)][vehicle]
+            a = states[last_step(previous)][vehicle]
+            b = states[last_step(t)][vehicle]
             deltas = (
                 heading_change(a[3], b[3]) - HEADING,
                 math.dist(a[:2], b[:2]) - POSITION,

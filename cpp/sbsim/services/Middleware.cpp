@@ -1,8 +1,12 @@
 #include "sbsim/services/Middleware.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "sbsim/facilities/ItsMessage.h"
+#include "sbsim/kernel/Simulation.h"
+#include "sbsim/radio/CounterRandom.h"
 #include "sbsim/services/ServiceManager.h"
 
 namespace sbsim::services {
@@ -37,17 +41,29 @@ Eigen::Vector2d Middleware::position() const {
     return snapshot.positions().col(*index);
 }
 
+kernel::SimTime Middleware::clockPhase(std::uint64_t seed, std::string_view station, kernel::SimTime interval) {
+    radio::CounterRandom random(seed, radio::CounterRandom::keyOf(station), 0, 0, radio::DrawPurpose::ClockPhase);
+    // 1 - u lies in (0, 1]: a station never triggers in the instant it departs (its services have
+    // just been initialized, and the step's snapshot may not hold it yet).
+    const double phase = (1.0 - random.uniform01()) * static_cast<double>(interval.raw());
+    return kernel::SimTime::fromNanoseconds(
+        std::clamp(static_cast<kernel::SimTime::rep>(std::ceil(phase)), kernel::SimTime::rep{1}, interval.raw()));
+}
+
 void Middleware::initialize() {
-    departedAt_ = simTime();
     (void)manager_.stations().of(vehicleId_);  // the station's facilities, empty, from its departure on
+    scheduleAfter(clockPhase(simulation().seed(), vehicleId_, manager_.interval()), triggerTimer_);
+}
+
+void Middleware::handleMessage(kernel::Message& msg) {
+    if (&msg != &triggerTimer_) return kernel::Module::handleMessage(msg);
+    scheduleAfter(manager_.interval(), triggerTimer_);
+    trigger();
 }
 
 facilities::StationFacilities& Middleware::facilities() const { return manager_.stations().of(vehicleId_); }
 
 void Middleware::trigger() {
-    // A vehicle departing in the step at a grid time has just been initialized: its first
-    // trigger is the next one.
-    if (simTime() <= departedAt_) return;
     manager_.stations().dropExpired(vehicleId_, simTime());
     for (Service* s : services_) {
         try {

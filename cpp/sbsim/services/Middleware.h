@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <typeinfo>
 #include <vector>
 
@@ -27,10 +28,12 @@ class ServiceManager;
 
 /// One vehicle's middleware: created when the vehicle departs, it hosts the vehicle's services
 /// (which the simulation owns, as modules) and hands them triggers, storyboard signals and incoming
-/// V2X messages. Removed, services first, when the vehicle arrives. It is the station's
-/// network and facilities layers too: a geo-broadcast message whose destination area does not
-/// hold the station goes no further, and CAMs and DENMs go into the station's LDM and DENM memory
-/// before its services see them; expired entries are dropped before every trigger.
+/// V2X messages. Each station runs on its own clock, as Artery's middleware does "to avoid
+/// unrealistic node synchronization": its first trigger comes a uniform phase in (0, interval]
+/// after it departed (clockPhase()), then one every interval. Removed, services first, when the vehicle arrives. It is
+/// the station's network and facilities layers too: a geo-broadcast message whose destination area does not hold the
+/// station goes no further, and CAMs and DENMs go into the station's LDM and DENM memory before its services see them;
+/// expired entries are dropped before every trigger.
 class SBSIM_API Middleware : public kernel::Module, public radio::Receiver {
 public:
     Middleware(ServiceManager& manager, std::string vehicleId);
@@ -50,11 +53,16 @@ public:
 
     /// Hosts `service` (already owned by the simulation) with its configuration.
     void host(Service& service, const ServiceSpec& spec);
-    /// Triggers the services, from the first interval after the vehicle departed on.
+    /// Triggers the services now (the station's own clock calls it every interval).
     void trigger();
+    /// The delay from departure to the first trigger: uniform in (0, `interval`], a pure function of
+    /// (`seed`, `station`) (a counter-based draw), so it depends neither on the order stations
+    /// depart in nor on the thread count.
+    static kernel::SimTime clockPhase(std::uint64_t seed, std::string_view station, kernel::SimTime interval);
     void signal(const traffic::StoryboardSignal& signal);
 
     void initialize() override;
+    void handleMessage(kernel::Message& msg) override;
     /// A V2X message reached the station: through the facilities to the services.
     void receive(const radio::V2xMessage& message) override;
 
@@ -72,7 +80,7 @@ private:
     std::vector<facilities::ItsMessageHandler*> handlers_;   // per service, as services_; null: none
     const std::type_info* itsType_ = nullptr;                // the last type found to be ITS
     const std::type_info* otherType_ = nullptr;              // the last type found not to be
-    kernel::SimTime departedAt_;
+    kernel::Message triggerTimer_{"middleware trigger"};
     std::optional<Eigen::Vector2d> fixedPosition_;
 };
 

@@ -35,7 +35,6 @@ ServiceManager::~ServiceManager() = default;
 
 void ServiceManager::initialize() {
     simulation().subscribe(traffic::StoryboardSignal::id, *this);
-    scheduleAt(interval_ * (simTime() / interval_ + 1), triggerTimer_);
     makeRoadsideUnits();
 }
 
@@ -93,15 +92,6 @@ void ServiceManager::makeRoadsideUnit(const RoadsideUnitSpec& spec, const std::s
         simulation().addModule(std::move(service));
         ++servicesCreated_;
     }
-}
-
-void ServiceManager::handleMessage(kernel::Message& msg) {
-    if (&msg != &triggerTimer_) return kernel::Module::handleMessage(msg);
-    scheduleAfter(interval_, triggerTimer_);
-    // Index loop: services may not end vehicles, but the list must not be walked by iterator
-    // across anything that could grow it.
-    for (std::size_t i = 0; i < departureOrder_.size(); ++i) departureOrder_[i]->trigger();
-    for (Middleware* rsu : roadsideUnits_) rsu->trigger();
 }
 
 void ServiceManager::listenToAllSignals(Service& service) {
@@ -179,7 +169,6 @@ void ServiceManager::depart(const std::string& id) {
     if (selected.empty()) return;
     auto& middleware = simulation().emplaceModule<Middleware>(*this, id);
     middlewares_[id] = &middleware;
-    departureOrder_.push_back(&middleware);
     for (const ServiceSpec* spec : selected) {
         std::unique_ptr<Service> service = ServiceRegistry::instance().create(spec->type);
         // Hosted before it joins the simulation: initialize() may already use vehicle() or send().
@@ -194,7 +183,6 @@ void ServiceManager::arrive(const std::string& id) {
     if (it == middlewares_.end()) return;
     Middleware& middleware = *it->second;
     middlewares_.erase(it);
-    std::erase(departureOrder_, &middleware);
     for (Service* s : middleware.services()) {
         std::erase(allSignals_, s);
         simulation().removeModule(*s);  // finish(), then its timers are dropped

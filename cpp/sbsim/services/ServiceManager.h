@@ -23,11 +23,11 @@
 namespace sbsim::services {
 
 /// Gives each departing vehicle a middleware with the services its filters select, removes them
-/// when it arrives, triggers all services every interval — on the interval's grid, vehicles in
-/// departure order, one kernel event for all — and routes storyboard signals to the ego vehicle's
+/// when it arrives, and routes storyboard signals to the ego vehicle's
 /// services (and to services listening to all). Attach it to the SUMO bridge. The services
 /// file's roadside units are made at initialize(): a middleware at a fixed position each, a
-/// stationary station of the medium, triggered after the vehicles.
+/// stationary station of the medium. Every middleware triggers its services on its own clock
+/// (Middleware::clockPhase), every interval().
 class SBSIM_API ServiceManager : public kernel::Module, private kernel::Listener {
 public:
     /// Vehicles are commanded through `registry`, shared with the storyboard; `snapshot` is the
@@ -74,7 +74,6 @@ public:
     std::size_t middlewares() const { return middlewares_.size() - roadsideUnits_.size(); }
 
     void initialize() override;
-    void handleMessage(kernel::Message& msg) override;
 
 private:
     void receiveSignal(kernel::Module& source, kernel::SignalId id, std::string_view value) override;
@@ -91,11 +90,9 @@ private:
     kernel::Statistics* statistics_ = nullptr;
     traffic::Penetration penetration_;
     std::unordered_map<std::string, Middleware*> middlewares_;
-    std::vector<Middleware*> departureOrder_;
     std::vector<Middleware*> roadsideUnits_;  // in the services file's order
     std::unordered_map<std::string, const RoadsideUnitSpec*> roadsideUnitIds_;
     std::function<std::vector<traffic::SumoPois::Poi>()> pois_ = &traffic::SumoPois::all;
-    kernel::Message triggerTimer_{"service trigger"};
     std::vector<Service*> allSignals_;
     std::size_t servicesCreated_ = 0;
     std::size_t signalsWithoutServices_ = 0;

@@ -118,10 +118,13 @@ TEST_F(DenTest, TractionLossRepeatsEverySecondToTheStationsInsideItsArea) {
 
     DenService& sender = den(h, "slippery");
     ASSERT_EQ(sender.useCases().size(), 1u);
-    // Sent at the first trigger after the signal (2.1 s), then every second: 2.1 … 12.1 > 12.05.
-    EXPECT_EQ(sender.denmsSent(), 10u);
-    ASSERT_EQ(its.denms["near"].size(), 10u);
-    EXPECT_EQ(its.denms["edge"].size(), 10u);
+    // Sent at the first trigger after the signal (the station's own clock), then every second to 12.05 s.
+    const SimTime sent = triggerFrom(h, "slippery", secs(2.05));
+    const std::size_t sends = every(sent, secs(1), secs(12.05)).size();
+    EXPECT_EQ(sends, 10u);
+    EXPECT_EQ(sender.denmsSent(), sends);
+    ASSERT_EQ(its.denms["near"].size(), sends);
+    EXPECT_EQ(its.denms["edge"].size(), sends);
     EXPECT_EQ(its.denms.count("outside"), 0u) << "outside the destination circle";
     const facilities::DenmContent& d = its.denms["near"].front();
     EXPECT_EQ(d.cause, TractionLoss::kCause);
@@ -131,13 +134,14 @@ TEST_F(DenTest, TractionLossRepeatsEverySecondToTheStationsInsideItsArea) {
     EXPECT_EQ(d.destination.radius, 1000.0);
     EXPECT_EQ(d.trafficClass, 1);
     EXPECT_EQ(d.action.str(), "slippery:1");
-    EXPECT_EQ(d.detectionTime, secs(2.1));
+    EXPECT_EQ(d.detectionTime, sent);
     for (const auto& r : its.denms["near"]) EXPECT_EQ(r.referenceTime, d.referenceTime) << "repetitions are the same";
     // One event in each receiver's memory, none outside.
     EXPECT_EQ(h.manager.stations().find("near")->denms.size(), 1u);
     EXPECT_EQ(h.manager.stations().find("outside")->denms.size(), 0u);
-    EXPECT_EQ(phases.of("slippery"), std::vector<std::string>{"new@2.1 slippery:1"});
-    EXPECT_EQ(phases.of("near"), std::vector<std::string>{"new@2.101 slippery:1"});
+    const SimTime ms = SimTime::fromMilliseconds(1);
+    EXPECT_EQ(phases.of("slippery"), std::vector<std::string>{"new@" + sent.str() + " slippery:1"});
+    EXPECT_EQ(phases.of("near"), std::vector<std::string>{"new@" + (sent + ms).str() + " slippery:1"});
     EXPECT_TRUE(phases.of("outside").empty());
 }
 
@@ -147,9 +151,11 @@ TEST_F(DenTest, TractionLossIsBlockedFor20Seconds) {
     h.manager.stations().setPhaseSink(&phases);
     h.step(secs(0), {vehicle("a", 0, 0), vehicle("b", 100, 0)});
     signal(h, 1.05, "a", "traction loss");
-    signal(h, 5.05, "a", "traction loss");  // blocked until 1.1 + 20 s: sent at 21.2
-    h.sim.run(secs(22));
-    EXPECT_EQ(phases.of("a"), (std::vector<std::string>{"new@1.1 a:1", "new@21.2 a:2"}));
+    signal(h, 5.05, "a", "traction loss");  // blocked for 20 s after the first: sent at the trigger after
+    h.sim.run(secs(22.3));
+    const SimTime first = triggerFrom(h, "a", secs(1.05));
+    EXPECT_EQ(phases.of("a"),
+              (std::vector<std::string>{"new@" + first.str() + " a:1", "new@" + (first + secs(20.1)).str() + " a:2"}));
 }
 
 TEST_F(DenTest, StoryboardEventEndsItsEventOnTheEndSignal) {
@@ -163,10 +169,12 @@ TEST_F(DenTest, StoryboardEventEndsItsEventOnTheEndSignal) {
     signal(h, 1.05, "crash", "accident");
     signal(h, 4.05, "crash", "cleared", true);
     h.sim.run(secs(10));
-    // 1.1, 1.6, … 3.6 (6 sends), then at 4.05 the cancellation, then nothing.
-    EXPECT_EQ(den(h, "crash").denmsSent(), 7u);
+    // From the first trigger after the signal every 0.5 s, then at 4.05 the cancellation, then nothing.
+    const SimTime sent = triggerFrom(h, "crash", secs(1.05));
+    const std::size_t sends = every(sent, secs(0.5), secs(4.05)).size() + 1;
+    EXPECT_EQ(den(h, "crash").denmsSent(), sends);
     const auto& got = its.denms["b"];
-    ASSERT_EQ(got.size(), 7u);
+    ASSERT_EQ(got.size(), sends);
     EXPECT_EQ(got.front().cause, 2);
     EXPECT_EQ(got.front().subcause, 1);
     EXPECT_EQ(got.front().destination.radius, 800.0);
@@ -174,8 +182,11 @@ TEST_F(DenTest, StoryboardEventEndsItsEventOnTheEndSignal) {
     EXPECT_EQ(got.back().termination, facilities::Termination::Cancellation);
     EXPECT_EQ(got.back().referenceTime, secs(4.05));
     EXPECT_EQ(h.manager.stations().find("b")->denms.size(), 0u) << "the receiver dropped the event";
-    EXPECT_EQ(phases.of("crash"), (std::vector<std::string>{"new@1.1 crash:1", "terminate@4.05 crash:1"}));
-    EXPECT_EQ(phases.of("b"), (std::vector<std::string>{"new@1.101 crash:1", "terminate@4.051 crash:1"}));
+    EXPECT_EQ(phases.of("crash"),
+              (std::vector<std::string>{"new@" + sent.str() + " crash:1", "terminate@4.05 crash:1"}));
+    EXPECT_EQ(phases.of("b"),
+              (std::vector<std::string>{"new@" + (sent + SimTime::fromMilliseconds(1)).str() + " crash:1",
+                                        "terminate@4.051 crash:1"}));
 }
 
 TEST_F(DenTest, WithoutAUseCaseListEveryUseCaseRuns) {
@@ -190,13 +201,14 @@ TEST_F(DenTest, CamsFillTheLocalDynamicMap) {
                                     "test.xml"));
     h.step(secs(0), {vehicle("a", 0, 0), vehicle("b", 100, 0), vehicle("far", 5000, 0)});
     h.sim.run(secs(3.05));
-    // Standing still: a CAM at the first trigger (0.1 s), then every second; "far" is out of range.
-    EXPECT_EQ(its.cams["b"], 3u);
-    EXPECT_EQ(its.cams["a"], 3u);
+    // Standing still: a CAM at the first trigger, then every second; "far" is out of range.
+    const std::vector<SimTime> camsOfA = every(triggerFrom(h, "a", SimTime::zero()), secs(1), secs(3.05));
+    EXPECT_EQ(its.cams["b"], camsOfA.size());
+    EXPECT_EQ(its.cams["a"], every(triggerFrom(h, "b", SimTime::zero()), secs(1), secs(3.05)).size());
     EXPECT_EQ(its.cams.count("far"), 0u);
     const auto* entry = h.manager.stations().find("b")->ldm.find("a");
     ASSERT_NE(entry, nullptr);
-    EXPECT_EQ(entry->cam.generationTime, secs(2.1));
+    EXPECT_EQ(entry->cam.generationTime, camsOfA.back());
     EXPECT_EQ(entry->cam.position, Eigen::Vector2d(0, 0));
     EXPECT_EQ(h.manager.stations().find("b")->ldm.size(), 1u);
     EXPECT_EQ(h.manager.stations().find("far")->ldm.size(), 0u);
@@ -224,13 +236,16 @@ TEST_F(DenTest, EmergencyBrakeLightOnFiveHardBrakingSamplesAbove20Kmh) {
         h.step(secs(t), {moving("hard", 0, 25, braking ? -8 : 0), moving("soft", 50, 25, braking ? -6.9 : 0),
                          moving("slow", 100, 5, braking ? -8 : 0)});
     }
-    h.sim.run(secs(2.05));
-    // Samples at the triggers 1.0 … 1.4 (a step comes before the trigger due with it): the buffer
-    // is full at 1.4; blocked for 100 ms after each, so again at 1.6, 1.8, 2.0.
-    EXPECT_EQ(phases.of("hard"),
-              (std::vector<std::string>{"new@1.4 hard:1", "new@1.6 hard:2", "new@1.8 hard:3", "new@2 hard:4"}));
+    h.sim.run(secs(2.15));
+    // Samples at the five triggers from the first after 1.0 s (each sees the last step's state): the
+    // buffer is full at the fifth; blocked for 100 ms after each, so again 0.2, 0.4, 0.6 s later.
+    const SimTime t1 = triggerFrom(h, "hard", secs(1) + SimTime::fromNanoseconds(1));
+    std::vector<std::string> expected;
+    for (int k = 0; k < 4; ++k)
+        expected.push_back("new@" + (t1 + secs(0.4 + 0.2 * k)).str() + " hard:" + std::to_string(k + 1));
+    EXPECT_EQ(phases.of("hard"), expected);
     ASSERT_EQ(phases.of("soft").size(), 4u);
-    EXPECT_EQ(phases.of("soft")[0], "new@1.401 hard:1");
+    EXPECT_EQ(phases.of("soft")[0], "new@" + (t1 + secs(0.4) + SimTime::fromMilliseconds(1)).str() + " hard:1");
     EXPECT_EQ(den(h, "soft").denmsSent(), 0u);
     EXPECT_EQ(den(h, "slow").denmsSent(), 0u);
     const auto& d = its.denms["soft"].front();
@@ -298,7 +313,8 @@ TEST_F(DenTest, EndOfQueueAfterHardBrakingToAQueueHeardOf) {
     // sample of at least 80 km/h (22.2 m/s) is at 2.6 s (22.3 m/s): −4.5 m/s², below −3.5.
     const auto b = phases.of("b");
     ASSERT_FALSE(b.empty());
-    EXPECT_EQ(b.back(), "new@5.8 b:1");
+    const SimTime detected = triggerFrom(h, "b", secs(5.8) + SimTime::fromNanoseconds(1));
+    EXPECT_EQ(b.back(), "new@" + detected.str() + " b:1");
     const auto& sent = its.denms["head"];
     ASSERT_FALSE(sent.empty());
     EXPECT_EQ(sent.back().cause, 27);
@@ -306,8 +322,8 @@ TEST_F(DenTest, EndOfQueueAfterHardBrakingToAQueueHeardOf) {
     EXPECT_EQ(sent.back().trafficDirection, facilities::TrafficDirection::Upstream);
     EXPECT_EQ(sent.back().validity, secs(20));
     EXPECT_EQ(sent.back().destination.radius, 1000.0);
-    // Repeated every 0.5 s for 20 s: 5.8, 6.3 … 9.8 by 10 s.
-    EXPECT_EQ(den(h, "b").denmsSent(), 9u);
+    // Repeated every 0.5 s for 20 s: those by 10 s.
+    EXPECT_EQ(den(h, "b").denmsSent(), every(detected, secs(0.5), secs(10)).size());
 }
 
 TEST_F(DenTest, TrafficJamAheadOnALowAverageSpeed) {
@@ -316,12 +332,17 @@ TEST_F(DenTest, TrafficJamAheadOnALowAverageSpeed) {
     h.manager.stations().setPhaseSink(&phases);
     h.step(secs(0), {moving("crawl", 0, 5), moving("fast", 100, 30), moving("stand", 200, 0)});
     h.sim.run(secs(15));
-    // Sampled every second from 0.1 s; 10 s of samples at 10.1 s: average 5 m/s ≤ 30 km/h.
-    EXPECT_EQ(phases.of("crawl").front(), "new@10.1 crawl:1");
+    // Sampled every second from the first trigger; 10 s of samples 10 s later: average 5 m/s ≤ 30 km/h.
+    const SimTime crawlSent = triggerFrom(h, "crawl", SimTime::zero()) + secs(10);
+    EXPECT_EQ(phases.of("crawl").front(), "new@" + crawlSent.str() + " crawl:1");
     EXPECT_EQ(den(h, "fast").denmsSent(), 0u);
     // Standing (average 0) counts only with a jam heard of: crawl's DENM (cause 1) is one.
     EXPECT_EQ(phases.of("stand").size(), 2u);  // its memory's "new" of crawl:1, then its own
-    EXPECT_EQ(phases.of("stand").back(), "new@10.2 stand:1");
+    // Its own once it has 10 s of samples and has heard crawl's DENM (a millisecond after it was sent).
+    const SimTime standSent = triggerFrom(
+        h, "stand",
+        std::max(triggerFrom(h, "stand", SimTime::zero()) + secs(10), crawlSent + SimTime::fromMilliseconds(1)));
+    EXPECT_EQ(phases.of("stand").back(), "new@" + standSent.str() + " stand:1");
     const auto& d = its.denms["fast"].front();
     EXPECT_EQ(d.cause, 1);
     EXPECT_EQ(d.validity, secs(60));

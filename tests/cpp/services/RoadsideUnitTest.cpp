@@ -12,6 +12,7 @@
 #include "ServicesTestSupport.h"
 #include "sbsim/facilities/Cam.h"
 #include "sbsim/facilities/Denm.h"
+#include "sbsim/services/Middleware.h"
 #include "sbsim/services/ServiceRegistry.h"
 #include "sbsim/services/ca/RsuCaService.h"
 #include "sbsim/services/den/RsuDenService.h"
@@ -57,6 +58,9 @@ protected:
     void SetUp() override { heardLog.clear(); }
 };
 
+/// When station `id`, present from 0 s, first triggers (its own clock, 0.1 s interval).
+SimTime firstTrigger(const Harness& h, const std::string& id) { return triggerFrom(h, id, SimTime::zero()); }
+
 radio::DiscSettings range(double metres) {
     radio::DiscSettings s;
     s.range = metres;
@@ -74,8 +78,10 @@ TEST_F(RoadsideUnit, RsuCamsEverySecondReachVehiclesInRangeOnly) {
     h.sim.run(secs(3.05));
     EXPECT_EQ(h.manager.roadsideUnits(), 1u);
     EXPECT_EQ(h.manager.middlewares(), 2u) << "vehicles only";
-    // The unit's first trigger (0.1 s), then every second, heard a millisecond later.
-    EXPECT_EQ(heard(h, "near", "CAM", "rsu0"), (std::vector<SimTime>{secs(0.101), secs(1.101), secs(2.101)}));
+    // The unit's first trigger (its own clock's phase), then every second, heard a millisecond later.
+    const SimTime ms = SimTime::fromMilliseconds(1);
+    const std::vector<SimTime> unitCams = every(firstTrigger(h, "rsu0") + ms, secs(1), secs(3.05));
+    EXPECT_EQ(heard(h, "near", "CAM", "rsu0"), unitCams);
     EXPECT_TRUE(heard(h, "far", "CAM", "rsu0").empty()) << "600 m: out of range";
     const auto* entry = h.manager.stations().find("near")->ldm.find("rsu0");
     ASSERT_NE(entry, nullptr);
@@ -89,7 +95,9 @@ TEST_F(RoadsideUnit, RsuCamsEverySecondReachVehiclesInRangeOnly) {
     EXPECT_NE(unit->ldm.find("near"), nullptr);
     EXPECT_EQ(unit->ldm.find("far"), nullptr);
     const auto& counts = h.medium.counts().at("CAM");
-    EXPECT_EQ(counts.sent, 3u + 2 * 3u);  // the unit's three, and three from each standing vehicle
+    // The unit's, and one a second from each standing vehicle from its first trigger.
+    EXPECT_EQ(counts.sent, unitCams.size() + every(firstTrigger(h, "near"), secs(1), secs(3.05)).size() +
+                               every(firstTrigger(h, "far"), secs(1), secs(3.05)).size());
     EXPECT_EQ(facilities::Cam(entry->cam).byteSize(), facilities::Cam::kRoadSideUnitBytes);
 }
 
@@ -98,7 +106,8 @@ TEST_F(RoadsideUnit, GenerationIntervalIsArterysParameter) {
         <rsu id="r" x="0" y="0"><service type="RsuCaService" generationInterval="0.5"/></rsu></services>)");
     h.step(secs(0), {vehicle("v", 10, 0)});
     h.sim.run(secs(1.65));
-    EXPECT_EQ(heard(h, "v", "CAM", "r"), (std::vector<SimTime>{secs(0.101), secs(0.601), secs(1.101), secs(1.601)}));
+    EXPECT_EQ(heard(h, "v", "CAM", "r"),
+              every(firstTrigger(h, "r") + SimTime::fromMilliseconds(1), secs(0.5), secs(1.65)));
 }
 
 TEST_F(RoadsideUnit, DenmRepeatedFromUntilInsideItsAreaThenCancelled) {

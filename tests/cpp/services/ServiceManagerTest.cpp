@@ -1,5 +1,5 @@
 // The service manager and the middleware on hand-made steps (no SUMO): which vehicles get which
-// services, the service lifecycle (hosting, initialize, triggers on the interval grid, finish,
+// services, the service lifecycle (hosting, initialize, triggers on each station's own clock, finish,
 // own timers), and storyboard signals routed to the ego vehicle's services and to listeners.
 
 #include <gtest/gtest.h>
@@ -26,10 +26,12 @@
 namespace sbsim::services::test {
 namespace {
 
-/// Times t0 + k * step for k = 1.. while <= last.
-std::vector<SimTime> grid(SimTime t0, SimTime step, SimTime last) {
+/// Station `id`'s trigger times on its own clock, having departed at `departed`: departed + phase +
+/// k * step for k = 0.. while <= last.
+std::vector<SimTime> clock(const kernel::Simulation& sim, const std::string& id, SimTime departed, SimTime step,
+                           SimTime last) {
     std::vector<SimTime> out;
-    for (SimTime t = t0 + step; t <= last; t += step) out.push_back(t);
+    for (SimTime t = departed + Middleware::clockPhase(sim.seed(), id, step); t <= last; t += step) out.push_back(t);
     return out;
 }
 
@@ -119,7 +121,7 @@ TEST(ServiceManager, RejectsUnknownServiceTypesAndBadIntervals) {
 
 // --- lifecycle -------------------------------------------------------------------------------
 
-TEST(ServiceLifecycle, HostedBeforeInitializeTriggeredOnTheGridFinishedOnArrival) {
+TEST(ServiceLifecycle, HostedBeforeInitializeTriggeredOnItsClockFinishedOnArrival) {
     Harness h(R"(<services><service type="TestProbe"/></services>)");
     const std::size_t modulesBefore = h.sim.moduleCount();
     h.step(secs(1), {vehicle("a")});
@@ -145,33 +147,61 @@ TEST(ServiceLifecycle, HostedBeforeInitializeTriggeredOnTheGridFinishedOnArrival
     EXPECT_EQ(b->initializedAt, secs(2));
     EXPECT_EQ(c->initializedAt, secs(2.35));
 
-    // Every 0.1 s on the grid; a's trigger due at its arrival (3.5) does not happen: the step comes first.
-    EXPECT_EQ(a->triggers, grid(secs(1), secs(0.1), secs(3.4)));
-    EXPECT_EQ(a->triggers.size(), 24u);
-    EXPECT_EQ(b->triggers, grid(secs(2), secs(0.1), secs(5)));
-    EXPECT_EQ(c->triggers, grid(secs(2.3), secs(0.1), secs(5))) << "first trigger at the next grid point, 2.4 s";
+    // Every 0.1 s on each station's own clock, the first within 0.1 s of the departure, off any
+    // grid; a's triggers end before its arrival (3.5): at that instant the step comes first.
+    EXPECT_EQ(a->triggers, clock(h.sim, "a", secs(1), secs(0.1), secs(3.5) - SimTime::fromNanoseconds(1)));
+    EXPECT_EQ(a->triggers.size(), 25u);
+    EXPECT_EQ(b->triggers, clock(h.sim, "b", secs(2), secs(0.1), secs(5)));
+    EXPECT_EQ(c->triggers, clock(h.sim, "c", secs(2.35), secs(0.1), secs(5)));
+    EXPECT_GT(c->triggers.front(), secs(2.35)) << "never in the instant of the departure";
+    EXPECT_LE(c->triggers.front(), secs(2.45));
 
     EXPECT_EQ(a->finishes, std::vector<SimTime>{secs(3.5)});
     EXPECT_FALSE(a->finishedBySimulationFinish);
     EXPECT_EQ(a->live, nullptr) << "a's service is destroyed once it finished";
     EXPECT_EQ(aAfterArrival, std::optional<Middleware*>(nullptr)) << "the manager forgets a's middleware";
-    EXPECT_EQ(b->finishes, std::vector<SimTime>{secs(5)});
+    // Finished at the end: the time of the run's last event, a trigger shortly before 5 s.
+    EXPECT_LE(h.sim.now(), secs(5));
+    EXPECT_EQ(b->finishes, std::vector<SimTime>{h.sim.now()});
     EXPECT_TRUE(b->finishedBySimulationFinish);
-    EXPECT_EQ(c->finishes, std::vector<SimTime>{secs(5)});
+    EXPECT_EQ(c->finishes, std::vector<SimTime>{h.sim.now()});
     for (const ProbeRecord* r : {a, b, c}) EXPECT_EQ(r->callsAfterFinish, 0) << r->name;
     EXPECT_EQ(h.sim.moduleCount(), modulesBefore + 4) << "b and c: a middleware and a service each";
     EXPECT_EQ(h.manager.servicesCreated(), 3u);
 }
 
-TEST(ServiceLifecycle, TriggersSitOnTheGridOfAnyInterval) {
+TEST(ServiceLifecycle, EachStationTriggersOnItsOwnClockOfAnyInterval) {
     Harness h(R"(<services><service type="TestProbe"/></services>)", {}, secs(0.25));
     h.step(secs(1), {vehicle("a")});
     h.step(secs(1.3), {vehicle("a"), vehicle("b")});
-    h.step(secs(1.5), {vehicle("a"), vehicle("b"), vehicle("c")});  // on the grid: first trigger 0.25 s later
-    h.sim.run(secs(2));
-    EXPECT_EQ(h.log.find("a")->triggers, (std::vector<SimTime>{secs(1.25), secs(1.5), secs(1.75), secs(2)}));
-    EXPECT_EQ(h.log.find("b")->triggers, (std::vector<SimTime>{secs(1.5), secs(1.75), secs(2)}));
-    EXPECT_EQ(h.log.find("c")->triggers, (std::vector<SimTime>{secs(1.75), secs(2)}));
+    h.step(secs(1.5), {vehicle("a"), vehicle("b"), vehicle("c")});
+    h.sim.run(secs(3));
+    EXPECT_EQ(h.log.find("a")->triggers, clock(h.sim, "a", secs(1), secs(0.25), secs(3)));
+    EXPECT_EQ(h.log.find("b")->triggers, clock(h.sim, "b", secs(1.3), secs(0.25), secs(3)));
+    EXPECT_EQ(h.log.find("c")->triggers, clock(h.sim, "c", secs(1.5), secs(0.25), secs(3)));
+}
+
+TEST(MiddlewareClock, PhasesAreUniformInTheIntervalAndKeyedBySeedAndStation) {
+    const SimTime interval = secs(0.1);
+    constexpr int kStations = 20000;
+    std::vector<int> tenths(10, 0);
+    int differentSeed = 0;
+    for (int i = 0; i < kStations; ++i) {
+        const std::string id = "veh" + std::to_string(i);
+        const SimTime phase = Middleware::clockPhase(7, id, interval);
+        ASSERT_GT(phase, SimTime::zero());
+        ASSERT_LE(phase, interval);
+        EXPECT_EQ(phase, Middleware::clockPhase(7, id, interval)) << "a pure function of (seed, station)";
+        differentSeed += phase != Middleware::clockPhase(8, id, interval);
+        ++tenths[static_cast<std::size_t>(std::min<SimTime::rep>((phase.raw() - 1) * 10 / interval.raw(), 9))];
+    }
+    // Uniform: each tenth of the interval holds 2,000 +- 5 standard deviations (~42).
+    for (const int n : tenths) EXPECT_NEAR(n, kStations / 10, 220);
+    EXPECT_GT(differentSeed, kStations * 99 / 100) << "another seed, other phases";
+    // The phase scales with the interval: the same draw, a fraction of it.
+    const double at01 = Middleware::clockPhase(7, "veh1", secs(0.1)).seconds() / 0.1;
+    const double at1 = Middleware::clockPhase(7, "veh1", secs(1)).seconds() / 1.0;
+    EXPECT_NEAR(at01, at1, 1e-7);
 }
 
 TEST(ServiceLifecycle, ServicesRunInFileOrderOnEachVehicle) {

@@ -1,5 +1,7 @@
 #include "ServicesTestSupport.h"
 
+#include "sbsim/services/Middleware.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -224,6 +226,18 @@ std::vector<std::string> signalsOf(const ProbeRecord* r) {
     if (r == nullptr) return {"no such record"};
     for (const auto& [t, s] : r->signals) out.push_back(t.str() + " " + s.story + " " + s.ego + " " + s.cause);
     return out;
+}
+
+std::vector<SimTime> every(SimTime first, SimTime step, SimTime last) {
+    std::vector<SimTime> out;
+    for (SimTime t = first; t <= last; t += step) out.push_back(t);
+    return out;
+}
+
+SimTime triggerFrom(const Harness& h, const std::string& id, SimTime t) {
+    SimTime at = Middleware::clockPhase(h.sim.seed(), id, secs(0.1));
+    while (at < t) at += secs(0.1);
+    return at;
 }
 
 }  // namespace sbsim::services::test

@@ -205,4 +205,10 @@ storyboard::StoryPtr signalStory(const std::string& name, const std::string& ego
 /// (time, story, ego, cause) of every signal a record got.
 std::vector<std::string> signalsOf(const ProbeRecord* r);
 
+/// `first`, then every `step`, while <= `last`.
+std::vector<SimTime> every(SimTime first, SimTime step, SimTime last);
+/// Station `id`'s first trigger at or after `t` on its own clock, for a station present from 0 s
+/// with the harness's 0.1 s interval (Middleware::clockPhase).
+SimTime triggerFrom(const Harness& h, const std::string& id, SimTime t);
+
 }  // namespace sbsim::services::test
