@@ -178,9 +178,17 @@ class AnyCondition(Condition):
 
 class DenmCondition(Condition):
     """A vehicle whose DENM memory holds a live event of `cause` (any if None) heard at most
-    `max_age` ago; yields the events' originating vehicles."""
+    `max_age` ago, the event at most `within` m away, `ahead` in its driving direction, the vehicle
+    `in_relevance_area` of the event; yields the events' originating vehicles."""
 
-    def __init__(self, cause: int | None = None, max_age: Seconds | None = None) -> None: ...
+    def __init__(
+        self,
+        cause: int | None = None,
+        max_age: Seconds | None = None,
+        within: float | None = None,
+        ahead: bool = False,
+        in_relevance_area: bool = False,
+    ) -> None: ...
     def describe(self) -> str: ...
 
 class CamCondition(Condition):

@@ -198,3 +198,28 @@ def test_bad_use_case_files_are_one_line_naming_file_and_line(tmp_path: Path) ->
     (tmp_path / "uc.xml").unlink()
     result = run(SCENARIO / "motorway.sumocfg", end=5, extra=["--services", str(services)], timeout=60)
     assert_bad_input(result, "uc.xml", "cannot read")
+
+
+def test_denm_condition_ahead_caps_only_the_vehicles_driving_towards_the_event(tmp_path: Path) -> None:
+    # The event 'ahead' within 800 m: of the warned, only those still before the crash car (the
+    # motorway runs east, +x) take the cap; those past it heard the DENM but are not capped.
+    story = write_story(
+        tmp_path,
+        """
+        from storyboard import *
+        def createStories(board):
+            accident = AndCondition(CarSetCondition('crash'), TimeCondition(40, 160))
+            board.registerStory(Story(accident, [StopEffect(), SignalEffect('accident', 'accident over')],
+                                      name='accident'))
+            ahead = DenmCondition(cause=2, within=800, ahead=True)
+            board.registerStory(Story(ahead, [SpeedEffect(15.0)], name='warned'))
+        """,
+    )
+    _, events, fcd, denm = run_motorway(tmp_path, story, SCENARIO / "services.xml", "--end", "80")
+    heard = {d["station"] for d in denm if d["phase"] == "new" and d["station"] != "crash"}
+    activations = [(e["vehicle"], e["t"]) for e in events if e["story"] == "warned" and e["type"] == "activate"]
+    assert activations and {v for v, _ in activations} < heard
+    crash_x = fcd.pos["crash"][45.0][0]
+    for vehicle, t in activations:
+        x = fcd.pos[vehicle][t][0]
+        assert crash_x - 805 <= x < crash_x, (vehicle, t, x, crash_x)

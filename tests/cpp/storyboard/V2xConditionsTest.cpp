@@ -1,6 +1,7 @@
 // The V2X conditions on a station registry filled by hand: DenmCondition by cause and age of the
 // last reception, yielding the running originators (plainly true when none runs), false after
-// expiry or termination; CamCondition by distance to the known station's CAM position and age.
+// expiry or termination, filtered by the event's distance, direction and relevance area;
+// CamCondition by distance to the known station's CAM position and age.
 
 #include <gtest/gtest.h>
 
@@ -82,6 +83,42 @@ TEST(DenmCondition, FalseOnceTheEventExpiredOrEnded) {
     stations->of("w").denms.received(cancel, secs(12));
     scene.set({car("crash", 0, 0), car("w", 20, 0)}, secs(13));
     EXPECT_FALSE(scene.test(c, "w"));
+}
+
+TEST(DenmCondition, RelevanceFiltersTheEventsByDistanceDirectionAndArea) {
+    auto stations = std::make_shared<facilities::StationRegistry>();
+    auto crash = event("crash", 2, 10);
+    crash.eventPosition = {500, 0};
+    crash.destination.center = {500, 0};
+    crash.destination.radius = 400;
+    for (const char* id : {"east", "west", "near", "far"}) stations->of(id).denms.received(crash, secs(10.001));
+    // SUMO angles: 90 = driving east (+x), 270 = west.
+    Scene scene({car("crash", 500, 0), car("east", 300, 0, 30, 90), car("west", 300, 0, 30, 270),
+                 car("near", 450, 0, 30, 90), car("far", 0, 0, 30, 90)},
+                secs(12), 100, stations.get());
+    DenmRelevance aheadWithin300;
+    aheadWithin300.within = 300;
+    aheadWithin300.ahead = true;
+    DenmCondition warnedAhead(2, std::nullopt, aheadWithin300);
+    EXPECT_EQ(scene.test(warnedAhead, "east").others(), others(scene, {"crash"}));
+    EXPECT_FALSE(scene.test(warnedAhead, "west")) << "the event is behind it";
+    EXPECT_TRUE(scene.test(warnedAhead, "near"));
+    EXPECT_FALSE(scene.test(warnedAhead, "far")) << "500 m away";
+    DenmRelevance area;
+    area.inRelevanceArea = true;
+    DenmCondition inArea(2, std::nullopt, area);
+    EXPECT_TRUE(scene.test(inArea, "east")) << "inside the 400 m destination circle";
+    EXPECT_FALSE(scene.test(inArea, "far"));
+    // A relevance distance, when the DENM gives one, is the area.
+    crash.relevanceDistance = 100;
+    crash.referenceTime = secs(11);
+    for (const char* id : {"east", "near"}) stations->of(id).denms.received(crash, secs(11));
+    EXPECT_FALSE(scene.test(inArea, "east")) << "200 m from the event, relevance 100 m";
+    EXPECT_TRUE(scene.test(inArea, "near"));
+    EXPECT_EQ(warnedAhead.describe(), "DenmCondition(cause 2, within 300 m, ahead)");
+    EXPECT_EQ(inArea.describe(), "DenmCondition(cause 2, in relevance area)");
+    EXPECT_TRUE(warnedAhead.columns().contains(traffic::SnapshotColumns::Angle));
+    EXPECT_TRUE(DenmCondition(2, std::nullopt).columns().empty());
 }
 
 TEST(CamCondition, KnowsStationsWithinDistanceAndAge) {

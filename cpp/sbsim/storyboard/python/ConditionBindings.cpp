@@ -209,7 +209,8 @@ void bindConditions(py::module_& m) {
     }));
     // V2X: what a vehicle heard (the evaluation context's stations).
     py::class_<DenmCondition, Condition, py::smart_holder>(m, "DenmCondition")
-        .def(py::init([](const py::object& cause, const py::object& maxAge) {
+        .def(py::init([](const py::object& cause, const py::object& maxAge, const py::object& within,
+                         const py::object& ahead, const py::object& inRelevanceArea) {
                  std::optional<int> c;
                  if (!cause.is_none()) {
                      if (!py::isinstance<py::int_>(cause) || py::isinstance<py::bool_>(cause))
@@ -226,9 +227,20 @@ void bindConditions(py::module_& m) {
                      age = toSimTime(maxAge, "DenmCondition max_age");
                      if (*age < SimTime::zero()) throw py::value_error("DenmCondition needs max_age >= 0");
                  }
-                 return std::make_shared<DenmCondition>(c, age);
+                 DenmRelevance relevance;
+                 relevance.within = optionalDistance(within);
+                 const auto flag = [](const py::object& value, const char* name) {
+                     if (!py::isinstance<py::bool_>(value))
+                         throw py::type_error(std::string("DenmCondition ") + name + " must be True or False, got " +
+                                              py::repr(value).cast<std::string>());
+                     return value.cast<bool>();
+                 };
+                 relevance.ahead = flag(ahead, "ahead");
+                 relevance.inRelevanceArea = flag(inRelevanceArea, "in_relevance_area");
+                 return std::make_shared<DenmCondition>(c, age, relevance);
              }),
-             py::arg("cause") = py::none(), py::arg("max_age") = py::none())
+             py::arg("cause") = py::none(), py::arg("max_age") = py::none(), py::arg("within") = py::none(),
+             py::arg("ahead") = false, py::arg("in_relevance_area") = false)
         .def("describe", &DenmCondition::describe);
     py::class_<CamCondition, Condition, py::smart_holder>(m, "CamCondition")
         .def(py::init([](const py::object& distance, const py::object& maxAge) {
