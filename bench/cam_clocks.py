@@ -7,7 +7,11 @@ draws its own random phase), and prints the delivery ratio per 50 m of both side
 histogram of CAM start times within the 100 ms period. ``--before EXE`` adds the same CA run of
 another build (e.g. one with the shared trigger) as a third column.
 
-    .venv/bin/python bench/cam_clocks.py [--preset bench1k] [--end 60] [--before /path/to/old/sbsim]
+    .venv/bin/python bench/cam_clocks.py [--preset bench1k] [--step-length 0.1] [--end 60] [--before OLD_SBSIM]
+
+SUMO's step is 0.1 s by default here, as V2X studies (and Artery) run it: with 1 s steps a vehicle's
+position changes once a second, so every CA check that sees the change fires within the 100 ms after
+the step, and CAMs bunch there however the stations' clocks are spread.
 """
 
 from __future__ import annotations
@@ -22,7 +26,8 @@ from collections import Counter
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from benchlib import sbsim, scenario  # noqa: E402
+from benchlib import OUT, sbsim  # noqa: E402
+from sbsim.scenarios.grid import make_preset  # noqa: E402
 
 RADIO = Path(__file__).resolve().parent / "radio.toml"
 BINS_SHOWN = 8  # 0-400 m
@@ -51,15 +56,27 @@ def ratios(summary: dict, kind: str) -> dict[int, float]:
 
 
 def matched_beacon(sent: list[dict]) -> tuple[float, int]:
-    """The CAMs' median per-station interval (s) and mean size (bytes)."""
+    """The CAMs' mean interval (s; each station's span over its CAMs after the first, pooled) and mean
+    size (bytes): a beacon at that interval sends as many messages per vehicle-second."""
     times: dict[str, list[float]] = {}
     sizes = []
     for line in sent:
         if line["type"] == "CAM":
             times.setdefault(line["station"], []).append(line["t"])
             sizes.append(line["bytes"])
-    intervals = [(t[-1] - t[0]) / (len(t) - 1) for t in times.values() if len(t) > 2]
-    return round(statistics.median(intervals), 3), round(statistics.fmean(sizes))
+    span = sum(t[-1] - t[0] for t in times.values() if len(t) > 1)
+    count = sum(len(t) - 1 for t in times.values() if len(t) > 1)
+    return round(span / count, 3), round(statistics.fmean(sizes))
+
+
+def preset_scenario(preset: str, step: float) -> Path:
+    """The preset with SUMO's step `step`, generated once into bench/out/."""
+    folder = OUT / f"{preset}-step{step:g}"
+    cfg = folder / f"{preset}.sumocfg"
+    if not cfg.exists():
+        print(f"generating {preset} (step {step:g} s) in {folder} ...", flush=True)
+        make_preset(folder, preset, step_length=step)
+    return cfg
 
 
 def histogram(sent: list[dict]) -> list[int]:
@@ -72,11 +89,12 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--preset", default="bench1k", help="a grid preset of sbsim.scenarios.grid")
     parser.add_argument("--sumocfg", type=Path, help="a scenario instead of the preset")
+    parser.add_argument("--step-length", type=float, default=0.1, help="SUMO's step for the preset (s)")
     parser.add_argument("--end", type=float, default=60.0)
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--before", help="another sbsim executable whose CA run is shown beside")
     args = parser.parse_args()
-    cfg = args.sumocfg or scenario(args.preset)
+    cfg = args.sumocfg or preset_scenario(args.preset, args.step_length)
     exe = sbsim()
     ca = '<services><service type="artery.application.CaService"/></services>'
     with tempfile.TemporaryDirectory() as tmp:
@@ -93,9 +111,9 @@ def main() -> None:
             before, before_sent = run(args.before, cfg, ca, root / "before", args.end, args.seed)
 
     cam, bea = ratios(ca_summary, "CAM"), ratios(beacon_summary, "Beacon")
-    print(f"scenario {cfg.name}, {args.end:g} s, seed {args.seed}, channel model ({RADIO.name})")
-    print(f"CAMs: {len(ca_sent)} sent, median interval {interval} s, mean {size} bytes;")
-    print(f"beacon matched: interval {interval} s, {size} bytes")
+    print(f"scenario {cfg}, {args.end:g} s, seed {args.seed}, channel model ({RADIO.name})")
+    print(f"CAMs: {len(ca_sent)} sent, mean interval {interval} s, mean {size} bytes")
+    print(f"beacons at that interval and size: {beacon_summary['messages']['Beacon']['sent']} sent")
     cbr = ca_summary.get("channel_busy_ratio", {})
     print(f"CBR with CAMs: mean {cbr.get('mean', 0):.4f}, max {cbr.get('max', 0):.4f}")
     header = "| distance | CAM, own clocks | beacon, random phase | difference |"

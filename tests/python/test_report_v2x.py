@@ -108,7 +108,12 @@ def test_without_a_channel_model_there_is_no_busy_ratio(disc: V2xRun) -> None:
 
 
 def test_busy_ratio_over_time_with_the_channel_model(tmp_path: Path) -> None:
-    lines = _motorway(tmp_path, 30.0, "--radio", str(REPO / "bench" / "radio.toml"))
+    # SUMO at 0.1 s, as V2X studies step it: at the scenario's 0.5 s every CA check that sees a vehicle
+    # move runs within 100 ms after the step (each station on its own clock), so the 100 ms sample a
+    # CAM reports, the one before it, holds no frame.
+    lines = _motorway(
+        tmp_path, 30.0, "--radio", str(REPO / "bench" / "radio.toml"), "--sumo-option", "--step-length 0.1"
+    )
     built = build(
         tmp_path / "events.jsonl", MOTORWAY / "motorway.sumocfg", fcd=None, messages=tmp_path / "messages.jsonl"
     )
