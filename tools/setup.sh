@@ -6,16 +6,22 @@ set -euo pipefail
 
 SBSIM_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 VENV="$SBSIM_ROOT/.venv"
-# Build: compilers, Eigen, GoogleTest and the C++ libraries sbsim uses (XML, command line, JSON,
+# Build: compilers (and ccache), Eigen, GoogleTest and the C++ libraries sbsim uses (XML, command line, JSON,
 # formatting, regular expressions, allocator, gzip, the radio's R-tree (Boost.Geometry) and its TOML
 # file); tests: clang-format and a virtual X server for sumo-gui.
-DEBIAN_PACKAGES=(cmake g++ python3-dev libeigen3-dev libgtest-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev
+DEBIAN_PACKAGES=(cmake g++ ccache python3-dev libeigen3-dev libgtest-dev libtinyxml2-dev libcli11-dev nlohmann-json3-dev
   libfmt-dev libre2-dev libjemalloc-dev libboost-dev libtomlplusplus-dev zlib1g-dev clang-format xvfb xauth)
 # Studies (python -m sbsim.study): Dask runs the sweep, pandas and pyarrow write the tables; reports
 # (python -m sbsim.report): sumolib reads the net and the FCD, at SUMO's own version.
 STUDY_DEPENDENCIES=("dask>=2024" "distributed>=2024" "pandas>=2" "pyarrow>=14" "tqdm>=4" "matplotlib>=3.7" "sumolib==1.28.*")
 PYTHON_DEPENDENCIES=(pip "scikit-build-core>=0.10" "pybind11>=2.12" "numpy>=1.24" "eclipse-sumo==1.28.*")
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
+# A rebuild after a branch switch or in a fresh clone compiles only what changed: ccache, with paths
+# taken relative to the checkout so clones share the cache (CMake reads the launcher from the
+# environment when it configures a build folder).
+if command -v ccache >/dev/null && [ -z "${CMAKE_CXX_COMPILER_LAUNCHER:-}" ]; then
+  export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_BASEDIR="${CCACHE_BASEDIR:-$SBSIM_ROOT}"
+fi
 
 say() { printf 'sbsim setup: %s\n' "$*" >&2; }
 
