@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/ChannelMedium.h"
-#include "sbsim/radio/DiscMedium.h"
 #include "sbsim/radio/FixedStations.h"
 #include "sbsim/radio/Receiver.h"
+#include "sbsim/radio/channel/ChannelMedium.h"
+#include "sbsim/radio/disc/DiscMedium.h"
 
 namespace sbsim::radio {
 namespace {

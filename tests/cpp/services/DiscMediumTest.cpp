@@ -14,7 +14,7 @@
 
 #include "ServicesTestSupport.h"
 #include "TestPrinters.h"
-#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/radio/disc/DiscMedium.h"
 #include "sbsim/services/Middleware.h"
 
 namespace sbsim::services::test {

@@ -13,7 +13,7 @@
 
 #include "SumoTestSupport.h"
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/radio/disc/DiscMedium.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServiceRegistry.h"

@@ -17,7 +17,7 @@
 #include "SumoTestSupport.h"
 #include "TestPrinters.h"
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/radio/disc/DiscMedium.h"
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/BoardFeed.h"

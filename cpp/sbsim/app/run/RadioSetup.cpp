@@ -11,9 +11,9 @@
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/cli/CommandLine.h"
-#include "sbsim/radio/ChannelMedium.h"
-#include "sbsim/radio/DiscMedium.h"
-#include "sbsim/radio/Obstacles.h"
+#include "sbsim/radio/channel/ChannelMedium.h"
+#include "sbsim/radio/disc/DiscMedium.h"
+#include "sbsim/radio/propagation/Obstacles.h"
 #include "sbsim/traffic/SumoPolygons.h"
 
 namespace sbsim::app {

@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/ChannelSettings.h"
 #include "sbsim/radio/Medium.h"
+#include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::app {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sbsim/radio/PathLoss.h"
+#include "sbsim/radio/propagation/PathLoss.h"
 
 namespace sbsim::radio {
 

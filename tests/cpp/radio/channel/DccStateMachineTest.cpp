@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "sbsim/radio/DccStateMachine.h"
+#include "sbsim/radio/channel/DccStateMachine.h"
 
 namespace sbsim::radio {
 namespace {

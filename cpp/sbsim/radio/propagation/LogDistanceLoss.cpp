@@ -1,4 +1,4 @@
-#include "sbsim/radio/LogDistanceLoss.h"
+#include "sbsim/radio/propagation/LogDistanceLoss.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "sbsim/radio/DiscMedium.h"
+#include "sbsim/radio/disc/DiscMedium.h"
 
 #include <algorithm>
 #include <cmath>

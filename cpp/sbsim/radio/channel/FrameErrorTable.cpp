@@ -1,4 +1,4 @@
-#include "sbsim/radio/FrameErrorTable.h"
+#include "sbsim/radio/channel/FrameErrorTable.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "sbsim/radio/ChannelMedium.h"
+#include "sbsim/radio/channel/ChannelMedium.h"
 
 #include <algorithm>
 #include <cmath>

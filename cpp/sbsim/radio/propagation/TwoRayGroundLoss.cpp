@@ -1,4 +1,4 @@
-#include "sbsim/radio/TwoRayGroundLoss.h"
+#include "sbsim/radio/propagation/TwoRayGroundLoss.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
-#include "sbsim/radio/ChannelSettings.h"
-#include "sbsim/radio/DccStateMachine.h"
-#include "sbsim/radio/FrameErrorTable.h"
 #include "sbsim/radio/Medium.h"
-#include "sbsim/radio/NakagamiFading.h"
-#include "sbsim/radio/Obstacles.h"
-#include "sbsim/radio/PathLoss.h"
+#include "sbsim/radio/channel/ChannelSettings.h"
+#include "sbsim/radio/channel/DccStateMachine.h"
+#include "sbsim/radio/channel/FrameErrorTable.h"
+#include "sbsim/radio/propagation/NakagamiFading.h"
+#include "sbsim/radio/propagation/Obstacles.h"
+#include "sbsim/radio/propagation/PathLoss.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 

@@ -1,4 +1,4 @@
-#include "sbsim/radio/NakagamiFading.h"
+#include "sbsim/radio/propagation/NakagamiFading.h"
 
 #include <cmath>
 

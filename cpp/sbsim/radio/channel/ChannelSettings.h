@@ -8,7 +8,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
-#include "sbsim/radio/PathLoss.h"
+#include "sbsim/radio/propagation/PathLoss.h"
 
 namespace sbsim::radio {
 

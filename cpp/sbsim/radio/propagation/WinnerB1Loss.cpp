@@ -1,4 +1,4 @@
-#include "sbsim/radio/WinnerB1Loss.h"
+#include "sbsim/radio/propagation/WinnerB1Loss.h"
 
 #include <algorithm>
 #include <cmath>

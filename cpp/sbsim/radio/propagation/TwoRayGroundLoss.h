@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sbsim/radio/FreeSpaceLoss.h"
-#include "sbsim/radio/PathLoss.h"
+#include "sbsim/radio/propagation/FreeSpaceLoss.h"
+#include "sbsim/radio/propagation/PathLoss.h"
 
 namespace sbsim::radio {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "sbsim/kernel/Simulation.h"
-#include "sbsim/radio/ChannelMedium.h"
 #include "sbsim/radio/Receiver.h"
+#include "sbsim/radio/channel/ChannelMedium.h"
 
 namespace sbsim::radio {
 namespace {

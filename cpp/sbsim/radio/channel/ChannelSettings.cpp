@@ -1,13 +1,13 @@
-#include "sbsim/radio/ChannelSettings.h"
+#include "sbsim/radio/channel/ChannelSettings.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "sbsim/radio/FrameErrorTable.h"
-#include "sbsim/radio/FreeSpaceLoss.h"
-#include "sbsim/radio/LogDistanceLoss.h"
-#include "sbsim/radio/TwoRayGroundLoss.h"
-#include "sbsim/radio/WinnerB1Loss.h"
+#include "sbsim/radio/channel/FrameErrorTable.h"
+#include "sbsim/radio/propagation/FreeSpaceLoss.h"
+#include "sbsim/radio/propagation/LogDistanceLoss.h"
+#include "sbsim/radio/propagation/TwoRayGroundLoss.h"
+#include "sbsim/radio/propagation/WinnerB1Loss.h"
 
 namespace sbsim::radio {
 

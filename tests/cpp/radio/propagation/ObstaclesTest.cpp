@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "sbsim/radio/Obstacles.h"
+#include "sbsim/radio/propagation/Obstacles.h"
 
 namespace sbsim::radio {
 namespace {

@@ -1,4 +1,4 @@
-#include "sbsim/radio/DccStateMachine.h"
+#include "sbsim/radio/channel/DccStateMachine.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "sbsim/radio/Obstacles.h"
+#include "sbsim/radio/propagation/Obstacles.h"
 
 #include <algorithm>
 #include <boost/geometry.hpp>

@@ -1,4 +1,4 @@
-#include "sbsim/radio/FreeSpaceLoss.h"
+#include "sbsim/radio/propagation/FreeSpaceLoss.h"
 
 #include <algorithm>
 #include <cmath>

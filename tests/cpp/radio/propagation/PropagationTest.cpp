@@ -5,15 +5,15 @@
 #include <cstdio>
 #include <numbers>
 
-#include "sbsim/radio/ChannelSettings.h"
 #include "sbsim/radio/CounterRandom.h"
 #include "sbsim/radio/Decibels.h"
-#include "sbsim/radio/FrameErrorTable.h"
-#include "sbsim/radio/FreeSpaceLoss.h"
-#include "sbsim/radio/LogDistanceLoss.h"
-#include "sbsim/radio/NakagamiFading.h"
-#include "sbsim/radio/TwoRayGroundLoss.h"
-#include "sbsim/radio/WinnerB1Loss.h"
+#include "sbsim/radio/channel/ChannelSettings.h"
+#include "sbsim/radio/channel/FrameErrorTable.h"
+#include "sbsim/radio/propagation/FreeSpaceLoss.h"
+#include "sbsim/radio/propagation/LogDistanceLoss.h"
+#include "sbsim/radio/propagation/NakagamiFading.h"
+#include "sbsim/radio/propagation/TwoRayGroundLoss.h"
+#include "sbsim/radio/propagation/WinnerB1Loss.h"
 
 namespace sbsim::radio {
 namespace {
