@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <functional>
 #include <map>
 #include <memory>
@@ -266,6 +267,79 @@ TEST(ChannelMedium, ResultsDoNotDependOnTheThreadCount) {
     }
     ASSERT_EQ(traces[0].size(), traces[1].size());
     EXPECT_TRUE(traces[0] == traces[1]);
+}
+
+/// The delivery ratio of an interference-free link with mean power `meanDbm`, integrated
+/// numerically: the received power is the mean plus log-normal shadowing (σ of `s`) plus, with
+/// Nakagami-m fading, 10 log10 G for G ~ Gamma(m, 1/m); a frame is detected at or above the
+/// sensing threshold and then decoded with probability 1 − FER(Eb/N0), Eb/N0 = SNR · B / R.
+double closedFormDelivery(const ChannelSettings& s, double meanDbm) {
+    const FrameErrorTable fer(s.ferTable);
+    const double ratioDb = 10 * std::log10(s.bandwidthHz / (s.rateMbps * 1e6));
+    const auto success = [&](double dbm) {
+        return dbm < s.sensingDbm ? 0.0 : 1.0 - fer.ferAtEbN0Db(dbm - s.noiseDbm + ratioDb);
+    };
+    // Fading gains (dB) and their weights: midpoints of G over (0, 40] (mean-one gamma density).
+    std::vector<std::pair<double, double>> gains{{0.0, 1.0}};
+    if (s.fading == ChannelSettings::Fading::Nakagami) {
+        gains.clear();
+        const double m = s.nakagamiM;
+        constexpr int kSteps = 4000;
+        const double dg = 40.0 / kSteps;
+        const double norm = std::pow(m, m) / std::tgamma(m);
+        for (int k = 0; k < kSteps; ++k) {
+            const double g = (k + 0.5) * dg;
+            gains.emplace_back(10 * std::log10(g), norm * std::pow(g, m - 1) * std::exp(-m * g) * dg);
+        }
+    }
+    // Shadowing: midpoints over ±8 σ.
+    constexpr int kShadowSteps = 1600;
+    const double sigma = s.shadowingSigmaDb;
+    const double dx = 16 * sigma / kShadowSteps;
+    double total = 0;
+    double weights = 0;
+    for (int i = 0; i < kShadowSteps; ++i) {
+        const double x = -8 * sigma + (i + 0.5) * dx;
+        const double wx = std::exp(-0.5 * x * x / (sigma * sigma));
+        for (const auto& [gainDb, wg] : gains) {
+            total += wx * wg * success(meanDbm + x + gainDb);
+            weights += wx * wg;
+        }
+    }
+    return total / weights;
+}
+
+/// One sender alone, listeners at 50 … 450 m that never send: the share of 20,000 frames each
+/// decodes, against closedFormDelivery.
+void expectClosedForm(const ChannelSettings& s) {
+    std::vector<std::pair<std::string, double>> stations{{"tx", 0}};
+    for (int d = 50; d <= 450; d += 50) stations.emplace_back(fmt::format("at{}", d), d);
+    Bench b(stations, s);
+    constexpr int kFrames = 20000;
+    for (int k = 0; k < kFrames; ++k) b.send(SimTime::fromMilliseconds(2 * k), "tx");
+    b.run(SimTime::fromMilliseconds(2 * kFrames + 10));
+    ASSERT_EQ(b.medium->transmissions(), static_cast<std::uint64_t>(kFrames));
+    int partial = 0;  // distances where the curve falls: the comparison is not between zeros and ones
+    for (int d = 50; d <= 450; d += 50) {
+        const double expected = closedFormDelivery(s, b.medium->meanPowerDbm(d));
+        partial += expected > 0.05 && expected < 0.95;
+        const double got = static_cast<double>(b.got(fmt::format("at{}", d), "tx")) / kFrames;
+        // 20,000 frames: a standard error of at most 0.0035.
+        EXPECT_NEAR(got, expected, 0.01) << d << " m";
+    }
+    EXPECT_GE(partial, 2);
+}
+
+TEST(ChannelMediumClosedForm, InterferenceFreeDeliveryWithShadowing) {
+    ChannelSettings s;  // Sepulcre et al.: WINNER+ B1, σ = 3 dB, no fading
+    expectClosedForm(s);
+}
+
+TEST(ChannelMediumClosedForm, InterferenceFreeDeliveryWithShadowingAndNakagamiFading) {
+    ChannelSettings s;
+    s.fading = ChannelSettings::Fading::Nakagami;
+    s.nakagamiM = 1.5;
+    expectClosedForm(s);
 }
 
 }  // namespace
