@@ -200,8 +200,8 @@ void CommandLine::declareOptions(CLI::App& app) {
         ->type_name("FILE.toml");
     auto* messagesOption = app.add_option("--messages", messages,
                                           "write every transmission and reception (and, when asked,\n"
-                                          "lost reception) as JSON Lines, or as Parquet for FILE.parquet")
-                               ->type_name("FILE.jsonl|.parquet");
+                                          "lost reception) as JSON Lines, or as Parquet for a .parquet")
+                               ->type_name("FILE.jsonl");
     app.add_option("--messages-types", messagesTypes,
                    "the trace keeps only these message types, e.g. CAM,DENM\n"
                    "(default: all; denm lines count as DENM)")
