@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import os
 import subprocess
+import time
 from pathlib import Path
 
 import pandas as pd
@@ -287,3 +288,57 @@ def test_the_report_reads_a_parquet_trace(grid: Path, full: Path, tmp_path: Path
     # JSON Lines rounds distances to 0.01 m: a reception on a bin's edge may fall on its other side.
     assert left["received"].sum() + left["lost"].sum() == right["received"].sum() + right["lost"].sum()
     assert (left["pdr"] - right["pdr"]).abs().max() < 0.05
+
+
+def test_an_interrupted_parquet_trace_is_left_closed_and_readable(grid: Path, tmp_path: Path) -> None:
+    """SIGINT mid-run: exit 130, no FILE.parquet, and FILE.parquet.incomplete a whole Parquet file with what
+    was traced (the writer ignores the signal; sbsim ends its input and it writes the footer)."""
+    import signal
+
+    import pyarrow.parquet as pq
+    from sbsim_helpers import write_story
+
+    marker = tmp_path / "ready"
+    # At its 12th step the story says it is under way, then waits for the signal (KeyboardInterrupt).
+    story = write_story(
+        tmp_path,
+        f"""
+        import time
+        import numpy as np
+        import storyboard
+
+        class Waits(storyboard.Condition):
+            steps = 0
+
+            def test_all(self, snapshot):
+                Waits.steps += 1
+                if Waits.steps == 12:
+                    open({str(marker)!r}, "w").close()
+                    while True:
+                        time.sleep(0.01)
+                return np.zeros(len(snapshot), bool)
+
+        def createStories(board):
+            board.registerStory(storyboard.Story(Waits(), []))
+        """,
+    )
+    out = tmp_path / "m.parquet"
+    args = [str(executable()), "--sumocfg", str(grid), "--story", str(story), "--quiet"]
+    args += ["--services", str(grid.parent / "services.xml"), "--messages", str(out)]
+    proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 120
+        while not marker.exists() and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)  # polling for the marker, not waiting for a guess of the run's speed
+        assert marker.exists(), "the story never got under way"
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130, err
+    assert not out.exists()
+    left = Path(f"{out}.incomplete")
+    table = pq.read_table(left)
+    assert table.num_rows > 0 and {"t", "event", "station"} <= set(table.column_names)
+    assert set(table.column("event").to_pylist()) >= {"tx", "rx"}
+    assert max(table.column("t").to_pylist()) <= 12.0
