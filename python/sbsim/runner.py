@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from sbsim.events import EVENT_FIELDS, WORLD_EVENT_TYPES, EventLogError, read_events
-from sbsim.messages import MESSAGE_FIELDS, read_messages
+from sbsim.messages import MESSAGE_FIELDS, read_message_lines, read_messages
 from sbsim.summary import SummaryError, read_summary
 
 __all__ = [
@@ -30,6 +30,7 @@ __all__ = [
     "executable",
     "main",
     "read_events",
+    "read_message_lines",
     "read_messages",
     "read_summary",
     "run",

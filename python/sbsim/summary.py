@@ -8,6 +8,8 @@ The program writes one JSON object at the end of a run::
      "stories": [{"name": "rain", "activations": 12, "active_vehicle_seconds": 340.0}],
      "signals": {"cause": count}, "services_created": 3,
      "messages": {"Type": {"sent": 10, "delivered": 8}},
+     "message_trace": {"format": "parquet", "lines": 5000, "bytes": 81234, "max_bytes": 2000000000,
+                       "truncated": false, "truncated_at": null},
      "statistics": {"name": {"count": 3, "sum": 9.0, "mean": 3.0, "min": -2.0, "max": 7.0}},
      "criteria": [{"name": "NoCollision()", "passed": true, "actual": "...", "expected": "..."}],
      "verdict": "passed",
@@ -103,6 +105,7 @@ RUN_FIELDS = (
     ("vehicles_seen", "vehicles seen"),
     ("peak_running", "peak running"),
     ("messages", "messages"),
+    ("message_trace", "message trace"),
     ("timing", "timing"),
 )
 
@@ -129,6 +132,10 @@ def table_columns(summary: Summary) -> dict[str, Any]:
         row[f"delivered:{kind}"] = counts["delivered"]
         if "mean_receivers" in counts:
             row[f"mean_receivers:{kind}"] = counts["mean_receivers"]
+    trace = summary.get("message_trace")
+    if isinstance(trace, dict):
+        # None: the trace is whole; a time: the budget ended it there.
+        row["messages_truncated_at"] = trace.get("truncated_at")
     if "channel_busy_ratio" in summary:
         row["cbr_mean"] = summary["channel_busy_ratio"]["mean"]
         row["cbr_max"] = summary["channel_busy_ratio"]["max"]

@@ -17,7 +17,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
-from sbsim.messages import read_messages
+from sbsim.messages import read_message_lines
 from sbsim.runner import run
 from sbsim.scenarios.grid import make_grid
 from sbsim_helpers import assert_no_crash
@@ -51,7 +51,7 @@ def cam_run(grid: Path, folder: Path, ca_attributes: str = "") -> tuple[dict[str
     assert_no_crash(result)
     assert result.returncode == 0, result.stderr
     cams: dict[str, list[float]] = {}
-    for line in read_messages(messages):
+    for line in read_message_lines(messages):
         if line["event"] == "tx" and line["type"] == "CAM":
             cams.setdefault(line["station"], []).append(line["t"])
     # sbsim.fcd leaves the angle out: read it here. SUMO labels a state with the step's start time,

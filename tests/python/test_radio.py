@@ -12,7 +12,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from sbsim.runner import RunResult, read_messages, run
+from sbsim.runner import RunResult, read_message_lines, read_messages, run
 from sbsim.sumo import sumo_binary
 from sbsim_helpers import STORIES, assert_bad_input, assert_no_crash, message_counts
 
@@ -91,8 +91,8 @@ def test_a_building_between_two_vehicles_blocks_them(tmp_path: Path, radio_file:
     # 150 m apart at 1 m/s, either side of x 110..140 (the park polygon at 300 m is not a building).
     cfg = highway(tmp_path / "road", [50.0, 200.0], 1.0, building=building)
     messages = tmp_path / "messages.jsonl"
-    result = beacon_run(cfg, tmp_path, "--messages", str(messages))
-    lines = read_messages(messages)
+    result = beacon_run(cfg, tmp_path, "--messages", str(messages), "--messages-events", "tx,rx,lost")
+    lines = read_message_lines(messages)
     rx = [line for line in lines if line["event"] == "rx"]
     lost = [line for line in lines if line["event"] == "lost"]
     tx = [line for line in lines if line["event"] == "tx"]
@@ -115,8 +115,18 @@ def test_trace_counts_agree_with_the_summary(tmp_path: Path, radio_file: Path) -
     cfg = highway(tmp_path / "road", positions, 10.0, building=False)
     messages = tmp_path / "messages.jsonl"
     summary = tmp_path / "summary.json"
-    result = beacon_run(cfg, tmp_path, "--messages", str(messages), "--summary", str(summary), end=2.0)
-    lines = read_messages(messages)
+    result = beacon_run(
+        cfg,
+        tmp_path,
+        "--messages",
+        str(messages),
+        "--messages-events",
+        "tx,rx,lost",
+        "--summary",
+        str(summary),
+        end=2.0,
+    )
+    lines = read_message_lines(messages)
     times = [line["t"] for line in lines]
     assert times == sorted(times)
     counts = {event: sum(line["event"] == event for line in lines) for event in ("tx", "rx", "lost")}
@@ -147,6 +157,8 @@ def test_traces_are_identical_with_one_thread_and_two(tmp_path: Path, radio_file
             tmp_path,
             "--messages",
             str(messages),
+            "--messages-events",
+            "tx,rx,lost",
             "--threads",
             threads,
             "--param",
@@ -204,7 +216,7 @@ def test_the_disc_model_traces_range_and_fade_losses(tmp_path: Path) -> None:
     )
     assert_no_crash(result)
     assert result.returncode == 0, result.stderr
-    lines = read_messages(messages)
+    lines = read_message_lines(messages)
     times = [line["t"] for line in lines]
     assert times == sorted(times)
     rx = [line for line in lines if line["event"] == "rx"]
@@ -243,7 +255,9 @@ def test_a_study_sweeps_radio_power_and_keeps_the_messages(tmp_path: Path, radio
     assert set(table.columns) >= {"sent:Beacon", "delivered:Beacon", "mean_receivers:Beacon", "cbr_mean", "cbr_max"}
     low, high = (table[table["radio_power_dbm"] == p].iloc[0] for p in (10, 30))
     assert high["mean_receivers:Beacon"] > low["mean_receivers:Beacon"]  # more power, more range
-    messages = pd.read_parquet(tmp_path / "results" / "messages.parquet")
-    assert set(messages["event"]) >= {"tx", "rx"}
-    per_run = messages[messages["event"] == "rx"].groupby("radio_power_dbm").size()
+    # One Parquet dataset of the runs' traces, partitioned by run; parameters from runs.parquet.
+    assert sorted(p.name for p in (tmp_path / "results" / "messages").iterdir()) == sorted(f"run={r.id}" for r in runs)
+    assert set(read_messages(tmp_path / "results" / "messages", columns=["event"])["event"]) >= {"tx", "rx"}
+    received = read_messages(tmp_path / "results" / "messages", columns=["run", "t"], filters=[("event", "==", "rx")])
+    per_run = received.merge(table[["run", "radio_power_dbm"]], on="run").groupby("radio_power_dbm").size()
     assert per_run[10] == low["delivered:Beacon"] and per_run[30] == high["delivered:Beacon"]

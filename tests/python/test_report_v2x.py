@@ -40,7 +40,15 @@ def _motorway(out: Path, end: float, *extra: str) -> list[dict[str, Any]]:
         events=out / "events.jsonl",
         end=end,
         sumo_options=[f"--fcd-output {out / 'fcd.xml'}"],
-        extra=["--services", str(MOTORWAY / "services.xml"), "--messages", str(out / "messages.jsonl"), *extra],
+        extra=[
+            "--services",
+            str(MOTORWAY / "services.xml"),
+            "--messages",
+            str(out / "messages.jsonl"),
+            "--messages-events",
+            "tx,rx,lost,denm",
+            *extra,
+        ],
         quiet=True,
         timeout=300,
     )

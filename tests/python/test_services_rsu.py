@@ -10,7 +10,7 @@ import math
 from pathlib import Path
 
 import pytest
-from sbsim.messages import read_messages
+from sbsim.messages import read_message_lines
 from sbsim.runner import run
 from sbsim.scenarios.grid import make_grid
 from sbsim_helpers import assert_bad_input, assert_no_crash, message_counts, read_fcd
@@ -52,7 +52,7 @@ def test_roadside_units_send_cams_and_a_denm_to_the_vehicles_in_range(grid: Path
     assert result.returncode == 0, result.stderr
     assert "roadside units: 3" in result.stdout
     fcd = read_fcd(fcd_file, step=1.0)
-    lines = read_messages(messages)
+    lines = read_message_lines(messages)
     units = {"rsu0": UNIT, **POIS}
 
     # Every unit: a CAM at its first trigger (its own clock: within the first 0.1 s), then every

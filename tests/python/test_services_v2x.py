@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from sbsim.messages import read_messages
+from sbsim.messages import read_message_lines
 from sbsim.runner import RunResult, read_events, run
 from sbsim_helpers import STORIES, FcdTrace, assert_bad_input, assert_no_crash, message_counts, read_fcd, write_story
 
@@ -22,7 +22,7 @@ CAP = 15.0  # story.py: SpeedEffect(15.0)
 
 def read_denm(path: Path) -> list[dict]:
     """The DENM phase lines of a message trace (its tx, rx and lost lines left out)."""
-    return [line for line in read_messages(path) if line["event"] == "denm"]
+    return [line for line in read_message_lines(path) if line["event"] == "denm"]
 
 
 def run_motorway(

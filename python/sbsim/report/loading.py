@@ -7,7 +7,7 @@ import xml.sax
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import pandas as pd
 import sumolib
@@ -16,6 +16,8 @@ from sbsim.events import EventLogError, read_events
 from sbsim.fcd import FcdError, read_fcd
 from sbsim.messages import read_messages
 from sbsim.summary import SummaryError, read_summary
+
+_T = TypeVar("_T")
 
 
 class ReportError(ValueError):
@@ -83,9 +85,7 @@ def load_summary(path: str | os.PathLike[str]) -> dict[str, Any]:
         raise ReportError(str(e)) from e
 
 
-def _load_lines(
-    path: str | os.PathLike[str], read: Callable[[str | os.PathLike[str]], list[dict[str, Any]]]
-) -> list[dict[str, Any]]:
+def _load_lines(path: str | os.PathLike[str], read: Callable[[str | os.PathLike[str]], _T]) -> _T:
     """A JSON Lines file read by `read`, its failures as one-line ReportErrors."""
     try:
         return read(path)
@@ -112,6 +112,11 @@ def load_fcd(path: str | os.PathLike[str], fallback_step: float = 1.0) -> pd.Dat
         raise ReportError(str(e)) from e
 
 
-def load_messages(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
-    """The run's message trace (:func:`sbsim.messages.read_messages`)."""
-    return _load_lines(path, read_messages)
+#: The trace's columns the V2X panels read (:mod:`sbsim.report.v2x`).
+MESSAGE_COLUMNS = ("t", "event", "type", "station", "sender", "distance", "cbr")
+
+
+def load_messages(path: str | os.PathLike[str]) -> pd.DataFrame:
+    """The run's message trace (JSON Lines or Parquet), only the columns the V2X panels read
+    (:func:`sbsim.messages.read_messages`), so a trace of millions of lines fits in memory."""
+    return _load_lines(path, lambda p: read_messages(p, columns=MESSAGE_COLUMNS))

@@ -53,7 +53,8 @@ def messages_per_type(messages: Messages, bin_seconds: float = 1.0) -> pd.DataFr
 def delivery_by_distance(messages: Messages, bin_metres: float = DISTANCE_BIN) -> pd.DataFrame:
     """Per message type and distance bin (``distance`` is the bin's lower edge): ``received``, ``lost`` and
     ``pdr`` = received / (received + lost). Bins beyond the farthest lost reception the trace kept are left
-    out: past ``--messages-range`` the trace does not say what was lost."""
+    out: past ``--messages-range`` the trace does not say what was lost; a trace with no lost line at all
+    (lost receptions are traced only when asked for) gives an empty table."""
     frame = messages_frame(messages)
     heard = frame[frame["event"].isin(["rx", "lost"]) & frame["distance"].notna()]
     if heard.empty:
@@ -67,8 +68,10 @@ def delivery_by_distance(messages: Messages, bin_metres: float = DISTANCE_BIN) -
     )
     table.columns.name = None
     kept = heard[heard["event"] == "lost"]["distance"]
-    if len(kept):
-        table = table[table["distance"] <= (kept.max() // bin_metres) * bin_metres]
+    if not len(kept):
+        # A trace without lost lines (the default: --messages-events without lost) says nothing of losses.
+        return pd.DataFrame(columns=["type", "distance", "received", "lost", "pdr"])
+    table = table[table["distance"] <= (kept.max() // bin_metres) * bin_metres]
     table["pdr"] = table["received"] / (table["received"] + table["lost"])
     return table.sort_values(["type", "distance"]).reset_index(drop=True)
 

@@ -47,7 +47,7 @@ def plot_delivery(delivery: pd.DataFrame) -> Figure:
     ax.set_ylabel("delivery ratio")
     ax.set_ylim(-0.02, 1.02)
     if delivery.empty:
-        _empty(ax, "no receptions in the trace")
+        _empty(ax, "no receptions and losses in the trace (trace lost receptions: --messages-events tx,rx,lost,denm)")
         return fig
     width = float(delivery["distance"].diff().where(lambda d: d > 0).min() or 50.0)
     for i, (kind, rows) in enumerate(delivery.groupby("type", sort=True)):

@@ -14,7 +14,7 @@ The TOML names the scenario, the seeds and the parameter values (paths relative 
     rain_speed = [5, 10, 15]
     [outputs]
     directory = "results/rain"
-    messages = false                    # true: every run's --messages trace, and messages.parquet
+    messages = false                    # true: every run's --messages trace (Parquet), and messages/
     statistics = false                  # true: every run's --statistics file, and statistics.parquet
 
 Each run is one ``sbsim`` process (crash isolation; SUMO is not re-entrant) started by a Dask task,
@@ -29,7 +29,8 @@ is made absolute; other words are passed as written. A run whose folder still ho
 again, so an interrupted study resumes where it stopped; SIGINT (Ctrl-C) or SIGTERM stops the runs
 under way and exits with 130. At the end ``runs.parquet`` (one row per run) and ``events.parquet``
 (every event with its run's parameters and seed) are written beside them, and with ``messages = true``
-``messages.parquet`` (every line of the runs' message traces, likewise), with ``statistics = true``
+``messages/`` (the runs' Parquet message traces as one dataset partitioned by ``run``: join with
+runs.parquet for parameters and seed; read it with :func:`sbsim.messages.read_messages`), with ``statistics = true``
 ``statistics.parquet`` (every value the runs recorded, likewise).
 
 The package, one job a module: :mod:`~sbsim.study.spec` (the TOML file and its runs),

@@ -38,7 +38,7 @@ RESULT = "result.json"
 
 def outputs(spec: StudySpec) -> tuple[str, ...]:
     """The files sbsim writes into each run's folder for the study (checked when the study resumes)."""
-    kept = (("messages.jsonl",) if spec.messages else ()) + (("statistics.parquet",) if spec.statistics else ())
+    kept = (("messages.parquet",) if spec.messages else ()) + (("statistics.parquet",) if spec.statistics else ())
     return ("events.jsonl", "summary.json", *kept)
 
 

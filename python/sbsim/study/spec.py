@@ -245,7 +245,7 @@ class StudySpec:
         for plugin in self.plugins:
             cmd += ["--plugin", str(plugin)]
         if self.messages:
-            cmd += ["--messages", str(folder / "messages.jsonl")]
+            cmd += ["--messages", str(folder / "messages.parquet")]
         if self.statistics:
             cmd += ["--statistics", str(folder / "statistics.parquet")]
         if self.end is not None:

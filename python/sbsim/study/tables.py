@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import os
+import shutil
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from sbsim.events import read_events
-from sbsim.messages import read_messages
 from sbsim.study.spec import Run, StudyError, StudySpec
 
 #: Exit codes of runs that went to their end: 0, and 3 (a scenario criterion failed; the verdict is a column).
@@ -26,25 +27,44 @@ def table_of(records: Sequence[dict[str, Any]]) -> Any:
 
 def write_tables(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
     """runs.parquet (one row per run), events.parquet (the complete runs' events, every field) and, when
-    the study keeps them, messages.parquet (their message traces, every field) and statistics.parquet."""
+    the study keeps them, messages/ (their message traces, a dataset partitioned by run) and statistics.parquet."""
     import pyarrow.parquet as pq
 
     spec.directory.mkdir(parents=True, exist_ok=True)
     pq.write_table(table_of(list(rows)), spec.directory / "runs.parquet")
-    readers = {"events": read_events, "messages": read_messages} if spec.messages else {"events": read_events}
-    for name, read in readers.items():
-        lines: list[dict[str, Any]] = []
-        for r, row in zip(runs, rows, strict=True):
-            if row["exit_code"] not in COMPLETE:
-                continue
-            path = spec.directory / "runs" / r.id / f"{name}.jsonl"
-            if not path.exists():
-                continue
-            context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
-            lines.extend({**context, **line} for line in read(path))
-        pq.write_table(table_of(lines), spec.directory / f"{name}.parquet")
+    lines: list[dict[str, Any]] = []
+    for r, row in zip(runs, rows, strict=True):
+        path = spec.directory / "runs" / r.id / "events.jsonl"
+        if row["exit_code"] not in COMPLETE or not path.exists():
+            continue
+        context = {"run": r.id, **dict(r.parameters), "seed": r.seed}
+        lines.extend({**context, **line} for line in read_events(path))
+    pq.write_table(table_of(lines), spec.directory / "events.parquet")
+    if spec.messages:
+        write_messages(spec, runs, rows)
     if spec.statistics:
         write_statistics(spec, runs, rows)
+
+
+def write_messages(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:
+    """messages/: every complete run's Parquet message trace as one dataset partitioned by run,
+    ``messages/run=<id>/part-0.parquet``, each a hard link to the run's own ``messages.parquet`` (a copy where
+    the file system has none), so no trace is read or held: a run's parameters and seed are its row of
+    runs.parquet (join on ``run``). :func:`sbsim.messages.read_messages` reads it, by columns and filters."""
+    target = spec.directory / "messages"
+    shutil.rmtree(target, ignore_errors=True)
+    (spec.directory / "messages.parquet").unlink(missing_ok=True)  # the single table of earlier versions
+    target.mkdir(parents=True)
+    for r, row in zip(runs, rows, strict=True):
+        source = spec.directory / "runs" / r.id / "messages.parquet"
+        if row["exit_code"] not in COMPLETE or not source.is_file():
+            continue
+        part = target / f"run={r.id}"
+        part.mkdir()
+        try:
+            os.link(source, part / "part-0.parquet")
+        except OSError:
+            shutil.copyfile(source, part / "part-0.parquet")
 
 
 def write_statistics(spec: StudySpec, runs: Sequence[Run], rows: Sequence[dict[str, Any]]) -> None:

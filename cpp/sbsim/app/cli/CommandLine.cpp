@@ -4,12 +4,14 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <functional>
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/inputs/SumoWords.h"
+#include "sbsim/app/outputs/MessageTraceFilter.h"
 #include "sbsim/kernel/StudyParameters.h"
 
 namespace sbsim::app {
@@ -62,6 +64,44 @@ std::optional<GuiScreenshot> parseScreenshot(const std::string& text) {
     const auto [ptr, ec] = std::from_chars(begin, begin + colon, t);
     if (ec != std::errc() || ptr != begin + colon || !std::isfinite(t) || t < 0 || t > kMaxSeconds) return std::nullopt;
     return GuiScreenshot{t, text.substr(colon + 1)};
+}
+
+/// A size in bytes: a whole number with an optional suffix k, M, G or T (powers of 1000, as disks
+/// are sold; an optional B after it), or "none" for no limit. At least 1 kB: a smaller trace
+/// holds nothing useful.
+std::optional<std::uint64_t> parseByteSize(std::string text) {
+    if (text == "none") return UINT64_MAX;
+    if (!text.empty() && (text.back() == 'B' || text.back() == 'b')) text.pop_back();
+    std::uint64_t scale = 1;
+    if (!text.empty()) {
+        switch (text.back()) {
+            case 'k':
+            case 'K':
+                scale = 1'000;
+                break;
+            case 'm':
+            case 'M':
+                scale = 1'000'000;
+                break;
+            case 'g':
+            case 'G':
+                scale = 1'000'000'000;
+                break;
+            case 't':
+            case 'T':
+                scale = 1'000'000'000'000;
+                break;
+            default:
+                break;
+        }
+        if (scale != 1) text.pop_back();
+    }
+    std::uint64_t n = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, n);
+    if (text.empty() || ec != std::errc() || ptr != end || n > UINT64_MAX / scale) return std::nullopt;
+    if (n * scale < 1000) return std::nullopt;
+    return n * scale;
 }
 
 }  // namespace
@@ -158,14 +198,60 @@ void CommandLine::declareOptions(CLI::App& app) {
                    "interference, CSMA/CA, DCC) with this settings file, instead\n"
                    "of the --v2x-* disc; study parameters radio_<key> override it")
         ->type_name("FILE.toml");
-    app.add_option("--messages", messages, "write every transmission, reception and loss as JSON Lines")
-        ->type_name("FILE.jsonl");
+    auto* messagesOption = app.add_option("--messages", messages,
+                                          "write every transmission and reception (and, when asked,\n"
+                                          "lost reception) as JSON Lines, or as Parquet for a .parquet")
+                               ->type_name("FILE.jsonl");
+    app.add_option("--messages-types", messagesTypes,
+                   "the trace keeps only these message types, e.g. CAM,DENM\n"
+                   "(default: all; denm lines count as DENM)")
+        ->type_name("TYPE,...")
+        ->delimiter(',')
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->allow_extra_args(false)
+        ->needs(messagesOption)
+        ->check(CLI::Validator(
+            [](std::string& word) -> std::string {
+                if (word.empty() || word.find(' ') != std::string::npos)
+                    return fmt::format("expects message type names separated by commas, got '{}'", word);
+                return {};
+            },
+            ""));
+    app.add_option("--messages-events", messagesEvents,
+                   "the trace keeps only these events: tx, rx, lost, denm\n"
+                   "(default: tx,rx,denm; lost receptions only when named here,\n"
+                   "or with --messages-range)")
+        ->type_name("EVENT,...")
+        ->delimiter(',')
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->allow_extra_args(false)
+        ->needs(messagesOption)
+        ->check(CLI::Validator(
+            [](std::string& word) -> std::string {
+                if (MessageTraceFilter::eventNamed(word)) return {};
+                return fmt::format("expects events among {}, got '{}'", MessageTraceFilter::eventNames(), word);
+            },
+            ""));
     app.add_option("--messages-range", messagesRange,
-                   "lost receptions go to --messages for stations this close to\n"
-                   "the sender (default: the radio file's trace_range, 500 m;\n"
+                   "trace lost receptions, for stations this close to the\n"
+                   "sender (default: the radio file's trace_range, 500 m;\n"
                    "the disc model: 1000 m)")
         ->type_name("METRES")
         ->check(metres(true));
+    app.add_option_function<std::string>(
+           "--messages-max-bytes", [this](const std::string& text) { messagesMaxBytes = *parseByteSize(text); },
+           "the trace stops (with a warning; the run goes on) before it\n"
+           "passes this size: bytes, or with k, M, G, T (powers of 1000);\n"
+           "none: no limit (default: 2G)")
+        ->type_name("SIZE")
+        ->needs(messagesOption)
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                if (parseByteSize(text)) return {};
+                return fmt::format("expects a size of at least 1000 bytes such as 500M or 2G (or none), got '{}'",
+                                   text);
+            },
+            ""));
     app.add_flag("--storyboard-equipped-only", storyboardEquippedOnly,
                  "stories see only equipped vehicles, as egos and as others\n"
                  "(as in Artery, where only vehicles with a middleware take part)");
@@ -241,10 +327,29 @@ void CommandLine::complete(std::vector<std::string> sumoArgs) {
                                 [](const std::string& w) { return w == "--delay" || w == "-d"; })) {
         throw UsageError("--gui-delay: SUMO's --delay is given too (through --sumo-option or after --); give one");
     }
+    if (messagesRange && !messagesEvents.empty() &&
+        std::find(messagesEvents.begin(), messagesEvents.end(), "lost") == messagesEvents.end()) {
+        throw UsageError(
+            "--messages-range: it says how far lost receptions are traced, but --messages-events "
+            "leaves out lost");
+    }
     if (v2xFadeStart && *v2xFadeStart > v2xRange) {
         throw UsageError(fmt::format("--v2x-fade-start: the fade start ({:g} m) must not exceed --v2x-range ({:g} m)",
                                      *v2xFadeStart, v2xRange));
     }
+}
+
+bool CommandLine::messagesLost() const {
+    if (messagesEvents.empty()) return messagesRange.has_value();
+    return std::find(messagesEvents.begin(), messagesEvents.end(), "lost") != messagesEvents.end();
+}
+
+bool CommandLine::messagesParquet() const {
+    if (!messages) return false;
+    std::string extension = messages->extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".parquet";
 }
 
 const std::map<std::string, std::string, std::less<>>& CommandLine::optionParameters() {

@@ -46,11 +46,16 @@ struct CommandLine {
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors
     double penetration = 1.0;                       ///< share of vehicles with V2X equipment
     std::optional<std::filesystem::path> radio;     ///< 802.11p channel model settings (TOML); none: the disc
-    std::optional<std::filesystem::path> messages;  ///< the message trace (JSON Lines)
+    std::optional<std::filesystem::path> messages;  ///< the message trace (JSON Lines; Parquet for *.parquet)
     std::optional<double> messagesRange;            ///< m; lost lines only this close to the sender
-    bool storyboardEquippedOnly = false;            ///< stories see only equipped vehicles
-    std::optional<std::filesystem::path> sumoLog;   ///< every SUMO warning, as SUMO printed it
-    bool verbose = false;                           ///< every SUMO warning on stderr, not the first few of a kind
+    std::vector<std::string> messagesTypes;         ///< message types the trace keeps; none: all
+    std::vector<std::string> messagesEvents;        ///< events the trace keeps; none given: the default
+    /// Bytes the trace may take; then it stops (the run goes on). UINT64_MAX: no limit.
+    std::uint64_t messagesMaxBytes = kDefaultMessagesMaxBytes;
+    static constexpr std::uint64_t kDefaultMessagesMaxBytes = 2'000'000'000;
+    bool storyboardEquippedOnly = false;           ///< stories see only equipped vehicles
+    std::optional<std::filesystem::path> sumoLog;  ///< every SUMO warning, as SUMO printed it
+    bool verbose = false;                          ///< every SUMO warning on stderr, not the first few of a kind
     bool quiet = false;
     unsigned threads = 0;                       ///< threads reading the per-step snapshot; 0 = all cores
     bool noSnapshot = false;                    ///< step SUMO only (a benchmark baseline)
@@ -64,6 +69,12 @@ struct CommandLine {
     /// After parsing: appends `sumoArgs` (the words after `--`) to the SUMO words, taking SUMO's
     /// `-c FILE` from them as the sumocfg, and checks what single options cannot. Throws UsageError.
     void complete(std::vector<std::string> sumoArgs);
+
+    /// Whether the message trace keeps lost receptions: asked for by --messages-events, or by
+    /// --messages-range alone (which says how far), as before lost lines became optional.
+    bool messagesLost() const;
+    /// --messages names a Parquet file (*.parquet).
+    bool messagesParquet() const;
 
     /// Study parameters that set an option of the same name (`--param v2x_range=300` is
     /// `--v2x-range 300`), so that a study can sweep them: name -> option.

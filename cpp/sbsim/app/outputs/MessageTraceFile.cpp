@@ -2,83 +2,62 @@
 
 #include <fmt/format.h>
 
-#include <nlohmann/json.hpp>
-#include <variant>
+#include <cstdio>
 
 namespace sbsim::app {
 
-namespace {
-std::string jsonText(std::string_view s) { return nlohmann::json(std::string(s)).dump(); }
-}  // namespace
+MessageTraceFile::MessageTraceFile(std::unique_ptr<TraceWriter> writer, MessageTraceFilter filter,
+                                   std::uint64_t maxBytes)
+    : writer_(std::move(writer)), filter_(std::move(filter)), maxBytes_(maxBytes) {}
 
-std::string MessageTraceFile::format(const radio::TraceLine& l) {
-    using Event = radio::TraceLine::Event;
-    std::string s = fmt::format(R"({{"t":{},"event":"{}","type":{},"station":{})", l.t.str(),
-                                l.event == Event::Tx   ? "tx"
-                                : l.event == Event::Rx ? "rx"
-                                                       : "lost",
-                                jsonText(l.message->typeName()), jsonText(l.station));
-    if (l.event != Event::Tx) s += fmt::format(R"(,"sender":{})", jsonText(l.sender));
-    s += fmt::format(R"(,"seq":{})", l.seq);
-    switch (l.event) {
-        case Event::Tx:
-            s += fmt::format(R"(,"bytes":{},"x":{:.2f},"y":{:.2f})", l.message->byteSize(), l.x, l.y);
-            if (l.cbr) s += fmt::format(R"(,"cbr":{:.4f})", *l.cbr);
-            break;
-        case Event::Rx:
-            s += fmt::format(R"(,"distance":{:.2f},"delay":{:.9f})", l.distance, l.delay);
-            if (l.powerDbm) s += fmt::format(R"(,"power_dbm":{:.2f})", *l.powerDbm);
-            if (l.sinrDb) s += fmt::format(R"(,"sinr_db":{:.2f})", *l.sinrDb);
-            break;
-        case Event::Lost:
-            s += fmt::format(R"(,"distance":{:.2f},"reason":"{}")", l.distance, radio::lossReasonName(l.reason));
-            break;
+void MessageTraceFile::emit(const TraceRecord& record) {
+    if (truncatedAt_) return;
+    if (writer_->write(record, maxBytes_)) {
+        ++lines_;
+        return;
     }
-    for (const radio::TraceField& field : l.message->traceFields()) {
-        s += fmt::format(",{}:", jsonText(field.name));
-        std::visit(
-            [&](const auto& v) {
-                if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) {
-                    s += jsonText(v);
-                } else {
-                    s += nlohmann::json(v).dump();
-                }
-            },
-            field.value);
-    }
-    s += '}';
-    return s;
+    truncatedAt_ = record.t;
+    std::fprintf(stderr,
+                 "sbsim: warning: --messages: the trace reached --messages-max-bytes (%llu bytes) at t=%s s; the "
+                 "run goes on without tracing\n",
+                 static_cast<unsigned long long>(maxBytes_), truncatedAt_->str().c_str());
+    std::fflush(stderr);
 }
 
 void MessageTraceFile::writeUpTo(kernel::SimTime now) {
-    while (!pending_.empty() && pending_.top().t <= now) {
-        out_ << pending_.top().text << '\n';
+    while (!pending_.empty() && pending_.top().record.t <= now) {
+        emit(pending_.top().record);
         pending_.pop();
     }
+    if (truncatedAt_) pending_ = {};  // nothing waiting will be written
 }
 
 void MessageTraceFile::record(const radio::TraceLine& line, kernel::SimTime now) {
+    if (truncatedAt_ || !filter_.keeps(TraceRecord::eventOf(line.event), line.message->typeName())) return;
     // Nothing reported later can be earlier than now, so what waits up to now can go.
     writeUpTo(now);
     if (line.t <= now && pending_.empty()) {
-        out_ << format(line) << '\n';
+        emit(TraceRecord::of(line));
         return;
     }
-    pending_.push({line.t, order_++, format(line)});
+    pending_.push({TraceRecord::of(line), order_++});
     writeUpTo(now);
 }
 
 void MessageTraceFile::denmPhase(const facilities::DenmPhaseEvent& event) {
+    if (truncatedAt_ || !filter_.keeps(MessageTraceFilter::Event::Denm, "DENM")) return;
     writeUpTo(event.time);
-    out_ << fmt::format(R"({{"t":{},"event":"denm","phase":"{}","station":{},"action":{},"cause":{}}})",
-                        event.time.str(), facilities::phaseName(event.phase), jsonText(event.station),
-                        jsonText(event.action.str()), event.cause)
-         << '\n';
+    emit(TraceRecord::of(event));
 }
 
 void MessageTraceFile::finish(kernel::SimTime end) {
     writeUpTo(end);
     pending_ = {};
+    writer_->finish();
+}
+
+TraceFigures MessageTraceFile::figures() const {
+    return {writer_->format(), lines_, writer_->bytes(), maxBytes_, truncatedAt_};
 }
 
 }  // namespace sbsim::app

@@ -31,6 +31,9 @@ public:
     OutputFile& operator=(const OutputFile&) = delete;
 
     std::ostream& stream() { return *stream_; }
+    /// The open file, for a writer of its own (a child process writing Parquet); the stream then
+    /// stays unused.
+    int descriptor() const { return fd_; }
     /// Throws OutputError if a write has failed (a full disk, a closed pipe).
     void check();
     /// Flushes everything to the disk and renames the file into place; throws OutputError.

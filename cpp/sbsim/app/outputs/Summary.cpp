@@ -70,6 +70,10 @@ void printSummary(const RunFigures& f) {
         if (const auto load = f.medium->loadFigures())
             fmt::print("channel busy ratio: mean {:.4f}, max {:.4f}\n", load->meanCbr, load->maxCbr);
     }
+    if (f.messageTrace && f.messageTrace->truncatedAt) {
+        fmt::print("message trace: truncated at t={} s (--messages-max-bytes {})\n", f.messageTrace->truncatedAt->str(),
+                   f.messageTrace->maxBytes);
+    }
     if (f.statistics != nullptr) {
         for (const auto& [name, a] : f.statistics->aggregates()) {
             fmt::print("statistic {}: count {}, mean {:g}, min {:g}, max {:g}, sum {:g}\n", name, a.count, a.mean(),
@@ -148,6 +152,16 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
             out["channel_busy_ratio"] = {{"mean", load->meanCbr}, {"max", load->maxCbr}, {"samples", load->samples}};
     }
     out["messages"] = std::move(messages);
+    if (f.messageTrace) {
+        const TraceFigures& t = *f.messageTrace;
+        out["message_trace"] = {
+            {"format", std::string(t.format)},
+            {"lines", t.lines},
+            {"bytes", t.bytes},
+            {"max_bytes", t.maxBytes == UINT64_MAX ? ordered_json(nullptr) : ordered_json(t.maxBytes)},
+            {"truncated", t.truncatedAt.has_value()},
+            {"truncated_at", t.truncatedAt ? ordered_json(t.truncatedAt->seconds()) : ordered_json(nullptr)}};
+    }
     ordered_json statistics = ordered_json::object();
     if (f.statistics != nullptr) {
         for (const auto& [name, a] : f.statistics->aggregates()) {

@@ -6,6 +6,9 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <optional>
+
+#include "sbsim/app/outputs/MessageTraceFile.h"
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/kernel/Statistics.h"
@@ -28,8 +31,9 @@ struct RunFigures {
     const kernel::Statistics* statistics;  ///< what services and stories recorded
     /// The criteria's verdicts over the run, in registration order (none without criteria).
     const std::vector<std::pair<std::string, storyboard::CriterionVerdict>>& verdicts;
-    double wall;                                ///< s
-    const std::vector<std::string>& arguments;  ///< the command line
+    double wall;                                              ///< s
+    const std::vector<std::string>& arguments;                ///< the command line
+    std::optional<TraceFigures> messageTrace = std::nullopt;  ///< --messages
 };
 
 /// `key: value` lines on stdout: first what the run did (identical for identical runs), then the

@@ -200,10 +200,13 @@ radio::Medium& makeMedium(const CommandLine& cl, kernel::Simulation& sim, const 
         disc.latency = kernel::SimTime::fromSeconds(cl.v2xLatency);
         disc.fadeStart = cl.v2xFadeStart;
         if (cl.messagesRange) disc.traceRange = *cl.messagesRange;
+        // No lost lines asked for: the disc visits no station beyond its range for the trace.
+        if (!cl.messagesLost()) disc.traceRange = 0;
         return sim.emplaceModule<radio::DiscMedium>(disc, snapshot, std::move(directory));
     }
     radio::ChannelSettings settings = readRadioSettings(cl.radio, sim.parameters());
     if (cl.messagesRange) settings.traceRange = *cl.messagesRange;
+    if (!cl.messagesLost()) settings.traceRange = 0;
     auto obstacles = std::make_shared<radio::Obstacles>(settings.wallDb, settings.perMetreDb);
     for (traffic::SumoPolygons::Polygon& p : traffic::SumoPolygons::all()) {
         if (p.type == settings.obstacleType) obstacles->add(std::move(p.shape));

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <system_error>
 
 #include "sbsim/app/cli/BadInput.h"
@@ -20,8 +21,10 @@
 #include "sbsim/app/inputs/SumoOptions.h"
 #include "sbsim/app/inputs/SumoStateFile.h"
 #include "sbsim/app/outputs/JUnitReport.h"
+#include "sbsim/app/outputs/JsonLinesTrace.h"
 #include "sbsim/app/outputs/MessageTraceFile.h"
 #include "sbsim/app/outputs/OutputFile.h"
+#include "sbsim/app/outputs/ParquetTrace.h"
 #include "sbsim/app/outputs/Summary.h"
 #include "sbsim/app/run/AfterEachStep.h"
 #include "sbsim/app/run/GuiWatch.h"
@@ -59,6 +62,42 @@ void untilInterrupted(F phase) {
     }
 }
 
+/// The trace's lines as --messages-types and --messages-events say (see MessageTraceFilter).
+MessageTraceFilter traceFilter(const CommandLine& cl) {
+    MessageTraceFilter filter;
+    if (!cl.messagesEvents.empty()) {
+        std::set<MessageTraceFilter::Event> events;
+        for (const std::string& name : cl.messagesEvents) events.insert(*MessageTraceFilter::eventNamed(name));
+        filter.setEvents(events);
+    } else if (cl.messagesLost()) {
+        filter.setEvents({MessageTraceFilter::Event::Tx, MessageTraceFilter::Event::Rx, MessageTraceFilter::Event::Lost,
+                          MessageTraceFilter::Event::Denm});
+    }
+    filter.setTypes({cl.messagesTypes.begin(), cl.messagesTypes.end()});
+    return filter;
+}
+
+/// JSON Lines, or Parquet for *.parquet (pyarrow missing: a UsageError, before SUMO loads).
+std::unique_ptr<TraceWriter> traceWriter(const CommandLine& cl, OutputFile& file, Scenario& scenario) {
+    if (!cl.messagesParquet()) return std::make_unique<JsonLinesTrace>(file.stream());
+    return std::make_unique<ParquetTrace>(scenario.parquetStream("--messages", file.descriptor()),
+                                          fmt::format("--messages: cannot write '{}'", cl.messages->string()));
+}
+
+/// A type named in --messages-types that no station sent is most likely misspelt.
+void warnOfUnsentTypes(const MessageTraceFilter& filter, const radio::Medium* medium) {
+    if (medium == nullptr) return;
+    std::vector<std::string> sent;
+    for (const auto& [type, counts] : medium->counts()) {
+        if (counts.sent > 0) sent.push_back(type);
+    }
+    for (const std::string& type : filter.types()) {
+        if (std::find(sent.begin(), sent.end(), type) != sent.end()) continue;
+        fmt::print(stderr, "sbsim: warning: --messages-types {}: no {} message was sent (sent: {})\n", type, type,
+                   sent.empty() ? std::string("none") : fmt::format("{}", fmt::join(sent, ", ")));
+    }
+}
+
 }  // namespace
 
 /// SUMO warnings of one kind shown on stderr before they are only counted (--verbose: all).
@@ -91,8 +130,6 @@ int RunCommand::run(const CommandLine& cl) {
         if (!cl.services) throw UsageError("--radio: the radio carries the services' messages; give --services");
         files.requireInput("--radio", *cl.radio);
     }
-    std::optional<MessageTraceFile> messageTrace;
-    if (messages) messageTrace.emplace(messages->stream());
     std::optional<OutputFile> statisticsFile;
     if (cl.statistics) statisticsFile.emplace("--statistics", *cl.statistics, files);
     std::optional<OutputFile> junit;
@@ -118,6 +155,9 @@ int RunCommand::run(const CommandLine& cl) {
     kernel::Simulation& sim = scenario.simulation();
     traffic::SumoBridge& sumo = scenario.sumo();
     if (statisticsFile) scenario.requireStatisticsFile();  // pyarrow missing: fail before the run
+    // After the scenario: its Python finds the interpreter a Parquet trace is written with.
+    std::optional<MessageTraceFile> messageTrace;
+    if (messages) messageTrace.emplace(traceWriter(cl, *messages, scenario), traceFilter(cl), cl.messagesMaxBytes);
     const traffic::Penetration penetration(cl.penetration, sim.seed());
     if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
     scenario.loadSumo();
@@ -199,6 +239,11 @@ int RunCommand::run(const CommandLine& cl) {
         if (Interruption::requested()) sim.stop();
         if (events) events->check();  // a full disk ends the run now, not at its end
         if (messages) messages->check();
+        // A full trace takes nothing more: the medium need not report (nor visit) anyone for it.
+        if (messageTrace && messageTrace->full() && scenario.medium() != nullptr) {
+            scenario.medium()->setTrace(nullptr);
+            scenario.stations().setPhaseSink(nullptr);
+        }
     });
     sim.subscribe(traffic::SumoBridge::stepSignal, checks);
     try {
@@ -223,7 +268,10 @@ int RunCommand::run(const CommandLine& cl) {
     if (gui && !Interruption::requested()) gui->finish(sim.now());
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     if (events && !Interruption::requested()) events->commit();
-    if (messageTrace) messageTrace->finish(sim.now());
+    if (messageTrace) {
+        messageTrace->finish(sim.now());
+        if (!Interruption::requested()) warnOfUnsentTypes(messageTrace->filter(), scenario.medium());
+    }
     if (messages && !Interruption::requested()) messages->commit();
     if (sumoLog && !Interruption::requested()) sumoLog->commit();
     if (junit) {
@@ -245,7 +293,8 @@ int RunCommand::run(const CommandLine& cl) {
                              &scenario.statistics(),
                              verdicts,
                              std::chrono::duration<double>(Clock::now() - started).count(),
-                             cl.arguments};
+                             cl.arguments,
+                             messageTrace ? std::optional(messageTrace->figures()) : std::nullopt};
     if (summary) {
         summary->stream() << summaryJson(figures).dump(2) << '\n';
         if (!Interruption::requested()) summary->commit();

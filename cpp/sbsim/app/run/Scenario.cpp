@@ -84,6 +84,15 @@ void Scenario::requireStatisticsFile() {
     }
 }
 
+std::unique_ptr<storyboard::ParquetStream> Scenario::parquetStream(const std::string& option, int fd) {
+    if (!python_) python_.emplace();
+    try {
+        return std::make_unique<storyboard::ParquetStream>(fd);
+    } catch (const storyboard::ParquetStream::Unavailable& e) {
+        throw UsageError(fmt::format("{}: {}", option, e.what()));
+    }
+}
+
 std::string Scenario::statisticsFile() const {
     if (!parquet_) throw std::logic_error("requireStatisticsFile() was not called");
     return parquet_->bytes(statistics_);

@@ -17,6 +17,7 @@
 #include "sbsim/storyboard/BoardFeed.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/storyboard/python/ParquetStream.h"
 #include "sbsim/storyboard/python/PythonRuntime.h"
 #include "sbsim/storyboard/python/StatisticsParquet.h"
 #include "sbsim/storyboard/python/StoryScript.h"
@@ -52,6 +53,9 @@ public:
     void requireStatisticsFile();
     /// The run's statistics as the --statistics file's bytes (after requireStatisticsFile()).
     std::string statisticsFile() const;
+    /// Starts the interpreter (if no story did) and pyarrow's writer for a Parquet file written
+    /// as the run goes to `fd`; throws UsageError naming `option` if pyarrow is missing.
+    std::unique_ptr<storyboard::ParquetStream> parquetStream(const std::string& option, int fd);
 
     /// Adds the services with the medium the command line chooses (--radio: the 802.11p channel
     /// model, else the disc model of the --v2x-* options), its lines going to `trace` if given.
