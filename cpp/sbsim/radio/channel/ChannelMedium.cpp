@@ -101,7 +101,7 @@ void ChannelMedium::handleMessage(kernel::Message& msg) {
         case kEnd:
             return endTransmission(static_cast<EndTimer&>(msg).tx);
         case kLoad:
-            sampleLoad();
+            load_.sample(simTime(), present_);
             return scheduleAfter(DccStateMachine::kSampling, msg);
         default:
             return Medium::handleMessage(msg);
@@ -122,12 +122,7 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     transmitting_.push_back(0);
     locked_.push_back(0);
     incoming_.emplace_back();
-    cbrBusy_.push_back(0);
-    cbrSince_.push_back(simTime());
-    windowStart_.push_back(simTime());
-    busyNs_.push_back(0);
-    cbr_.push_back(0);
-    dcc_.emplace_back();
+    load_.addStation(simTime());
     queue_.emplace_back();
     contending_.push_back(0);
     backoff_.push_back(0);
@@ -257,11 +252,7 @@ void ChannelMedium::setSensedPower(Slot s, double mw) {
 
 void ChannelMedium::setCbrBusy(Slot s) {
     // The channel counts busy for the busy ratio while sensed busy or while the station sends.
-    const bool busy = sensedBusy_[s] || transmitting_[s] != 0;
-    if (busy == static_cast<bool>(cbrBusy_[s])) return;
-    if (!busy) busyNs_[s] += (simTime() - cbrSince_[s]).raw();
-    cbrBusy_[s] = busy;
-    cbrSince_[s] = simTime();
+    load_.setBusy(s, sensedBusy_[s] || transmitting_[s] != 0, simTime());
 }
 
 void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links) {
@@ -403,7 +394,7 @@ void ChannelMedium::startTransmission(Slot s) {
         line.seq = tx->message->sequence();
         line.x = x_[s];
         line.y = y_[s];
-        line.cbr = cbr_[s];
+        line.cbr = load_.busyRatio(s);
         trace()->record(line, simTime());
     }
     if (present_[s]) computeLinks(s, *tx, tx->links);
@@ -578,38 +569,16 @@ void ChannelMedium::traceLost(const Transmission& tx, Slot receiver, double dist
     trace()->record(line, simTime());
 }
 
-void ChannelMedium::sampleLoad() {
-    const kernel::SimTime now = simTime();
-    for (Slot s = 0; s < static_cast<Slot>(ids_.size()); ++s) {
-        if (cbrBusy_[s]) {
-            busyNs_[s] += (now - cbrSince_[s]).raw();
-            cbrSince_[s] = now;
-        }
-        const kernel::SimTime window = now - windowStart_[s];
-        if (present_[s] && window > kernel::SimTime::zero()) {
-            cbr_[s] = static_cast<double>(busyNs_[s]) / static_cast<double>(window.raw());
-            dcc_[s].update(cbr_[s]);
-            if (!load_) load_.emplace();
-            ++load_->samples;
-            cbrSum_ += cbr_[s];
-            load_->meanCbr = cbrSum_ / static_cast<double>(load_->samples);
-            load_->maxCbr = std::max(load_->maxCbr, cbr_[s]);
-        }
-        busyNs_[s] = 0;
-        windowStart_[s] = now;
-    }
-}
-
 std::optional<kernel::SimTime> ChannelMedium::dccInterval(const std::string& station) const {
     const auto it = slotOf_.find(station);
     if (it == slotOf_.end()) return DccStateMachine{}.transmissionInterval();
-    return dcc_[it->second].transmissionInterval();
+    return load_.dcc(it->second).transmissionInterval();
 }
 
 std::optional<double> ChannelMedium::channelBusyRatio(const std::string& station) const {
     const auto it = slotOf_.find(station);
     if (it == slotOf_.end()) return 0.0;
-    return cbr_[it->second];
+    return load_.busyRatio(it->second);
 }
 
 }  // namespace sbsim::radio

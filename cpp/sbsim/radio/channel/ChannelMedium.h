@@ -13,6 +13,7 @@
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/DccStateMachine.h"
 #include "sbsim/radio/channel/FrameErrorTable.h"
+#include "sbsim/radio/channel/LoadMonitor.h"
 #include "sbsim/radio/propagation/NakagamiFading.h"
 #include "sbsim/radio/propagation/Obstacles.h"
 #include "sbsim/radio/propagation/PathLoss.h"
@@ -52,7 +53,7 @@ public:
     void broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) override;
     std::optional<kernel::SimTime> dccInterval(const std::string& station) const override;
     std::optional<double> channelBusyRatio(const std::string& station) const override;
-    std::optional<LoadFigures> loadFigures() const override { return load_; }
+    std::optional<LoadFigures> loadFigures() const override { return load_.figures(); }
 
     /// Figures for tests and benchmarks.
     std::uint64_t transmissions() const { return transmissions_; }
@@ -87,7 +88,6 @@ private:
     void computeNeighbourhood(Slot s);
     void setSensedPower(Slot s, double mw);
     void setCbrBusy(Slot s);
-    void sampleLoad();
     void traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason);
 
     ChannelSettings settings_;
@@ -111,11 +111,6 @@ private:
     std::vector<std::uint64_t> transmitting_;  // tx id, 0 = none
     std::vector<std::uint64_t> locked_;        // the tx being decoded, 0 = none
     std::vector<std::vector<Incoming>> incoming_;
-    std::vector<std::uint8_t> cbrBusy_;
-    std::vector<kernel::SimTime> cbrSince_, windowStart_;
-    std::vector<kernel::SimTime::rep> busyNs_;
-    std::vector<double> cbr_;
-    std::vector<DccStateMachine> dcc_;
     std::vector<std::deque<Queued>> queue_;
     std::vector<std::uint8_t> contending_;
     std::vector<std::int32_t> backoff_;  // slots left
@@ -146,8 +141,7 @@ private:
     std::vector<std::unique_ptr<Transmission>> spare_;
     std::uint64_t nextTx_ = 1;
     std::unique_ptr<kernel::Message> loadTimer_;
-    std::optional<LoadFigures> load_;
-    double cbrSum_ = 0;
+    LoadMonitor load_;
     std::uint64_t transmissions_ = 0, receptions_ = 0, linksComputed_ = 0;
 };
 
