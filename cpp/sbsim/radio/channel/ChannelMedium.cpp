@@ -13,7 +13,7 @@
 namespace sbsim::radio {
 
 namespace {
-enum TimerKind { kAccess = 1, kEnd = 2, kLoad = 3 };
+enum TimerKind { kAccess = ChannelAccess::kTimerKind, kEnd = 2, kLoad = 3 };
 /// A neighbourhood is hundreds of links: a few stations make a chunk worth a worker's wake-up.
 constexpr std::size_t kStationsPerChunk = 4;
 
@@ -31,11 +31,6 @@ struct ChannelMedium::Link {
     bool counted = false;          // above the floor: part of the receiver's sensed power
     bool halfDuplex = false;       // the receiver transmitted during the frame
     bool locked = false;           // the receiver was decoding this frame
-};
-
-struct ChannelMedium::StationTimer : kernel::Message {
-    explicit StationTimer(Slot s) : kernel::Message("channel access", kAccess), station(s) {}
-    Slot station;
 };
 
 struct ChannelMedium::EndTimer : kernel::Message {
@@ -59,7 +54,8 @@ ChannelMedium::ChannelMedium(ChannelSettings settings, const traffic::VehicleSna
       settings_(std::move(settings)),
       snapshot_(snapshot),
       obstacles_(std::move(obstacles)),
-      fer_((settings_.validate(), settings_.ferTable)) {
+      fer_((settings_.validate(), settings_.ferTable)),
+      access_(settings_, *this) {
     pathLoss_ = settings_.makePathLoss();
     fading_.m = settings_.nakagamiM;
     fading_.veinsDistanceRule = settings_.fading == ChannelSettings::Fading::NakagamiVeins;
@@ -90,6 +86,7 @@ double ChannelMedium::meanPowerDbm(double distance) const { return settings_.pow
 
 void ChannelMedium::initialize() {
     seed_ = simulation().seed();
+    access_.setSeed(seed_);
     loadTimer_ = std::make_unique<kernel::Message>("channel load", kLoad);
     scheduleAt(DccStateMachine::kSampling * (simTime() / DccStateMachine::kSampling + 1), *loadTimer_);
 }
@@ -97,7 +94,7 @@ void ChannelMedium::initialize() {
 void ChannelMedium::handleMessage(kernel::Message& msg) {
     switch (msg.kind()) {
         case kAccess:
-            return startTransmission(static_cast<StationTimer&>(msg).station);
+            return startTransmission(static_cast<ChannelAccess::Timer&>(msg).station);
         case kEnd:
             return endTransmission(static_cast<EndTimer&>(msg).tx);
         case kLoad:
@@ -123,12 +120,7 @@ ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     locked_.push_back(0);
     incoming_.emplace_back();
     load_.addStation(simTime());
-    queue_.emplace_back();
-    contending_.push_back(0);
-    backoff_.push_back(0);
-    countStart_.push_back(simTime());
-    idleSince_.push_back(kernel::SimTime::zero());
-    timers_.push_back(std::make_unique<StationTimer>(s));
+    access_.addStation(keys_.back());
     sentInStep_.push_back(0);
     receiver_.push_back(nullptr);
     near_.emplace_back();
@@ -195,7 +187,7 @@ void ChannelMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMess
         y_[s] = at.y();
     }
     std::shared_ptr<const V2xMessage> shared(std::move(message));
-    if (queue_[s].size() >= settings_.queueLimit) {
+    if (!access_.enqueue(s, shared)) {
         if (trace() != nullptr) {
             TraceLine line;
             line.event = TraceLine::Event::Lost;
@@ -209,22 +201,7 @@ void ChannelMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMess
         }
         return;
     }
-    queue_[s].push_back({std::move(shared)});
-    if (!contending_[s] && transmitting_[s] == 0 && queue_[s].size() == 1) startAccess(s);
-}
-
-void ChannelMedium::startAccess(Slot s) {
-    const V2xMessage& head = *queue_[s].front().message;
-    CounterRandom random(seed_, keys_[s], head.sequence(), 0, DrawPurpose::Backoff);
-    backoff_[s] = static_cast<std::int32_t>(random.uniform01() * (settings_.contentionWindow + 1));
-    contending_[s] = 1;
-    if (!sensedBusy_[s]) scheduleCountdown(s);
-}
-
-void ChannelMedium::scheduleCountdown(Slot s) {
-    // The backoff counts down once the channel has been idle for AIFS.
-    countStart_[s] = std::max(simTime(), idleSince_[s] + settings_.aifs());
-    scheduleAt(countStart_[s] + settings_.slot * backoff_[s], *timers_[s]);
+    if (!access_.contending(s) && transmitting_[s] == 0 && access_.queued(s) == 1) access_.start(s, sensedBusy_[s]);
 }
 
 void ChannelMedium::setSensedPower(Slot s, double mw) {
@@ -233,19 +210,9 @@ void ChannelMedium::setSensedPower(Slot s, double mw) {
     if (busy == static_cast<bool>(sensedBusy_[s])) return;
     sensedBusy_[s] = busy;
     if (busy) {
-        // Freeze the backoff: the slots that passed idle are spent. A station whose backoff ends
-        // now sends anyway: carrier sense takes part of a slot, so frames starting in the same
-        // slot collide, as on the air.
-        if (contending_[s] && timers_[s]->isScheduled() && timers_[s]->arrivalTime() > simTime()) {
-            cancelEvent(*timers_[s]);
-            if (simTime() > countStart_[s]) {
-                const auto spent = static_cast<std::int32_t>((simTime() - countStart_[s]) / settings_.slot);
-                backoff_[s] = std::max(0, backoff_[s] - spent);
-            }
-        }
+        access_.channelBusy(s);
     } else {
-        idleSince_[s] = simTime();
-        if (contending_[s]) scheduleCountdown(s);
+        access_.channelIdle(s);
     }
     setCbrBusy(s);
 }
@@ -368,7 +335,6 @@ void ChannelMedium::computeNeighbourhood(Slot s) {
 
 void ChannelMedium::startTransmission(Slot s) {
     refreshStations();
-    contending_[s] = 0;
     std::unique_ptr<Transmission> tx;
     if (spare_.empty()) {
         tx = std::make_unique<Transmission>(nextTx_);
@@ -381,8 +347,7 @@ void ChannelMedium::startTransmission(Slot s) {
     }
     ++nextTx_;
     tx->sender = s;
-    tx->message = std::move(queue_[s].front().message);
-    queue_[s].pop_front();
+    tx->message = access_.take(s);
     tx->start = simTime();
     ++transmissions_;
     if (trace() != nullptr) {
@@ -468,7 +433,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             for (const Incoming& e : in) total += e.mw;
             // A station that senses the channel free may schedule its backoff's end, possibly at
             // a delivery's time: the receptions so far go first, as their own events did.
-            if (contending_[r] && (total >= sensingMw_) != static_cast<bool>(sensedBusy_[r])) flush();
+            if (access_.contending(r) && (total >= sensingMw_) != static_cast<bool>(sensedBusy_[r])) flush();
             setSensedPower(r, total);
         }
         if (locked_[r] == id) locked_[r] = 0;
@@ -546,9 +511,8 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
 
     const Slot s = tx->sender;
     transmitting_[s] = 0;
-    if (!sensedBusy_[s]) idleSince_[s] = simTime();  // AIFS again after its own frame
     setCbrBusy(s);
-    if (!queue_[s].empty()) startAccess(s);
+    access_.frameEnded(s, sensedBusy_[s]);
     // A few spares cover the frames on the air at once (airtimes are a fraction of a millisecond).
     if (spare_.size() < 64) {
         tx->message.reset();

@@ -10,6 +10,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/radio/Medium.h"
+#include "sbsim/radio/channel/ChannelAccess.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/DccStateMachine.h"
 #include "sbsim/radio/channel/FrameErrorTable.h"
@@ -35,7 +36,7 @@ namespace sbsim::radio {
 ///  - per station a channel busy ratio every 100 ms feeds ETSI reactive DCC (DccStateMachine).
 /// Every random draw is keyed by (seed, sender, sequence, receiver, purpose) (CounterRandom),
 /// and link powers are computed on the kernel's pool, so results do not depend on the thread count.
-class SBSIM_API ChannelMedium : public Medium {
+class SBSIM_API ChannelMedium : public Medium, private ChannelAccess::Clock {
 public:
     /// Throws std::invalid_argument if a setting is out of range.
     ChannelMedium(ChannelSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory,
@@ -68,17 +69,11 @@ private:
         std::uint32_t link;
         double mw;
     };
-    struct Queued {
-        std::shared_ptr<const V2xMessage> message;
-    };
-    struct StationTimer;
     struct EndTimer;
     using Slot = std::int32_t;
 
     void refreshStations();
     Slot stationOf(const std::string& id);
-    void startAccess(Slot s);
-    void scheduleCountdown(Slot s);
     void startTransmission(Slot s);
     void endTransmission(std::uint64_t id);
     void computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links);
@@ -89,6 +84,10 @@ private:
     void setSensedPower(Slot s, double mw);
     void setCbrBusy(Slot s);
     void traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason);
+    // ChannelAccess::Clock
+    kernel::SimTime now() const override { return simTime(); }
+    void schedule(kernel::SimTime at, kernel::Message& timer) override { scheduleAt(at, timer); }
+    void cancel(kernel::Message& timer) override { cancelEvent(timer); }
 
     ChannelSettings settings_;
     const traffic::VehicleSnapshot& snapshot_;
@@ -111,11 +110,6 @@ private:
     std::vector<std::uint64_t> transmitting_;  // tx id, 0 = none
     std::vector<std::uint64_t> locked_;        // the tx being decoded, 0 = none
     std::vector<std::vector<Incoming>> incoming_;
-    std::vector<std::deque<Queued>> queue_;
-    std::vector<std::uint8_t> contending_;
-    std::vector<std::int32_t> backoff_;  // slots left
-    std::vector<kernel::SimTime> countStart_, idleSince_;
-    std::vector<std::unique_ptr<StationTimer>> timers_;
     /// A sender's receivers within the cutoff and their distance and mean power, for one step.
     struct Neighbourhood {
         std::optional<kernel::SimTime> at;  // the snapshot they were computed for
@@ -141,6 +135,7 @@ private:
     std::vector<std::unique_ptr<Transmission>> spare_;
     std::uint64_t nextTx_ = 1;
     std::unique_ptr<kernel::Message> loadTimer_;
+    ChannelAccess access_;
     LoadMonitor load_;
     std::uint64_t transmissions_ = 0, receptions_ = 0, linksComputed_ = 0;
 };
