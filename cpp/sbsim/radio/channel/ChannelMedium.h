@@ -12,13 +12,12 @@
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/channel/ChannelAccess.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
-#include "sbsim/radio/channel/DccStateMachine.h"
+#include "sbsim/radio/channel/ChannelStations.h"
 #include "sbsim/radio/channel/FrameErrorTable.h"
+#include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/channel/LinkBudget.h"
 #include "sbsim/radio/channel/LoadMonitor.h"
-#include "sbsim/radio/propagation/NakagamiFading.h"
 #include "sbsim/radio/propagation/Obstacles.h"
-#include "sbsim/radio/propagation/PathLoss.h"
-#include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::radio {
@@ -45,9 +44,9 @@ public:
 
     const ChannelSettings& settings() const { return settings_; }
     /// Links longer than this are not computed (ChannelSettings::interferenceFloorDbm).
-    double cutoffRange() const { return cutoff_; }
+    double cutoffRange() const { return budget_.cutoffRange(); }
     /// The mean received power (dBm) at `distance` m without obstacles, shadowing or fading.
-    double meanPowerDbm(double distance) const;
+    double meanPowerDbm(double distance) const { return budget_.meanPowerDbm(distance); }
 
     void initialize() override;
     void handleMessage(kernel::Message& msg) override;
@@ -59,10 +58,9 @@ public:
     /// Figures for tests and benchmarks.
     std::uint64_t transmissions() const { return transmissions_; }
     std::uint64_t receptions() const { return receptions_; }
-    std::uint64_t linksComputed() const { return linksComputed_; }
+    std::uint64_t linksComputed() const { return budget_.linksComputed(); }
 
 private:
-    struct Link;
     struct Transmission;
     struct Incoming {
         Transmission* tx;  // owned by active_ while it is on the air
@@ -70,17 +68,12 @@ private:
         double mw;
     };
     struct EndTimer;
-    using Slot = std::int32_t;
+    using Slot = ChannelStations::Slot;
 
     void refreshStations();
     Slot stationOf(const std::string& id);
     void startTransmission(Slot s);
     void endTransmission(std::uint64_t id);
-    void computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links);
-    void prepareStep(Slot first);
-    /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
-    /// computed on distinct threads.
-    void computeNeighbourhood(Slot s);
     void setSensedPower(Slot s, double mw);
     void setCbrBusy(Slot s);
     void traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason);
@@ -91,43 +84,18 @@ private:
 
     ChannelSettings settings_;
     const traffic::VehicleSnapshot& snapshot_;
-    std::shared_ptr<const Obstacles> obstacles_;
-    std::unique_ptr<PathLoss> pathLoss_;
     FrameErrorTable fer_;
-    NakagamiFading fading_;
-    double cutoff_ = 0;
+    ChannelStations stations_;
+    LinkBudget budget_;
     double sensingMw_, noiseMw_, floorMw_;
     std::uint64_t seed_ = 0;
 
-    // Stations (equipped vehicles), struct-of-arrays by slot; a slot is never reused.
-    std::unordered_map<std::string, Slot> slotOf_;
-    std::vector<std::string> ids_;
-    std::vector<std::uint64_t> keys_;  // CounterRandom::keyOf(id)
-    std::vector<double> x_, y_;
-    std::vector<std::uint8_t> present_;  // in the last snapshot
+    // Per station (slot), reception:
     std::vector<double> sensedMw_;
     std::vector<std::uint8_t> sensedBusy_;
     std::vector<std::uint64_t> transmitting_;  // tx id, 0 = none
     std::vector<std::uint64_t> locked_;        // the tx being decoded, 0 = none
     std::vector<std::vector<Incoming>> incoming_;
-    /// A sender's receivers within the cutoff and their distance and mean power, for one step.
-    struct Neighbourhood {
-        std::optional<kernel::SimTime> at;  // the snapshot they were computed for
-        std::vector<Slot> receivers;
-        std::vector<double> distance, meanDbm;
-        std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
-        std::vector<std::uint32_t> bin;  // distance / kDistanceBin
-    };
-    std::vector<Neighbourhood> near_;
-    std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for
-    std::uint64_t step_ = 0;                    // counts prepareStep() calls
-    std::vector<std::uint64_t> sentInStep_;     // per slot, the step_ of its last frame
-    std::vector<Slot> sentThisStep_, batch_;
-    std::vector<Receiver*> receiver_;  // the station's receiving side as of the last step; null: gone
-
-    std::optional<kernel::SimTime> refreshedAt_;
-    std::vector<Slot> slotOfIndex_;  // per snapshot index, -1 = not a station
-    traffic::NeighbourGrid grid_;
 
     std::unordered_map<std::uint64_t, std::unique_ptr<Transmission>> active_;
     /// Ended transmissions kept for reuse: their link vectors stay allocated and warm in the cache
@@ -137,7 +105,7 @@ private:
     std::unique_ptr<kernel::Message> loadTimer_;
     ChannelAccess access_;
     LoadMonitor load_;
-    std::uint64_t transmissions_ = 0, receptions_ = 0, linksComputed_ = 0;
+    std::uint64_t transmissions_ = 0, receptions_ = 0;
 };
 
 }  // namespace sbsim::radio
