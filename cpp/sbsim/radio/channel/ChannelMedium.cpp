@@ -14,9 +14,6 @@ namespace sbsim::radio {
 
 namespace {
 enum TimerKind { kAccess = ChannelAccess::kTimerKind, kEnd = 2, kLoad = 3 };
-
-double toMw(double dbm) { return dbToLinear(dbm); }
-double toDb(double mw) { return linearToDb(mw); }
 }  // namespace
 
 struct ChannelMedium::EndTimer : kernel::Message {
@@ -39,13 +36,9 @@ ChannelMedium::ChannelMedium(ChannelSettings settings, const traffic::VehicleSna
     : Medium(std::move(directory)),
       settings_(std::move(settings)),
       snapshot_(snapshot),
-      fer_((settings_.validate(), settings_.ferTable)),
+      reception_((settings_.validate(), settings_), *this),
       budget_(settings_, std::move(obstacles), stations_, snapshot_, fixedStations()),
-      access_(settings_, *this) {
-    sensingMw_ = toMw(settings_.sensingDbm);
-    noiseMw_ = toMw(settings_.noiseDbm);
-    floorMw_ = toMw(settings_.interferenceFloorDbm);
-}
+      access_(settings_, *this) {}
 
 ChannelMedium::~ChannelMedium() = default;
 
@@ -73,11 +66,7 @@ void ChannelMedium::handleMessage(kernel::Message& msg) {
 ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     if (const auto it = stations_.slotOf.find(id); it != stations_.slotOf.end()) return it->second;
     const Slot s = stations_.add(id);
-    sensedMw_.push_back(0);
-    sensedBusy_.push_back(0);
-    transmitting_.push_back(0);
-    locked_.push_back(0);
-    incoming_.emplace_back();
+    reception_.addStation();
     load_.addStation(simTime());
     access_.addStation(stations_.keys[s]);
     budget_.addStation();
@@ -154,14 +143,12 @@ void ChannelMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMess
         }
         return;
     }
-    if (!access_.contending(s) && transmitting_[s] == 0 && access_.queued(s) == 1) access_.start(s, sensedBusy_[s]);
+    if (!access_.contending(s) && !reception_.sending(s) && access_.queued(s) == 1) {
+        access_.start(s, reception_.sensesBusy(s));
+    }
 }
 
-void ChannelMedium::setSensedPower(Slot s, double mw) {
-    sensedMw_[s] = mw;
-    const bool busy = mw >= sensingMw_;
-    if (busy == static_cast<bool>(sensedBusy_[s])) return;
-    sensedBusy_[s] = busy;
+void ChannelMedium::channelSensed(Slot s, bool busy) {
     if (busy) {
         access_.channelBusy(s);
     } else {
@@ -172,7 +159,7 @@ void ChannelMedium::setSensedPower(Slot s, double mw) {
 
 void ChannelMedium::setCbrBusy(Slot s) {
     // The channel counts busy for the busy ratio while sensed busy or while the station sends.
-    load_.setBusy(s, sensedBusy_[s] || transmitting_[s] != 0, simTime());
+    load_.setBusy(s, reception_.sensesBusy(s) || reception_.sending(s), simTime());
 }
 
 void ChannelMedium::startTransmission(Slot s) {
@@ -210,34 +197,9 @@ void ChannelMedium::startTransmission(Slot s) {
     }
 
     // The sender stops receiving: whatever it was receiving is lost to half-duplex.
-    for (const Incoming& in : incoming_[s]) in.tx->links[in.link].halfDuplex = true;
-    locked_[s] = 0;
-    transmitting_[s] = tx->id;
+    reception_.startSending(s, tx->id);
     setCbrBusy(s);
-
-    // Receivers one by one, in slot order: this part schedules events and must stay sequential.
-    for (std::uint32_t k = 0; k < tx->links.size(); ++k) {
-        Link& link = tx->links[k];
-        const Slot r = link.receiver;
-        if (transmitting_[r] != 0) link.halfDuplex = true;
-        if (link.powerMw < floorMw_) continue;
-        link.counted = true;
-        std::vector<Incoming>& in = incoming_[r];
-        double others = 0;
-        for (const Incoming& e : in) others += e.mw;
-        link.maxInterferenceMw = others;
-        const double total = others + link.powerMw;
-        for (const Incoming& e : in) {
-            Link& old = e.tx->links[e.link];
-            old.maxInterferenceMw = std::max(old.maxInterferenceMw, std::max(0.0, total - e.mw));
-        }
-        if (transmitting_[r] == 0 && locked_[r] == 0 && link.powerMw >= sensingMw_) {
-            locked_[r] = tx->id;
-            link.locked = true;
-        }
-        in.push_back({tx.get(), k, link.powerMw});
-        setSensedPower(r, total);
-    }
+    reception_.frameStarts(tx->id, tx->links);
     scheduleAt(simTime() + settings_.airtime(tx->message->byteSize()), tx->end);
     active_.emplace(tx->id, std::move(tx));
 }
@@ -249,7 +211,6 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     active_.erase(found);
     const V2xMessage& message = *tx->message;
     const double delay = (simTime() - message.sentAt()).seconds();
-    const double ratioDb = toDb(settings_.bandwidthHz / (settings_.rateMbps * 1e6));
     refreshStations();  // the receivers' modules as of the last step
     Counts* counts = countsOf(message);
     const std::uint64_t frameKey = CounterRandom::frameKey(seed_, stations_.keys[tx->sender], message.sequence());
@@ -271,39 +232,16 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     for (Link& link : tx->links) {
         const Slot r = link.receiver;
         if (link.counted) {
-            std::vector<Incoming>& in = incoming_[r];
-            in.erase(std::remove_if(in.begin(), in.end(), [&](const Incoming& e) { return e.tx == tx.get(); }),
-                     in.end());
-            double total = 0;  // summed afresh, so no rounding drift accumulates
-            for (const Incoming& e : in) total += e.mw;
+            const double total = reception_.powerWithout(r, tx->links);
             // A station that senses the channel free may schedule its backoff's end, possibly at
             // a delivery's time: the receptions so far go first, as their own events did.
-            if (access_.contending(r) && (total >= sensingMw_) != static_cast<bool>(sensedBusy_[r])) flush();
-            setSensedPower(r, total);
+            if (access_.contending(r) && reception_.changesSense(r, total)) flush();
+            reception_.setSensedPower(r, total);
         }
-        if (locked_[r] == id) locked_[r] = 0;
+        reception_.unlock(r, id);
 
-        std::optional<LossReason> loss;
         double sinrDb = 0;
-        if (link.halfDuplex) {
-            loss = LossReason::HalfDuplex;
-        } else if (link.powerMw < sensingMw_) {
-            loss = LossReason::Sensing;
-        } else if (!link.locked) {
-            loss = LossReason::Collision;  // the receiver was decoding another frame
-        } else {
-            sinrDb = toDb(link.powerMw / (noiseMw_ + link.maxInterferenceMw));
-            const double snrDb = toDb(link.powerMw / noiseMw_);
-            const double ferWith = fer_.ferAtEbN0Db(sinrDb + ratioDb);
-            const double ferWithout = fer_.ferAtEbN0Db(snrDb + ratioDb);
-            auto random = CounterRandom::ofFrame(frameKey, stations_.keys[r], DrawPurpose::Decode);
-            const double u = random.uniform01();
-            if (u < ferWithout) {
-                loss = LossReason::Propagation;
-            } else if (u < ferWith) {
-                loss = LossReason::Collision;
-            }
-        }
+        const std::optional<LossReason> loss = reception_.decode(link, frameKey, stations_.keys[r], sinrDb);
         Receiver* receiver = stations_.receiver[r];
         if (counts != nullptr) {
             // Medium::countLink inline, the bin computed once per step: this runs per link.
@@ -355,9 +293,9 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     flush();
 
     const Slot s = tx->sender;
-    transmitting_[s] = 0;
+    reception_.stopSending(s);
     setCbrBusy(s);
-    access_.frameEnded(s, sensedBusy_[s]);
+    access_.frameEnded(s, reception_.sensesBusy(s));
     // A few spares cover the frames on the air at once (airtimes are a fraction of a millisecond).
     if (spare_.size() < 64) {
         tx->message.reset();

@@ -13,10 +13,10 @@
 #include "sbsim/radio/channel/ChannelAccess.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/ChannelStations.h"
-#include "sbsim/radio/channel/FrameErrorTable.h"
 #include "sbsim/radio/channel/Link.h"
 #include "sbsim/radio/channel/LinkBudget.h"
 #include "sbsim/radio/channel/LoadMonitor.h"
+#include "sbsim/radio/channel/Reception.h"
 #include "sbsim/radio/propagation/Obstacles.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -35,7 +35,7 @@ namespace sbsim::radio {
 ///  - per station a channel busy ratio every 100 ms feeds ETSI reactive DCC (DccStateMachine).
 /// Every random draw is keyed by (seed, sender, sequence, receiver, purpose) (CounterRandom),
 /// and link powers are computed on the kernel's pool, so results do not depend on the thread count.
-class SBSIM_API ChannelMedium : public Medium, private ChannelAccess::Clock {
+class SBSIM_API ChannelMedium : public Medium, private ChannelAccess::Clock, private Reception::Listener {
 public:
     /// Throws std::invalid_argument if a setting is out of range.
     ChannelMedium(ChannelSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory,
@@ -62,11 +62,6 @@ public:
 
 private:
     struct Transmission;
-    struct Incoming {
-        Transmission* tx;  // owned by active_ while it is on the air
-        std::uint32_t link;
-        double mw;
-    };
     struct EndTimer;
     using Slot = ChannelStations::Slot;
 
@@ -74,7 +69,8 @@ private:
     Slot stationOf(const std::string& id);
     void startTransmission(Slot s);
     void endTransmission(std::uint64_t id);
-    void setSensedPower(Slot s, double mw);
+    // Reception::Listener
+    void channelSensed(Slot s, bool busy) override;
     void setCbrBusy(Slot s);
     void traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason);
     // ChannelAccess::Clock
@@ -84,18 +80,11 @@ private:
 
     ChannelSettings settings_;
     const traffic::VehicleSnapshot& snapshot_;
-    FrameErrorTable fer_;
-    ChannelStations stations_;
-    LinkBudget budget_;
-    double sensingMw_, noiseMw_, floorMw_;
     std::uint64_t seed_ = 0;
-
-    // Per station (slot), reception:
-    std::vector<double> sensedMw_;
-    std::vector<std::uint8_t> sensedBusy_;
-    std::vector<std::uint64_t> transmitting_;  // tx id, 0 = none
-    std::vector<std::uint64_t> locked_;        // the tx being decoded, 0 = none
-    std::vector<std::vector<Incoming>> incoming_;
+    // The parts, each with its per-station arrays by slot.
+    ChannelStations stations_;
+    Reception reception_;  // before the budget: the settings are checked as it is built
+    LinkBudget budget_;
 
     std::unordered_map<std::uint64_t, std::unique_ptr<Transmission>> active_;
     /// Ended transmissions kept for reuse: their link vectors stay allocated and warm in the cache
