@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import hashlib
+import os
 import subprocess
 import sys
 import tempfile
@@ -68,6 +69,13 @@ def story_arguments(directory: Path) -> list[str]:
     return args
 
 
+def story_environment() -> dict[str, str]:
+    """The environment of a run: the stories import this checkout's `storyboard` package."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (str(ROOT / "python"), env.get("PYTHONPATH", "")) if p)
+    return env
+
+
 def trace_digest(executable: str, case: Case, end: float, threads: int) -> tuple[str, int]:
     """The trace's SHA-256 and line count, or ("exit N", 0) when the run failed."""
     with tempfile.TemporaryDirectory() as tmp:
@@ -78,7 +86,7 @@ def trace_digest(executable: str, case: Case, end: float, threads: int) -> tuple
             radio.write_text(case.radio)
             args += ["--radio", str(radio)]
         command = [executable, *args, "--end", str(end), "--threads", str(threads), "--quiet"]
-        run = subprocess.run([*command, "--messages", str(messages)], check=False)
+        run = subprocess.run([*command, "--messages", str(messages)], check=False, env=story_environment())
         if run.returncode != 0:
             return f"exit {run.returncode}", 0
         data = messages.read_bytes()

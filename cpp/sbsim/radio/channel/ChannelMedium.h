@@ -10,13 +10,14 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/radio/Medium.h"
+#include "sbsim/radio/channel/ChannelAccess.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
-#include "sbsim/radio/channel/DccStateMachine.h"
-#include "sbsim/radio/channel/FrameErrorTable.h"
-#include "sbsim/radio/propagation/NakagamiFading.h"
+#include "sbsim/radio/channel/ChannelStations.h"
+#include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/channel/LinkBudget.h"
+#include "sbsim/radio/channel/LoadMonitor.h"
+#include "sbsim/radio/channel/Reception.h"
 #include "sbsim/radio/propagation/Obstacles.h"
-#include "sbsim/radio/propagation/PathLoss.h"
-#include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::radio {
@@ -34,7 +35,7 @@ namespace sbsim::radio {
 ///  - per station a channel busy ratio every 100 ms feeds ETSI reactive DCC (DccStateMachine).
 /// Every random draw is keyed by (seed, sender, sequence, receiver, purpose) (CounterRandom),
 /// and link powers are computed on the kernel's pool, so results do not depend on the thread count.
-class SBSIM_API ChannelMedium : public Medium {
+class SBSIM_API ChannelMedium : public Medium, private ChannelAccess::Clock, private Reception::Listener {
 public:
     /// Throws std::invalid_argument if a setting is out of range.
     ChannelMedium(ChannelSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory,
@@ -43,102 +44,47 @@ public:
 
     const ChannelSettings& settings() const { return settings_; }
     /// Links longer than this are not computed (ChannelSettings::interferenceFloorDbm).
-    double cutoffRange() const { return cutoff_; }
+    double cutoffRange() const { return budget_.cutoffRange(); }
     /// The mean received power (dBm) at `distance` m without obstacles, shadowing or fading.
-    double meanPowerDbm(double distance) const;
+    double meanPowerDbm(double distance) const { return budget_.meanPowerDbm(distance); }
 
     void initialize() override;
     void handleMessage(kernel::Message& msg) override;
     void broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) override;
     std::optional<kernel::SimTime> dccInterval(const std::string& station) const override;
     std::optional<double> channelBusyRatio(const std::string& station) const override;
-    std::optional<LoadFigures> loadFigures() const override { return load_; }
+    std::optional<LoadFigures> loadFigures() const override { return load_.figures(); }
 
     /// Figures for tests and benchmarks.
     std::uint64_t transmissions() const { return transmissions_; }
     std::uint64_t receptions() const { return receptions_; }
-    std::uint64_t linksComputed() const { return linksComputed_; }
+    std::uint64_t linksComputed() const { return budget_.linksComputed(); }
 
 private:
-    struct Link;
     struct Transmission;
-    struct Incoming {
-        Transmission* tx;  // owned by active_ while it is on the air
-        std::uint32_t link;
-        double mw;
-    };
-    struct Queued {
-        std::shared_ptr<const V2xMessage> message;
-    };
-    struct StationTimer;
     struct EndTimer;
-    using Slot = std::int32_t;
+    using Slot = ChannelStations::Slot;
 
     void refreshStations();
     Slot stationOf(const std::string& id);
-    void startAccess(Slot s);
-    void scheduleCountdown(Slot s);
     void startTransmission(Slot s);
     void endTransmission(std::uint64_t id);
-    void computeLinks(Slot s, const Transmission& tx, std::vector<Link>& links);
-    void prepareStep(Slot first);
-    /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
-    /// computed on distinct threads.
-    void computeNeighbourhood(Slot s);
-    void setSensedPower(Slot s, double mw);
+    // Reception::Listener
+    void channelSensed(Slot s, bool busy) override;
     void setCbrBusy(Slot s);
-    void sampleLoad();
     void traceLost(const Transmission& tx, Slot receiver, double distance, LossReason reason);
+    // ChannelAccess::Clock
+    kernel::SimTime now() const override { return simTime(); }
+    void schedule(kernel::SimTime at, kernel::Message& timer) override { scheduleAt(at, timer); }
+    void cancel(kernel::Message& timer) override { cancelEvent(timer); }
 
     ChannelSettings settings_;
     const traffic::VehicleSnapshot& snapshot_;
-    std::shared_ptr<const Obstacles> obstacles_;
-    std::unique_ptr<PathLoss> pathLoss_;
-    FrameErrorTable fer_;
-    NakagamiFading fading_;
-    double cutoff_ = 0;
-    double sensingMw_, noiseMw_, floorMw_;
     std::uint64_t seed_ = 0;
-
-    // Stations (equipped vehicles), struct-of-arrays by slot; a slot is never reused.
-    std::unordered_map<std::string, Slot> slotOf_;
-    std::vector<std::string> ids_;
-    std::vector<std::uint64_t> keys_;  // CounterRandom::keyOf(id)
-    std::vector<double> x_, y_;
-    std::vector<std::uint8_t> present_;  // in the last snapshot
-    std::vector<double> sensedMw_;
-    std::vector<std::uint8_t> sensedBusy_;
-    std::vector<std::uint64_t> transmitting_;  // tx id, 0 = none
-    std::vector<std::uint64_t> locked_;        // the tx being decoded, 0 = none
-    std::vector<std::vector<Incoming>> incoming_;
-    std::vector<std::uint8_t> cbrBusy_;
-    std::vector<kernel::SimTime> cbrSince_, windowStart_;
-    std::vector<kernel::SimTime::rep> busyNs_;
-    std::vector<double> cbr_;
-    std::vector<DccStateMachine> dcc_;
-    std::vector<std::deque<Queued>> queue_;
-    std::vector<std::uint8_t> contending_;
-    std::vector<std::int32_t> backoff_;  // slots left
-    std::vector<kernel::SimTime> countStart_, idleSince_;
-    std::vector<std::unique_ptr<StationTimer>> timers_;
-    /// A sender's receivers within the cutoff and their distance and mean power, for one step.
-    struct Neighbourhood {
-        std::optional<kernel::SimTime> at;  // the snapshot they were computed for
-        std::vector<Slot> receivers;
-        std::vector<double> distance, meanDbm;
-        std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
-        std::vector<std::uint32_t> bin;  // distance / kDistanceBin
-    };
-    std::vector<Neighbourhood> near_;
-    std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for
-    std::uint64_t step_ = 0;                    // counts prepareStep() calls
-    std::vector<std::uint64_t> sentInStep_;     // per slot, the step_ of its last frame
-    std::vector<Slot> sentThisStep_, batch_;
-    std::vector<Receiver*> receiver_;  // the station's receiving side as of the last step; null: gone
-
-    std::optional<kernel::SimTime> refreshedAt_;
-    std::vector<Slot> slotOfIndex_;  // per snapshot index, -1 = not a station
-    traffic::NeighbourGrid grid_;
+    // The parts, each with its per-station arrays by slot.
+    ChannelStations stations_;
+    Reception reception_;  // before the budget: the settings are checked as it is built
+    LinkBudget budget_;
 
     std::unordered_map<std::uint64_t, std::unique_ptr<Transmission>> active_;
     /// Ended transmissions kept for reuse: their link vectors stay allocated and warm in the cache
@@ -146,9 +92,9 @@ private:
     std::vector<std::unique_ptr<Transmission>> spare_;
     std::uint64_t nextTx_ = 1;
     std::unique_ptr<kernel::Message> loadTimer_;
-    std::optional<LoadFigures> load_;
-    double cbrSum_ = 0;
-    std::uint64_t transmissions_ = 0, receptions_ = 0, linksComputed_ = 0;
+    ChannelAccess access_;
+    LoadMonitor load_;
+    std::uint64_t transmissions_ = 0, receptions_ = 0;
 };
 
 }  // namespace sbsim::radio

@@ -4,10 +4,7 @@
 #include <stdexcept>
 
 #include "sbsim/radio/channel/FrameErrorTable.h"
-#include "sbsim/radio/propagation/FreeSpaceLoss.h"
-#include "sbsim/radio/propagation/LogDistanceLoss.h"
-#include "sbsim/radio/propagation/TwoRayGroundLoss.h"
-#include "sbsim/radio/propagation/WinnerB1Loss.h"
+#include "sbsim/radio/propagation/PathLossModels.h"
 
 namespace sbsim::radio {
 
@@ -45,17 +42,7 @@ void ChannelSettings::validate() const {
 }
 
 std::unique_ptr<PathLoss> ChannelSettings::makePathLoss() const {
-    switch (pathLoss) {
-        case PathLossModel::FreeSpace:
-            return std::make_unique<FreeSpaceLoss>(frequencyHz);
-        case PathLossModel::LogDistance:
-            return std::make_unique<LogDistanceLoss>(referenceLossDb, referenceDistance, exponent);
-        case PathLossModel::TwoRayGround:
-            return std::make_unique<TwoRayGroundLoss>(frequencyHz, antennaHeight, antennaHeight);
-        case PathLossModel::WinnerB1:
-            break;
-    }
-    return std::make_unique<WinnerB1Loss>(frequencyHz, antennaHeight, environmentHeight);
+    return PathLossModels::make(pathLoss, frequencyHz, pathLossKeys);
 }
 
 }  // namespace sbsim::radio

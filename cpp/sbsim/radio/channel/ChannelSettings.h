@@ -9,6 +9,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/propagation/PathLoss.h"
+#include "sbsim/radio/propagation/PathLossModels.h"
 
 namespace sbsim::radio {
 
@@ -17,7 +18,6 @@ namespace sbsim::radio {
 /// LOS with 3 dB shadowing, sensing threshold −85 dBm, noise −95 dBm. The radio file (--radio)
 /// sets them; see README "Radio".
 struct SBSIM_API ChannelSettings {
-    enum class PathLossModel { FreeSpace, LogDistance, TwoRayGround, WinnerB1 };
     enum class Fading { None, Nakagami, NakagamiVeins };
     /// Extra delay per reception for abstracted stacks (as Eclipse MOSAIC's delay models), added to
     /// the airtime and channel access: none, constant `delay`, uniform in [`delayMin`, `delayMax`],
@@ -34,12 +34,11 @@ struct SBSIM_API ChannelSettings {
     /// (they would add less than a tenth of the noise): it sets the model's cutoff range.
     double interferenceFloorDbm = -105;
 
-    PathLossModel pathLoss = PathLossModel::WinnerB1;
-    double antennaHeight = 1.5;      ///< m, both ends (WINNER+ B1, two-ray ground)
-    double environmentHeight = 0.5;  ///< m (WINNER+ B1)
-    double referenceLossDb = 47.86;  ///< log-distance: loss at the reference distance (free space at 1 m, 5.89 GHz)
-    double referenceDistance = 1;    ///< m
-    double exponent = 2.0;           ///< log-distance
+    /// A model of PathLossModels (`free-space`, `log-distance`, `two-ray-ground`, `winner-b1`), and
+    /// the model keys the radio file set (`antenna_height`, `exponent`, …): the others keep the
+    /// defaults the model registered.
+    std::string pathLoss = "winner-b1";
+    PathLossModels::Keys pathLossKeys;
 
     double shadowingSigmaDb = 3;  ///< log-normal, per link and message; 0 = none
     Fading fading = Fading::None;

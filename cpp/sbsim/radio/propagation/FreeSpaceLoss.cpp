@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
 #include "sbsim/radio/SpeedOfLight.h"
+#include "sbsim/radio/propagation/PathLossModels.h"
 
 namespace sbsim::radio {
 
@@ -15,5 +17,11 @@ FreeSpaceLoss::FreeSpaceLoss(double frequencyHz) {
 }
 
 double FreeSpaceLoss::lossDb(double distance) const { return 20 * std::log10(std::max(distance, 1.0)) + constantDb_; }
+
+namespace {
+[[maybe_unused]] const bool registered = PathLossModels::add(
+    "free-space", {},
+    [](double frequencyHz, const PathLossModels::Keys&) { return std::make_unique<FreeSpaceLoss>(frequencyHz); });
+}  // namespace
 
 }  // namespace sbsim::radio

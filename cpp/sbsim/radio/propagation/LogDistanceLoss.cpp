@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+
+#include "sbsim/radio/propagation/PathLossModels.h"
 
 namespace sbsim::radio {
 
@@ -16,5 +19,15 @@ LogDistanceLoss::LogDistanceLoss(double referenceLossDb, double referenceDistanc
 double LogDistanceLoss::lossDb(double distance) const {
     return referenceLossDb_ + 10 * exponent_ * std::log10(std::max(distance, 1.0) / referenceDistance_);
 }
+
+namespace {
+// Reference: free space at 1 m and 5.89 GHz.
+[[maybe_unused]] const bool registered =
+    PathLossModels::add("log-distance", {{"reference_loss_db", 47.86}, {"reference_distance", 1}, {"exponent", 2.0}},
+                        [](double, const PathLossModels::Keys& keys) {
+                            return std::make_unique<LogDistanceLoss>(
+                                keys.at("reference_loss_db"), keys.at("reference_distance"), keys.at("exponent"));
+                        });
+}  // namespace
 
 }  // namespace sbsim::radio

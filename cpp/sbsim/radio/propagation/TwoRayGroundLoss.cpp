@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 
 #include "sbsim/radio/SpeedOfLight.h"
+#include "sbsim/radio/propagation/PathLossModels.h"
 
 namespace sbsim::radio {
 
@@ -22,5 +24,13 @@ double TwoRayGroundLoss::lossDb(double distance) const {
     if (d < crossover_) return freeSpace_.lossDb(d);
     return 40 * std::log10(d) - heightsDb_;
 }
+
+namespace {
+// Both antennas at one height.
+[[maybe_unused]] const bool registered = PathLossModels::add(
+    "two-ray-ground", {{"antenna_height", 1.5}}, [](double frequencyHz, const PathLossModels::Keys& keys) {
+        return std::make_unique<TwoRayGroundLoss>(frequencyHz, keys.at("antenna_height"), keys.at("antenna_height"));
+    });
+}  // namespace
 
 }  // namespace sbsim::radio

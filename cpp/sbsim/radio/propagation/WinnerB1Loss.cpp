@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "sbsim/radio/SpeedOfLight.h"
+#include "sbsim/radio/propagation/PathLossModels.h"
 
 namespace sbsim::radio {
 
@@ -25,5 +27,13 @@ double WinnerB1Loss::lossDb(double distance) const {
     const double winner = d < breakpoint_ ? 22.7 * logD + nearDb_ : 40 * logD + farDb_;
     return std::max(winner, 20 * logD + freeSpaceDb_);
 }
+
+namespace {
+[[maybe_unused]] const bool registered = PathLossModels::add(
+    "winner-b1", {{"antenna_height", 1.5}, {"environment_height", 0.5}},
+    [](double frequencyHz, const PathLossModels::Keys& keys) {
+        return std::make_unique<WinnerB1Loss>(frequencyHz, keys.at("antenna_height"), keys.at("environment_height"));
+    });
+}  // namespace
 
 }  // namespace sbsim::radio

@@ -1,0 +1,82 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "sbsim/kernel/ParallelFor.h"
+#include "sbsim/kernel/SimTime.h"
+#include "sbsim/radio/FixedStations.h"
+#include "sbsim/radio/channel/ChannelSettings.h"
+#include "sbsim/radio/channel/ChannelStations.h"
+#include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/propagation/NakagamiFading.h"
+#include "sbsim/radio/propagation/Obstacles.h"
+#include "sbsim/radio/propagation/PathLoss.h"
+#include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/VehicleSnapshot.h"
+
+namespace sbsim::radio {
+
+/// The received power of every link of a frame: path loss and obstacles (the mean, the same for
+/// all of a sender's frames in one SUMO step, so kept per sender and step), then log-normal
+/// shadowing and optional Nakagami fading drawn per link and frame. Links whose mean power plus a
+/// margin falls below the interference floor are not computed (the cutoff range). Per station
+/// its neighbourhood for the step, struct-of-arrays by slot.
+class LinkBudget {
+public:
+    using Slot = ChannelStations::Slot;
+
+    /// Throws std::invalid_argument for a setting out of range. The references must outlive this.
+    LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Obstacles> obstacles,
+               const ChannelStations& stations, const traffic::VehicleSnapshot& snapshot, const FixedStations& fixed);
+
+    /// Links longer than this are not computed (ChannelSettings::interferenceFloorDbm).
+    double cutoffRange() const { return cutoff_; }
+    /// The mean received power (dBm) at `distance` m without obstacles, shadowing or fading.
+    double meanPowerDbm(double distance) const;
+
+    /// A new station, slot size().
+    void addStation();
+    /// The stations were refreshed for a new snapshot: neighbourhoods of stations that left are
+    /// dropped (a long run sees tens of thousands of vehicles), the grid is built anew.
+    void newStep();
+    /// Fills `links` (ascending receiver slot) for the frame of `sender` keyed `frameKey`
+    /// (CounterRandom::frameKey), computing on `pool`: the same whatever its thread count.
+    void computeLinks(Slot sender, std::uint64_t frameKey, std::vector<Link>& links, kernel::ParallelFor& pool);
+    std::uint64_t linksComputed() const { return linksComputed_; }
+
+private:
+    /// A sender's receivers within the cutoff and their distance and mean power, for one step.
+    struct Neighbourhood {
+        std::optional<kernel::SimTime> at;  // the snapshot they were computed for
+        std::vector<Slot> receivers;
+        std::vector<double> distance, meanDbm;
+        std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
+        std::vector<std::uint32_t> bin;  // distance / kDistanceBin
+    };
+    void prepareStep(Slot first, kernel::ParallelFor& pool);
+    /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
+    /// computed on distinct threads.
+    void computeNeighbourhood(Slot s);
+
+    const ChannelSettings& settings_;
+    std::shared_ptr<const Obstacles> obstacles_;
+    const ChannelStations& stations_;
+    const traffic::VehicleSnapshot& snapshot_;
+    const FixedStations& fixed_;
+    std::unique_ptr<PathLoss> pathLoss_;
+    NakagamiFading fading_;
+    double cutoff_ = 0;
+
+    std::vector<Neighbourhood> near_;
+    std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for
+    std::uint64_t step_ = 0;                    // counts prepareStep() calls
+    std::vector<std::uint64_t> sentInStep_;     // per slot, the step_ of its last frame
+    std::vector<Slot> sentThisStep_, batch_;
+    traffic::NeighbourGrid grid_;
+    std::uint64_t linksComputed_ = 0;
+};
+
+}  // namespace sbsim::radio
