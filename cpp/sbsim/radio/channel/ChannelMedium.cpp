@@ -1,13 +1,10 @@
 #include "sbsim/radio/channel/ChannelMedium.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/CounterRandom.h"
-#include "sbsim/radio/Decibels.h"
 #include "sbsim/radio/Receiver.h"
 
 namespace sbsim::radio {

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,15 +23,19 @@ namespace sbsim::radio {
 
 /// IEEE 802.11p broadcast at packet level (see ChannelSettings for every parameter):
 ///  - each station queues its frames and contends for the channel with CSMA/CA (AIFS, then a
-///    backoff of 13 µs slots counted down only while it senses the channel idle; no ACKs);
+///    backoff of 13 µs slots counted down only while it senses the channel idle; no ACKs):
+///    ChannelAccess;
 ///  - a transmission starts and ends as kernel events; at its start the received power at every
 ///    station within the cutoff range is computed once (path loss, obstacles, log-normal
-///    shadowing, optional Nakagami fading) from the last SUMO snapshot's positions;
+///    shadowing, optional Nakagami fading) from the last SUMO snapshot's positions: LinkBudget;
 ///  - a station senses the channel busy while the power it receives is at or above the sensing
 ///    threshold; it locks onto the first frame it detects, does not receive while transmitting,
 ///    and decodes with probability 1 − FER(SINR) where the interference is the largest sum of the
-///    other overlapping frames during this one;
-///  - per station a channel busy ratio every 100 ms feeds ETSI reactive DCC (DccStateMachine).
+///    other overlapping frames during this one: Reception;
+///  - per station a channel busy ratio every 100 ms feeds ETSI reactive DCC: LoadMonitor.
+/// The medium wires these parts (each owns its per-station arrays, by the slot of
+/// ChannelStations): it keeps the stations' positions, puts frames on the air and ends them,
+/// and delivers, counts and traces the receptions.
 /// Every random draw is keyed by (seed, sender, sequence, receiver, purpose) (CounterRandom),
 /// and link powers are computed on the kernel's pool, so results do not depend on the thread count.
 class SBSIM_API ChannelMedium : public Medium, private ChannelAccess::Clock, private Reception::Listener {
