@@ -167,6 +167,7 @@ def test_bad_radio_files_are_one_line_errors(tmp_path: Path) -> None:
         "[phy]\npower = 23\n": "[phy] power: is not a radio setting",
         "[phy]\nrate_mbps = 7\n": "rate_mbps must be one of",
         '[propagation]\npath_loss = "moon"\n': "path_loss: must be free-space",
+        '[frame]\nsecurity = "maybe"\n': "[frame] security: must be signed or none",
         "[phy\n": "radio.toml:1",
     }
     for text, needle in cases.items():
@@ -213,6 +214,14 @@ def test_the_disc_model_traces_range_and_fade_losses(tmp_path: Path) -> None:
     assert all(line["distance"] > 500 for line in lost if line["reason"] == "range")
     assert all(300 < line["distance"] <= 500 for line in lost if line["reason"] == "fade")
     assert all(line["delay"] == pytest.approx(0.001) and line["distance"] <= 500 for line in rx)
+    # The disc model has no airtime but frames its messages all the same: ClearLane messages are
+    # single-hop broadcasts signed with the certificate every time (82 bytes of headers and an
+    # envelope of 6 + length + 11 + 151 + 66).
+    tx = [line for line in lines if line["event"] == "tx"]
+    for line in tx:
+        payload = 40 + line["bytes"]
+        envelope = 6 + (1 if payload < 128 else 2) + 11 + 151 + 66
+        assert line["frame_bytes"] == line["bytes"] + 82 + envelope
     sent, delivered = message_counts(result.stdout)["ClearLane"]
     assert delivered == len(rx)
     assert sent == sum(line["event"] == "tx" for line in lines)
@@ -247,3 +256,33 @@ def test_a_study_sweeps_radio_power_and_keeps_the_messages(tmp_path: Path, radio
     assert set(messages["event"]) >= {"tx", "rx"}
     per_run = messages[messages["event"] == "rx"].groupby("radio_power_dbm").size()
     assert per_run[10] == low["delivered:Beacon"] and per_run[30] == high["delivered:Beacon"]
+
+
+def test_frames_carry_their_headers_and_a_signature_with_the_certificate_once_a_second(
+    tmp_path: Path, radio_file: Path
+) -> None:
+    # Beacons are framed and signed as CAMs: 190 bytes + MAC 26, LLC/SNAP 8, GeoNetworking basic 4,
+    # common 8 and SHB 28, BTP-B 4, FCS 4 (82), plus the envelope around the 230-byte payload:
+    # head 6 + a two-byte length, header info 11, signature 66 and the signer: digest 9 (366 in
+    # all) or certificate 151 (508).
+    cfg = highway(tmp_path / "road", [50.0, 200.0], 1.0, building=False)
+    messages = tmp_path / "messages.jsonl"
+    beacon_run(cfg, tmp_path, "--messages", str(messages), end=4.0)
+    tx = [line for line in read_messages(messages) if line["event"] == "tx"]
+    assert {line["bytes"] for line in tx} == {190}
+    assert {line["frame_bytes"] for line in tx} == {366, 508}
+    for station in ("v0000", "v0001"):
+        frames = [(line["t"], line["frame_bytes"]) for line in tx if line["station"] == station]
+        assert frames[0][1] == 508
+        full = [t for t, size in frames if size == 508]
+        # Once a second (Vanetza's 950 ms), once more after hearing the other station for the first time.
+        assert 4 <= len(full) <= 5, frames
+        gaps = [b - a for a, b in zip(full, full[1:], strict=False)]
+        # (t is the frame's start, after channel access: a fraction of a millisecond after signing.)
+        assert all(gap < 1.001 for gap in gaps), gaps
+        assert sum(gap < 0.9 for gap in gaps) <= 1, gaps  # only the new neighbour's
+    # Unsecured: the headers alone.
+    (tmp_path / "radio.toml").write_text('[frame]\nsecurity = "none"\n')
+    beacon_run(cfg, tmp_path, "--messages", str(messages), end=1.0)
+    tx = [line for line in read_messages(messages) if line["event"] == "tx"]
+    assert tx and {line["frame_bytes"] for line in tx} == {190 + 82}

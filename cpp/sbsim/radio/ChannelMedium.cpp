@@ -61,6 +61,7 @@ ChannelMedium::ChannelMedium(ChannelSettings settings, const traffic::VehicleSna
       obstacles_(std::move(obstacles)),
       fer_((settings_.validate(), settings_.ferTable)) {
     pathLoss_ = settings_.makePathLoss();
+    setSecured(settings_.secured);
     fading_.m = settings_.nakagamiM;
     fading_.veinsDistanceRule = settings_.fading == ChannelSettings::Fading::NakagamiVeins;
     sensingMw_ = toMw(settings_.sensingDbm);
@@ -437,7 +438,7 @@ void ChannelMedium::startTransmission(Slot s) {
         in.push_back({tx.get(), k, link.powerMw});
         setSensedPower(r, total);
     }
-    scheduleAt(simTime() + settings_.airtime(tx->message->byteSize()), tx->end);
+    scheduleAt(simTime() + settings_.airtime(tx->message->frameBytes()), tx->end);
     active_.emplace(tx->id, std::move(tx));
 }
 

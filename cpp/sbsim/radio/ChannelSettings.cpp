@@ -11,10 +11,12 @@
 
 namespace sbsim::radio {
 
-kernel::SimTime ChannelSettings::airtime(std::size_t bytes) const {
-    const double bits = (static_cast<double>(bytes) + 30) * 8;
-    return kernel::SimTime::fromNanoseconds(40'000) +
-           kernel::SimTime::fromNanoseconds(static_cast<kernel::SimTime::rep>(std::ceil(bits * 1e3 / rateMbps)));
+kernel::SimTime ChannelSettings::airtime(std::size_t frameBytes) const {
+    // Data bits per symbol: 24 at 3 Mbit/s … 216 at 27 (every allowed rate gives a whole number).
+    const auto perSymbol = static_cast<std::size_t>(std::lround(rateMbps * 8));
+    const std::size_t bits = 16 + 8 * frameBytes + 6;
+    const auto symbols = static_cast<kernel::SimTime::rep>((bits + perSymbol - 1) / perSymbol);
+    return kernel::SimTime::fromNanoseconds(40'000 + symbols * 8'000);
 }
 
 void ChannelSettings::validate() const {

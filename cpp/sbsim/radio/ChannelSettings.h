@@ -75,12 +75,19 @@ struct SBSIM_API ChannelSettings {
     double delayMax = 0;  ///< s, uniform
     double delayShape = 2;
 
+    /// Frames carry the TS 103 097 security envelope (FrameSize.h, CertificatePolicy.h); the radio
+    /// file's `[frame] security = "none"` sends them unsecured.
+    bool secured = true;
+
     /// Lost receptions are traced (--messages) only for stations this close to the sender.
     double traceRange = 500;
 
     kernel::SimTime aifs() const { return sifs + slot * aifsn; }
-    /// 40 µs of preamble and header plus (bytes + 30 of MAC header and FCS) at the rate.
-    kernel::SimTime airtime(std::size_t bytes) const;
+    /// The time on air of a frame of `frameBytes` (the PSDU: MAC header to FCS, V2xMessage::frameBytes()):
+    /// 32 µs preamble and 8 µs SIGNAL, then 8 µs OFDM symbols of rate · 8 µs data bits each carrying
+    /// the 16 SERVICE bits, the frame and 6 tail bits, padded to a whole symbol (IEEE 802.11 §17.4.3
+    /// at 10 MHz; Vanetza's DataRateG5::data_length).
+    kernel::SimTime airtime(std::size_t frameBytes) const;
     /// Throws std::invalid_argument naming the first setting out of range.
     void validate() const;
     std::unique_ptr<PathLoss> makePathLoss() const;

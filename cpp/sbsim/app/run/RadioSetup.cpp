@@ -106,6 +106,12 @@ const std::map<std::string, TextKey, std::less<>>& textKeys() {
               if (it == models.end()) throw std::invalid_argument("must be none, constant, uniform or gamma");
               s.extraDelay = it->second;
           }}},
+        {"security",
+         {"frame",
+          [](Settings& s, const std::string& v) {
+              if (v != "signed" && v != "none") throw std::invalid_argument("must be signed or none");
+              s.secured = v == "signed";
+          }}},
         {"polygon_type", {"obstacles", [](Settings& s, const std::string& v) { s.obstacleType = v; }}},
     };
     return keys;
