@@ -286,3 +286,38 @@ def test_frames_carry_their_headers_and_a_signature_with_the_certificate_once_a_
     beacon_run(cfg, tmp_path, "--messages", str(messages), end=1.0)
     tx = [line for line in read_messages(messages) if line["event"] == "tx"]
     assert tx and {line["frame_bytes"] for line in tx} == {190 + 82}
+
+
+@pytest.mark.parametrize("correlation", [0, 25])
+def test_losses_come_in_bursts_with_correlated_shadowing(tmp_path: Path, radio_file: Path, correlation: int) -> None:
+    # Two vehicles 285 m apart, both at 20 m/s: near the sensing edge (about 291 m at the mean), so
+    # the shadowing decides. Each moves 2 m a frame, the pair 4 m: with d_corr = 25 m consecutive
+    # frames share ρ = 0.85 of their shadowing, and a loss makes the next one likelier.
+    cfg = highway(tmp_path / "road", [20.0, 305.0], 20.0, building=False, length=2000.0, lanes=1)
+    messages = tmp_path / "messages.jsonl"
+    beacon_run(
+        cfg,
+        tmp_path,
+        "--messages",
+        str(messages),
+        "--param",
+        f"radio_shadowing_correlation_m={correlation}",
+        end=80.0,
+    )
+    lines = read_messages(messages)
+    outcome: dict[int, bool] = {}  # v0000's frames at v0001: lost?
+    for line in lines:
+        if line["event"] in ("rx", "lost") and line["sender"] == "v0000" and line["station"] == "v0001":
+            outcome[line["seq"]] = line["event"] == "lost"
+    seqs = sorted(outcome)
+    assert len(seqs) > 600
+    lost = [outcome[s] for s in seqs]
+    p_loss = sum(lost) / len(lost)
+    pairs = [(a, b) for a, b, sa, sb in zip(lost, lost[1:], seqs, seqs[1:], strict=False) if sb == sa + 1]
+    after_loss = [b for a, b in pairs if a]
+    p_loss_after_loss = sum(after_loss) / len(after_loss)
+    assert 0.1 < p_loss < 0.9, p_loss
+    if correlation:
+        assert p_loss_after_loss > p_loss + 0.2, (p_loss, p_loss_after_loss)
+    else:
+        assert abs(p_loss_after_loss - p_loss) < 0.08, (p_loss, p_loss_after_loss)

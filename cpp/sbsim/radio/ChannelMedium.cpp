@@ -91,6 +91,10 @@ double ChannelMedium::meanPowerDbm(double distance) const { return settings_.pow
 
 void ChannelMedium::initialize() {
     seed_ = simulation().seed();
+    if (settings_.shadowingSigmaDb > 0 && settings_.shadowingCorrelation > 0) {
+        shadowing_ =
+            std::make_unique<CorrelatedShadowing>(settings_.shadowingSigmaDb, settings_.shadowingCorrelation, seed_);
+    }
     loadTimer_ = std::make_unique<kernel::Message>("channel load", kLoad);
     scheduleAt(DccStateMachine::kSampling * (simTime() / DccStateMachine::kSampling + 1), *loadTimer_);
 }
@@ -280,6 +284,11 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
     const std::uint64_t frameKey = CounterRandom::frameKey(seed_, keys_[s], tx.message->sequence());
     const bool fading = settings_.fading != ChannelSettings::Fading::None;
     const bool shadowing = settings_.shadowingSigmaDb > 0;
+    if (shadowing_) {
+        // The pairs are looked up (and made) here, serially; the pool then moves distinct pairs on.
+        pairs_.resize(near.receivers.size());
+        for (std::size_t k = 0; k < pairs_.size(); ++k) pairs_[k] = shadowing_->pair(keys_[s], near.key[k], simTime());
+    }
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     simulation().parallel().run(
         near.receivers.size(),
@@ -297,7 +306,9 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
                 link.halfDuplex = false;
                 link.locked = false;
                 double dbm = near.meanDbm[k];
-                if (shadowing) {
+                if (shadowing_) {
+                    dbm += shadowing_->valueDb(pairs_[k], keys_[s], x_[s], y_[s], near.key[k], x_[r], y_[r]);
+                } else if (shadowing) {
                     auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
                 }
@@ -581,6 +592,7 @@ void ChannelMedium::traceLost(const Transmission& tx, Slot receiver, double dist
 
 void ChannelMedium::sampleLoad() {
     const kernel::SimTime now = simTime();
+    if (shadowing_) shadowing_->forget(now);
     for (Slot s = 0; s < static_cast<Slot>(ids_.size()); ++s) {
         if (cbrBusy_[s]) {
             busyNs_[s] += (now - cbrSince_[s]).raw();

@@ -16,6 +16,7 @@
 #include "sbsim/radio/NakagamiFading.h"
 #include "sbsim/radio/Obstacles.h"
 #include "sbsim/radio/PathLoss.h"
+#include "sbsim/radio/propagation/CorrelatedShadowing.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -26,13 +27,15 @@ namespace sbsim::radio {
 ///    backoff of 13 µs slots counted down only while it senses the channel idle; no ACKs);
 ///  - a transmission starts and ends as kernel events; at its start the received power at every
 ///    station within the cutoff range is computed once (path loss, obstacles, log-normal
-///    shadowing, optional Nakagami fading) from the last SUMO snapshot's positions;
+///    shadowing per pair correlated over the distance moved or drawn per frame, optional Nakagami
+///    fading) from the last SUMO snapshot's positions;
 ///  - a station senses the channel busy while the power it receives is at or above the sensing
 ///    threshold; it locks onto the first frame it detects, does not receive while transmitting,
 ///    and decodes with probability 1 − FER(SINR) where the interference is the largest sum of the
 ///    other overlapping frames during this one;
 ///  - per station a channel busy ratio every 100 ms feeds ETSI reactive DCC (DccStateMachine).
-/// Every random draw is keyed by (seed, sender, sequence, receiver, purpose) (CounterRandom),
+/// Every random draw is keyed by (seed, sender, sequence, receiver, purpose) (CounterRandom), a
+/// correlated shadowing update by (seed, pair, update count) (CorrelatedShadowing),
 /// and link powers are computed on the kernel's pool, so results do not depend on the thread count.
 class SBSIM_API ChannelMedium : public Medium {
 public:
@@ -99,6 +102,8 @@ private:
     double cutoff_ = 0;
     double sensingMw_, noiseMw_, floorMw_;
     std::uint64_t seed_ = 0;
+    std::unique_ptr<CorrelatedShadowing> shadowing_;  // null: drawn per frame
+    std::vector<CorrelatedShadowing::Index> pairs_;   // the current frame's, per link
 
     // Stations (equipped vehicles), struct-of-arrays by slot; a slot is never reused.
     std::unordered_map<std::string, Slot> slotOf_;

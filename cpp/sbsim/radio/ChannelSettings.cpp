@@ -8,6 +8,8 @@
 #include "sbsim/radio/LogDistanceLoss.h"
 #include "sbsim/radio/TwoRayGroundLoss.h"
 #include "sbsim/radio/WinnerB1Loss.h"
+#include "sbsim/radio/propagation/ThreeGppHighwayLoss.h"
+#include "sbsim/radio/propagation/ThreeGppUrbanLoss.h"
 
 namespace sbsim::radio {
 
@@ -33,6 +35,7 @@ void ChannelSettings::validate() const {
     require(std::isfinite(noiseDbm) && std::isfinite(sensingDbm) && std::isfinite(interferenceFloorDbm),
             "noise_dbm, sensing_dbm and interference_floor_dbm must be numbers");
     require(shadowingSigmaDb >= 0, "shadowing_sigma_db must be >= 0");
+    require(shadowingCorrelation >= 0 && std::isfinite(shadowingCorrelation), "shadowing_correlation_m must be >= 0");
     require(nakagamiM >= 0.5, "nakagami_m must be >= 0.5");
     require(wallDb >= 0 && perMetreDb >= 0, "obstacle losses must be >= 0 dB");
     require(aifsn >= 1 && aifsn <= 15, "aifsn must be 1 to 15");
@@ -54,6 +57,12 @@ std::unique_ptr<PathLoss> ChannelSettings::makePathLoss() const {
             return std::make_unique<LogDistanceLoss>(referenceLossDb, referenceDistance, exponent);
         case PathLossModel::TwoRayGround:
             return std::make_unique<TwoRayGroundLoss>(frequencyHz, antennaHeight, antennaHeight);
+        case PathLossModel::ThreeGppHighway:
+            return std::make_unique<ThreeGppHighwayLoss>(frequencyHz);
+        case PathLossModel::ThreeGppUrban:
+            return std::make_unique<ThreeGppUrbanLoss>(frequencyHz, true);
+        case PathLossModel::ThreeGppUrbanNlos:
+            return std::make_unique<ThreeGppUrbanLoss>(frequencyHz, false);
         case PathLossModel::WinnerB1:
             break;
     }

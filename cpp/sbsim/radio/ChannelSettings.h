@@ -17,7 +17,15 @@ namespace sbsim::radio {
 /// LOS with 3 dB shadowing, sensing threshold −85 dBm, noise −95 dBm. The radio file (--radio)
 /// sets them; see README "Radio".
 struct SBSIM_API ChannelSettings {
-    enum class PathLossModel { FreeSpace, LogDistance, TwoRayGround, WinnerB1 };
+    enum class PathLossModel {
+        FreeSpace,
+        LogDistance,
+        TwoRayGround,
+        WinnerB1,
+        ThreeGppHighway,
+        ThreeGppUrban,
+        ThreeGppUrbanNlos
+    };
     enum class Fading { None, Nakagami, NakagamiVeins };
     /// Extra delay per reception for abstracted stacks (as Eclipse MOSAIC's delay models), added to
     /// the airtime and channel access: none, constant `delay`, uniform in [`delayMin`, `delayMax`],
@@ -41,7 +49,12 @@ struct SBSIM_API ChannelSettings {
     double referenceDistance = 1;    ///< m
     double exponent = 2.0;           ///< log-distance
 
-    double shadowingSigmaDb = 3;  ///< log-normal, per link and message; 0 = none
+    double shadowingSigmaDb = 3;  ///< log-normal; 0 = none
+    /// m: shadowing per pair of stations correlated over the distance they move (Gudmundson,
+    /// propagation/CorrelatedShadowing.h); 0 draws it afresh per link and frame (Sepulcre et al.'s
+    /// setting). Presets: 10 m line of sight and 13 m NLOS (3GPP TR 37.885 Table 6.2.3-1), 25 m on
+    /// highways (WiLabV2Xsim). Default 10 m: TR 37.885's LOS value, for the default LOS law and σ.
+    double shadowingCorrelation = 10;
     Fading fading = Fading::None;
     double nakagamiM = 1.5;  ///< with Fading::Nakagami
 

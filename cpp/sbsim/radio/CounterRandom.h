@@ -10,7 +10,15 @@
 namespace sbsim::radio {
 
 /// What a radio draw is for: part of its key, so two purposes on the same link never share a number.
-enum class DrawPurpose : std::uint64_t { Shadowing = 1, Fading = 2, Decode = 3, Backoff = 4, Start = 5, Delay = 6 };
+enum class DrawPurpose : std::uint64_t {
+    Shadowing = 1,
+    Fading = 2,
+    Decode = 3,
+    Backoff = 4,
+    Start = 5,
+    Delay = 6,
+    CorrelatedShadowing = 7,  // keyed by (seed, pair, update) instead of a frame
+};
 
 /// A counter-based random generator: every number is a pure function of its key (seed, sender,
 /// sequence number, receiver, purpose) and a counter, like Philox or Random123's generators. No

@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -234,6 +235,40 @@ TEST(ChannelMedium, FramesAreSignedAndLastTheirWholeSize) {
     plain.run();
     EXPECT_EQ(plain.trace.frames["a"], (std::vector<std::size_t>{190 + 82, 190 + 82}));
     EXPECT_EQ(plain.modules["b"]->times[0], plain.trace.txTimes["a"][0] + s.airtime(190 + 82));
+}
+
+/// The received powers (dBm, as traced) of `receiver`'s receptions from `sender`, in order.
+std::vector<std::string> powers(const LinesTrace& trace, const std::string& receiver, const std::string& sender) {
+    std::vector<std::string> out;
+    for (const std::string& line : trace.lines) {
+        std::istringstream in(line);
+        std::string t, event, station, from, seq, power;
+        in >> t >> event >> station >> from >> seq >> power;
+        if (event == "rx" && station == receiver && from == sender) out.push_back(power);
+    }
+    return out;
+}
+
+TEST(ChannelMedium, CorrelatedShadowingStaysWhileStationsStandAndIsOneValueBothWays) {
+    ChannelSettings s;  // σ = 3 dB, correlated over 10 m
+    Bench b({{"a", 0}, {"b", 100}}, s);
+    for (int k = 0; k < 4; ++k) {
+        b.send(SimTime::fromMilliseconds(10 * k), "a");
+        b.send(SimTime::fromMilliseconds(10 * k + 5), "b");
+    }
+    b.run();
+    const auto ab = powers(b.trace, "b", "a");
+    ASSERT_EQ(ab.size(), 4u);
+    EXPECT_EQ(std::set<std::string>(ab.begin(), ab.end()).size(), 1u);  // nobody moved: one value
+    EXPECT_EQ(powers(b.trace, "a", "b"), ab);                           // and the same both ways
+    // Per frame (correlation 0, today's draw): a value per frame and direction.
+    s.shadowingCorrelation = 0;
+    Bench perFrame({{"a", 0}, {"b", 100}}, s);
+    for (int k = 0; k < 4; ++k) perFrame.send(SimTime::fromMilliseconds(10 * k), "a");
+    perFrame.run();
+    const auto drawn = powers(perFrame.trace, "b", "a");
+    ASSERT_EQ(drawn.size(), 4u);
+    EXPECT_EQ(std::set<std::string>(drawn.begin(), drawn.end()).size(), 4u);
 }
 
 TEST(ChannelMedium, ABuildingBlocksALink) {

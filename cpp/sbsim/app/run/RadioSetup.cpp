@@ -48,6 +48,7 @@ const std::map<std::string, NumberKey, std::less<>>& numberKeys() {
         {"reference_distance", {"propagation", [](Settings& s, double v) { s.referenceDistance = v; }}},
         {"exponent", {"propagation", [](Settings& s, double v) { s.exponent = v; }}},
         {"shadowing_sigma_db", {"propagation", [](Settings& s, double v) { s.shadowingSigmaDb = v; }}},
+        {"shadowing_correlation_m", {"propagation", [](Settings& s, double v) { s.shadowingCorrelation = v; }}},
         {"nakagami_m", {"propagation", [](Settings& s, double v) { s.nakagamiM = v; }}},
         {"wall_db", {"obstacles", [](Settings& s, double v) { s.wallDb = v; }}},
         {"per_metre_db", {"obstacles", [](Settings& s, double v) { s.perMetreDb = v; }}},
@@ -75,10 +76,15 @@ const std::map<std::string, TextKey, std::less<>>& textKeys() {
                   {"free-space", Settings::PathLossModel::FreeSpace},
                   {"log-distance", Settings::PathLossModel::LogDistance},
                   {"two-ray-ground", Settings::PathLossModel::TwoRayGround},
-                  {"winner-b1", Settings::PathLossModel::WinnerB1}};
+                  {"winner-b1", Settings::PathLossModel::WinnerB1},
+                  {"3gpp-highway", Settings::PathLossModel::ThreeGppHighway},
+                  {"3gpp-urban", Settings::PathLossModel::ThreeGppUrban},
+                  {"3gpp-urban-nlos", Settings::PathLossModel::ThreeGppUrbanNlos}};
               const auto it = models.find(v);
               if (it == models.end())
-                  throw std::invalid_argument("must be free-space, log-distance, two-ray-ground or winner-b1");
+                  throw std::invalid_argument(
+                      "must be free-space, log-distance, two-ray-ground, winner-b1, 3gpp-highway, 3gpp-urban or "
+                      "3gpp-urban-nlos");
               s.pathLoss = it->second;
           }}},
         {"fading",

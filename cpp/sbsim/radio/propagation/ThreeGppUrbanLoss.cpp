@@ -1,0 +1,20 @@
+#include "sbsim/radio/propagation/ThreeGppUrbanLoss.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbsim::radio {
+
+ThreeGppUrbanLoss::ThreeGppUrbanLoss(double frequencyHz, bool lineOfSight) {
+    if (!(frequencyHz > 0)) throw std::invalid_argument("3GPP urban: the frequency must be > 0 Hz");
+    const double logF = std::log10(frequencyHz / 1e9);
+    constantDb_ = lineOfSight ? 38.77 + 18.2 * logF : 36.85 + 18.9 * logF;
+    slopeDb_ = lineOfSight ? 16.7 : 30;
+}
+
+double ThreeGppUrbanLoss::lossDb(double distance) const {
+    return constantDb_ + slopeDb_ * std::log10(std::max(distance, 1.0));
+}
+
+}  // namespace sbsim::radio
