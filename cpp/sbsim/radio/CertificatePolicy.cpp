@@ -1,13 +1,14 @@
 #include "sbsim/radio/CertificatePolicy.h"
 
+#include "sbsim/radio/CounterRandom.h"
+
 namespace sbsim::radio {
 
 CertificatePolicy::Station& CertificatePolicy::of(std::string_view station, kernel::SimTime now) {
     forgetOld(now);
-    auto it = stations_.find(std::string(station));
-    if (it == stations_.end()) it = stations_.emplace(std::string(station), Station{}).first;
-    it->second.lastActive = now;
-    return it->second;
+    Station& s = stations_[CounterRandom::keyOf(station)];
+    s.lastActive = now;
+    return s;
 }
 
 void CertificatePolicy::forgetOld(kernel::SimTime now) {
@@ -39,7 +40,7 @@ void CertificatePolicy::heard(std::string_view station, std::string_view sender,
                               kernel::SimTime now) {
     if (!secured_) return;
     Station& s = of(station, now);
-    const auto [it, inserted] = s.known.try_emplace(std::string(sender), now);
+    const auto [it, inserted] = s.known.try_emplace(CounterRandom::keyOf(sender), now);
     const bool wasKnown = !inserted && now - it->second <= kForgetAfter;
     it->second = now;
     // Vanetza asks for its own certificate only on a CAM from an unknown station.

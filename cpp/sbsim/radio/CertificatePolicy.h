@@ -2,7 +2,6 @@
 
 #include <cstdint>
 #include <optional>
-#include <string>
 #include <string_view>
 #include <unordered_map>
 
@@ -45,13 +44,15 @@ private:
         std::optional<kernel::SimTime> nextCertificate;  // none: the next CAM carries it
         bool requested = false;                          // a new station was heard
         kernel::SimTime lastActive;
-        std::unordered_map<std::string, kernel::SimTime> known;  // sender -> last heard
+        std::unordered_map<std::uint64_t, kernel::SimTime> known;  // sender's key -> last heard
     };
     Station& of(std::string_view station, kernel::SimTime now);
     void forgetOld(kernel::SimTime now);
 
     bool secured_;
-    std::unordered_map<std::string, Station> stations_;
+    // By CounterRandom::keyOf(id): asked once per reception, where building a string key cost more
+    // than the reception.
+    std::unordered_map<std::uint64_t, Station> stations_;
     kernel::SimTime lastSweep_;
 };
 

@@ -286,8 +286,7 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
     const bool shadowing = settings_.shadowingSigmaDb > 0;
     if (shadowing_) {
         // The pairs are looked up (and made) here, serially; the pool then moves distinct pairs on.
-        pairs_.resize(near.receivers.size());
-        for (std::size_t k = 0; k < pairs_.size(); ++k) pairs_[k] = shadowing_->pair(keys_[s], near.key[k], simTime());
+        shadowing_->pairs(keys_[s], near.key, simTime(), pairs_);
     }
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     simulation().parallel().run(
@@ -307,6 +306,7 @@ void ChannelMedium::computeLinks(Slot s, const Transmission& tx, std::vector<Lin
                 link.locked = false;
                 double dbm = near.meanDbm[k];
                 if (shadowing_) {
+                    if (k + 4 < end) shadowing_->prefetch(pairs_[k + 4]);
                     dbm += shadowing_->valueDb(pairs_[k], keys_[s], x_[s], y_[s], near.key[k], x_[r], y_[r]);
                 } else if (shadowing) {
                     auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Shadowing);

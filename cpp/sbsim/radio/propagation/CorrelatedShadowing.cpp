@@ -9,9 +9,11 @@
 
 namespace sbsim::radio {
 
-std::size_t CorrelatedShadowing::KeyHash::operator()(const Key& k) const {
-    return static_cast<std::size_t>(CounterRandom::mix(k.lo ^ CounterRandom::mix(k.hi)));
+namespace {
+std::size_t hashOf(std::uint64_t lo, std::uint64_t hi) {
+    return static_cast<std::size_t>(CounterRandom::mix(lo ^ CounterRandom::mix(hi)));
 }
+}  // namespace
 
 CorrelatedShadowing::CorrelatedShadowing(double sigmaDb, double correlationDistance, std::uint64_t seed)
     : sigmaDb_(sigmaDb), correlationDistance_(correlationDistance), seed_(seed) {
@@ -19,22 +21,61 @@ CorrelatedShadowing::CorrelatedShadowing(double sigmaDb, double correlationDista
     if (!(correlationDistance > 0)) throw std::invalid_argument("shadowing correlation distance must be > 0 m");
 }
 
+std::size_t CorrelatedShadowing::slotOf(const Key& key) const { return hashOf(key.lo, key.hi) & (table_.size() - 1); }
+
 CorrelatedShadowing::Index CorrelatedShadowing::pair(std::uint64_t a, std::uint64_t b, kernel::SimTime now) {
     const Key key{std::min(a, b), std::max(a, b)};
-    auto [it, inserted] = byKey_.try_emplace(key, 0);
-    if (inserted) {
+    if (2 * (used_ + 1) > table_.size()) rebuild(std::max<std::size_t>(1024, 2 * table_.size()));
+    const std::size_t mask = table_.size() - 1;
+    std::size_t at = slotOf(key);
+    while (table_[at].index != kEmpty && !(table_[at].key == key)) at = (at + 1) & mask;
+    Slot& slot = table_[at];
+    if (slot.index == kEmpty) {
         if (free_.empty()) {
-            it->second = static_cast<Index>(states_.size());
+            slot.index = static_cast<Index>(states_.size());
             states_.emplace_back();
         } else {
-            it->second = free_.back();
+            slot.index = free_.back();
             free_.pop_back();
-            states_[it->second] = State{};
+            states_[slot.index] = State{};
         }
-        states_[it->second].key = key;
+        slot.key = key;
+        states_[slot.index].key = key;
+        ++used_;
     }
-    states_[it->second].seen = now;
-    return it->second;
+    slot.seen = now;
+    return slot.index;
+}
+
+void CorrelatedShadowing::pairs(std::uint64_t a, const std::vector<std::uint64_t>& others, kernel::SimTime now,
+                                std::vector<Index>& out) {
+    const std::size_t n = others.size();
+    out.resize(n);
+    // Room for every one first, so the slots fetched ahead stay where they are.
+    std::size_t slots = std::max<std::size_t>(1024, table_.size());
+    while (2 * (used_ + n) > slots) slots *= 2;
+    if (slots != table_.size()) rebuild(slots);
+    constexpr std::size_t kAhead = 8;
+    const auto fetch = [&](std::size_t k) {
+        __builtin_prefetch(&table_[slotOf({std::min(a, others[k]), std::max(a, others[k])})], 1);
+    };
+    for (std::size_t k = 0; k < std::min(n, kAhead); ++k) fetch(k);
+    for (std::size_t k = 0; k < n; ++k) {
+        if (k + kAhead < n) fetch(k + kAhead);
+        out[k] = pair(a, others[k], now);
+    }
+}
+
+void CorrelatedShadowing::rebuild(std::size_t slots) {
+    std::vector<Slot> old(slots);
+    old.swap(table_);
+    const std::size_t mask = slots - 1;
+    for (const Slot& s : old) {
+        if (s.index == kEmpty) continue;
+        std::size_t at = slotOf(s.key);
+        while (table_[at].index != kEmpty) at = (at + 1) & mask;
+        table_[at] = s;
+    }
 }
 
 double CorrelatedShadowing::valueDb(Index pair, std::uint64_t a, double ax, double ay, std::uint64_t b, double bx,
@@ -52,7 +93,8 @@ double CorrelatedShadowing::valueDb(Index pair, std::uint64_t a, double ax, doub
         s.z = draw();
         s.fresh = false;
     } else {
-        const double moved = std::hypot(ax - s.loX, ay - s.loY) + std::hypot(bx - s.hiX, by - s.hiY);
+        const double dax = ax - s.loX, day = ay - s.loY, dbx = bx - s.hiX, dby = by - s.hiY;
+        const double moved = std::sqrt(dax * dax + day * day) + std::sqrt(dbx * dbx + dby * dby);
         if (moved > 0) {
             const double rho = std::exp(-moved / correlationDistance_);
             s.z = rho * s.z + std::sqrt(1 - rho * rho) * draw();
@@ -68,14 +110,21 @@ double CorrelatedShadowing::valueDb(Index pair, std::uint64_t a, double ax, doub
 void CorrelatedShadowing::forget(kernel::SimTime now) {
     if (now - lastSweep_ < kForgetAfter) return;
     lastSweep_ = now;
-    for (auto it = byKey_.begin(); it != byKey_.end();) {
-        if (now - states_[it->second].seen > kForgetAfter) {
-            free_.push_back(it->second);
-            it = byKey_.erase(it);
-        } else {
-            ++it;
+    std::size_t forgotten = 0;
+    for (Slot& slot : table_) {
+        if (slot.index != kEmpty && now - slot.seen > kForgetAfter) {
+            free_.push_back(slot.index);
+            slot.index = kEmpty;
+            ++forgotten;
         }
     }
+    if (forgotten == 0) return;
+    used_ -= forgotten;
+    // Linear probing cannot just empty slots (a probe would stop early): the table is laid out
+    // afresh, at most half full.
+    std::size_t slots = 1024;
+    while (slots < 2 * used_) slots *= 2;
+    rebuild(slots);
 }
 
 }  // namespace sbsim::radio

@@ -2,7 +2,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
@@ -37,13 +36,18 @@ public:
 
     /// The pair of the stations keyed `a` and `b` (either order), made on first use; seen at `now`. Serial.
     Index pair(std::uint64_t a, std::uint64_t b, kernel::SimTime now);
+    /// pair(a, others[k], now) for every k into `out`, the table's slots fetched ahead (a frame's
+    /// hundreds of lookups are cache misses each). Serial.
+    void pairs(std::uint64_t a, const std::vector<std::uint64_t>& others, kernel::SimTime now, std::vector<Index>& out);
+    /// Hints that valueDb(pair, …) comes soon.
+    void prefetch(Index pair) const { __builtin_prefetch(&states_[pair], 1); }
     /// The pair's shadowing in dB with station `a` at (ax, ay) and `b` at (bx, by), after moving it
     /// on by their displacements since its last value. Safe on distinct pairs at once.
     double valueDb(Index pair, std::uint64_t a, double ax, double ay, std::uint64_t b, double bx, double by);
     /// Forgets the pairs unseen for kForgetAfter (a sweep at most every kForgetAfter). Serial.
     void forget(kernel::SimTime now);
 
-    std::size_t pairs() const { return byKey_.size(); }
+    std::size_t pairs() const { return used_; }
     double correlationDistance() const { return correlationDistance_; }
 
 private:
@@ -51,8 +55,13 @@ private:
         std::uint64_t lo, hi;
         bool operator==(const Key&) const = default;
     };
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const;
+    static constexpr Index kEmpty = ~Index{0};
+    /// A slot of the open-addressing table (linear probing, at most half full): looked up for
+    /// every link of every frame, where a node-based map cost a quarter of the run.
+    struct Slot {
+        Key key{};
+        kernel::SimTime seen;  // here, not in State: a lookup then touches one cache line
+        Index index = kEmpty;
     };
     /// One record per pair: a frame reads and writes all of it at once, so its fields sit together.
     struct State {
@@ -60,13 +69,16 @@ private:
         double z = 0;
         std::uint64_t draws = 0;                    // values drawn so far: the next one's counter
         double loX = 0, loY = 0, hiX = 0, hiY = 0;  // where its stations were at its last value
-        kernel::SimTime seen;
-        bool fresh = true;  // no value yet
+        bool fresh = true;                          // no value yet
     };
+    std::size_t slotOf(const Key& key) const;
+    /// Lays the live slots out afresh in a table of `slots` (a power of two).
+    void rebuild(std::size_t slots);
 
     double sigmaDb_, correlationDistance_;
     std::uint64_t seed_;
-    std::unordered_map<Key, Index, KeyHash> byKey_;
+    std::vector<Slot> table_;
+    std::size_t used_ = 0;
     std::vector<State> states_;
     std::vector<Index> free_;
     kernel::SimTime lastSweep_;
