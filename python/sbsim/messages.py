@@ -24,7 +24,9 @@ if TYPE_CHECKING:
 
 __all__ = ["MESSAGE_FIELDS", "MessageTraceError", "Filters", "read_message_lines", "read_messages"]
 
-#: What each kind of line carries at least (extra fields may follow: power, SINR, a DENM's cause, ...).
+#: What each kind of line carries at least (extra fields may follow: power, SINR, a DENM's cause, ...;
+#: ``tx`` lines of sbsim since frames have their real size also carry ``frame_bytes``, the whole 802.11
+#: frame around ``bytes``, not required here so that older traces still read).
 MESSAGE_FIELDS: dict[str, dict[str, type | tuple[type, ...]]] = {
     "tx": {
         "t": (int, float),

@@ -27,7 +27,7 @@ SERVICES = """<services>
     </rsu>
 </services>"""
 #: Columns both formats carry for every line of this run (the disc model: no cbr, power or SINR).
-NUMERIC = ("t", "seq", "bytes", "x", "y", "distance", "delay", "cause", "subcause")
+NUMERIC = ("t", "seq", "bytes", "frame_bytes", "x", "y", "distance", "delay", "cause", "subcause")
 TEXT = ("event", "type", "station", "sender", "reason", "phase", "action")
 
 

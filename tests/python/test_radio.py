@@ -179,6 +179,7 @@ def test_bad_radio_files_are_one_line_errors(tmp_path: Path) -> None:
         "[phy]\npower = 23\n": "[phy] power: is not a radio setting",
         "[phy]\nrate_mbps = 7\n": "rate_mbps must be one of",
         '[propagation]\npath_loss = "moon"\n': "path_loss: must be free-space",
+        '[frame]\nsecurity = "maybe"\n': "[frame] security: must be signed or none",
         "[phy\n": "radio.toml:1",
     }
     for text, needle in cases.items():
@@ -225,6 +226,14 @@ def test_the_disc_model_traces_range_and_fade_losses(tmp_path: Path) -> None:
     assert all(line["distance"] > 500 for line in lost if line["reason"] == "range")
     assert all(300 < line["distance"] <= 500 for line in lost if line["reason"] == "fade")
     assert all(line["delay"] == pytest.approx(0.001) and line["distance"] <= 500 for line in rx)
+    # The disc model has no airtime but frames its messages all the same: ClearLane messages are
+    # single-hop broadcasts signed with the certificate every time (82 bytes of headers and an
+    # envelope of 6 + length + 11 + 151 + 66).
+    tx = [line for line in lines if line["event"] == "tx"]
+    for line in tx:
+        payload = 40 + line["bytes"]
+        envelope = 6 + (1 if payload < 128 else 2) + 11 + 151 + 66
+        assert line["frame_bytes"] == line["bytes"] + 82 + envelope
     sent, delivered = message_counts(result.stdout)["ClearLane"]
     assert delivered == len(rx)
     assert sent == sum(line["event"] == "tx" for line in lines)
@@ -261,3 +270,68 @@ def test_a_study_sweeps_radio_power_and_keeps_the_messages(tmp_path: Path, radio
     received = read_messages(tmp_path / "results" / "messages", columns=["run", "t"], filters=[("event", "==", "rx")])
     per_run = received.merge(table[["run", "radio_power_dbm"]], on="run").groupby("radio_power_dbm").size()
     assert per_run[10] == low["delivered:Beacon"] and per_run[30] == high["delivered:Beacon"]
+
+
+def test_frames_carry_their_headers_and_a_signature_with_the_certificate_once_a_second(
+    tmp_path: Path, radio_file: Path
+) -> None:
+    # Beacons are framed and signed as CAMs: 190 bytes + MAC 26, LLC/SNAP 8, GeoNetworking basic 4,
+    # common 8 and SHB 28, BTP-B 4, FCS 4 (82), plus the envelope around the 230-byte payload:
+    # head 6 + a two-byte length, header info 11, signature 66 and the signer: digest 9 (366 in
+    # all) or certificate 151 (508).
+    cfg = highway(tmp_path / "road", [50.0, 200.0], 1.0, building=False)
+    messages = tmp_path / "messages.jsonl"
+    beacon_run(cfg, tmp_path, "--messages", str(messages), end=4.0)
+    tx = [line for line in read_messages(messages) if line["event"] == "tx"]
+    assert {line["bytes"] for line in tx} == {190}
+    assert {line["frame_bytes"] for line in tx} == {366, 508}
+    for station in ("v0000", "v0001"):
+        frames = [(line["t"], line["frame_bytes"]) for line in tx if line["station"] == station]
+        assert frames[0][1] == 508
+        full = [t for t, size in frames if size == 508]
+        # Once a second (Vanetza's 950 ms), once more after hearing the other station for the first time.
+        assert 4 <= len(full) <= 5, frames
+        gaps = [b - a for a, b in zip(full, full[1:], strict=False)]
+        # (t is the frame's start, after channel access: a fraction of a millisecond after signing.)
+        assert all(gap < 1.001 for gap in gaps), gaps
+        assert sum(gap < 0.9 for gap in gaps) <= 1, gaps  # only the new neighbour's
+    # Unsecured: the headers alone.
+    (tmp_path / "radio.toml").write_text('[frame]\nsecurity = "none"\n')
+    beacon_run(cfg, tmp_path, "--messages", str(messages), end=1.0)
+    tx = [line for line in read_messages(messages) if line["event"] == "tx"]
+    assert tx and {line["frame_bytes"] for line in tx} == {190 + 82}
+
+
+@pytest.mark.parametrize("correlation", [0, 25])
+def test_losses_come_in_bursts_with_correlated_shadowing(tmp_path: Path, radio_file: Path, correlation: int) -> None:
+    # Two vehicles 285 m apart, both at 20 m/s: near the sensing edge (about 291 m at the mean), so
+    # the shadowing decides. Each moves 2 m a frame, the pair 4 m: with d_corr = 25 m consecutive
+    # frames share ρ = 0.85 of their shadowing, and a loss makes the next one likelier.
+    cfg = highway(tmp_path / "road", [20.0, 305.0], 20.0, building=False, length=2000.0, lanes=1)
+    messages = tmp_path / "messages.jsonl"
+    beacon_run(
+        cfg,
+        tmp_path,
+        "--messages",
+        str(messages),
+        "--param",
+        f"radio_shadowing_correlation_m={correlation}",
+        end=80.0,
+    )
+    lines = read_messages(messages)
+    outcome: dict[int, bool] = {}  # v0000's frames at v0001: lost?
+    for line in lines:
+        if line["event"] in ("rx", "lost") and line["sender"] == "v0000" and line["station"] == "v0001":
+            outcome[line["seq"]] = line["event"] == "lost"
+    seqs = sorted(outcome)
+    assert len(seqs) > 600
+    lost = [outcome[s] for s in seqs]
+    p_loss = sum(lost) / len(lost)
+    pairs = [(a, b) for a, b, sa, sb in zip(lost, lost[1:], seqs, seqs[1:], strict=False) if sb == sa + 1]
+    after_loss = [b for a, b in pairs if a]
+    p_loss_after_loss = sum(after_loss) / len(after_loss)
+    assert 0.1 < p_loss < 0.9, p_loss
+    if correlation:
+        assert p_loss_after_loss > p_loss + 0.2, (p_loss, p_loss_after_loss)
+    else:
+        assert abs(p_loss_after_loss - p_loss) < 0.08, (p_loss, p_loss_after_loss)

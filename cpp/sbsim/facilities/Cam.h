@@ -52,6 +52,7 @@ public:
     /// A roadside unit's CAM has the RSU high-frequency container instead, without protected
     /// zones (1): kRoadSideUnitBytes.
     std::size_t byteSize() const override;
+    radio::SecurityProfile securityProfile() const override { return radio::SecurityProfile::Cam; }
     void store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const override;
     void dispatch(ItsMessageHandler& handler) const override { handler.indicateCam(*this); }
 

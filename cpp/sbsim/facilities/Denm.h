@@ -59,6 +59,8 @@ public:
     /// situation (4), location with an empty trace (8); the impact-reduction container 20 more.
     /// A termination DENM carries the management container only.
     std::size_t byteSize() const override;
+    radio::GnTransport gnTransport() const override { return radio::GnTransport::GeoBroadcast; }
+    radio::SecurityProfile securityProfile() const override { return radio::SecurityProfile::Denm; }
     /// `cause`, `subcause` and `action` ("<station>:<sequence>").
     std::vector<radio::TraceField> traceFields() const override;
     /// Stations inside the destination circle take it (GeoNetworking's geo-broadcast).

@@ -17,7 +17,8 @@ enum class DrawPurpose : std::uint64_t {
     Backoff = 4,
     Start = 5,
     Delay = 6,
-    ClockPhase = 7,  ///< a station's middleware clock: its first trigger after departure
+    ClockPhase = 7,           ///< a station's middleware clock: its first trigger after departure
+    CorrelatedShadowing = 8,  ///< keyed by (seed, pair, update) instead of a frame
 };
 
 /// A counter-based random generator: every number is a pure function of its key (seed, sender,

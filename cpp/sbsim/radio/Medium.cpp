@@ -45,10 +45,13 @@ void Medium::handleMessage(kernel::Message& msg) {
     if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
     const auto& frame = static_cast<const FrameDelivery&>(msg);
     Counts* counts = countsOf(*frame.message);  // one lookup per frame, not per reception
+    const V2xMessage& message = *frame.message;
+    const bool secured = certificates_.secured();
     if (simulation().moduleChanges() == frame.moduleChanges) {
-        for (Receiver* receiver : frame.receivers) {
+        for (std::size_t k = 0; k < frame.receivers.size(); ++k) {
             if (counts != nullptr) ++counts->delivered;
-            receiver->receive(*frame.message);
+            if (secured) certificates_.heard(frame.stations[k], message.sender(), message.securityProfile(), simTime());
+            frame.receivers[k]->receive(message);
         }
         return;
     }
@@ -56,7 +59,8 @@ void Medium::handleMessage(kernel::Message& msg) {
         Receiver* receiver = receivingSide(station);
         if (receiver == nullptr) continue;  // it left
         if (counts != nullptr) ++counts->delivered;
-        receiver->receive(*frame.message);
+        if (secured) certificates_.heard(station, message.sender(), message.securityProfile(), simTime());
+        receiver->receive(message);
     }
 }
 
@@ -64,6 +68,9 @@ void Medium::stamp(V2xMessage& message, const std::string& sender) {
     message.sender_ = sender;
     message.sentAt_ = simTime();
     message.sequence_ = sequences_[sender]++;
+    const SecurityProfile profile = message.securityProfile();
+    message.frameBytes_ = radio::frameBytes(message.byteSize(), message.gnTransport(), profile,
+                                            certificates_.sign(sender, profile, simTime()));
     ++counts_[std::string(message.typeName())].sent;
 }
 

@@ -11,6 +11,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
+#include "sbsim/radio/CertificatePolicy.h"
 #include "sbsim/radio/FixedStations.h"
 #include "sbsim/radio/MessageTrace.h"
 #include "sbsim/radio/V2xMessage.h"
@@ -69,9 +70,12 @@ public:
     /// Reports every transmission, reception and (within the medium's trace range) loss to
     /// `trace` from now on; null: none. The trace must outlive the run.
     void setTrace(MessageTrace* trace) { trace_ = trace; }
+    /// Whether messages are signed (TS 103 097 envelope in their frame size); on by default.
+    void setSecured(bool secured) { certificates_.setSecured(secured); }
 
 protected:
-    /// Stamps `message` as sent by `sender` now, with the sender's next sequence number, and counts it.
+    /// Stamps `message` as sent by `sender` now, with the sender's next sequence number and its
+    /// frame's size (signed now), and counts it.
     void stamp(V2xMessage& message, const std::string& sender);
     /// Counts one station the medium considered for `message` at `distance` m, and whether it received it.
     void countLink(const V2xMessage& message, double distance, bool received);
@@ -95,6 +99,7 @@ private:
     std::unordered_map<std::string, std::uint64_t> sequences_;  // next per sender
     MessageTrace* trace_ = nullptr;
     FixedStations fixed_;
+    CertificatePolicy certificates_;
 };
 
 }  // namespace sbsim::radio

@@ -9,6 +9,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Object.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/radio/FrameSize.h"
 #include "sbsim/radio/TraceField.h"
 
 namespace sbsim::radio {
@@ -23,6 +24,12 @@ public:
     /// A short type name for statistics, e.g. "ClearLane".
     virtual std::string_view typeName() const = 0;
     virtual std::size_t byteSize() const = 0;
+    /// How GeoNetworking carries it: single-hop broadcast unless the message says otherwise (a
+    /// DENM: geo-broadcast). Sets the extended header's size in frameBytes().
+    virtual GnTransport gnTransport() const { return GnTransport::SingleHopBroadcast; }
+    /// Which header its security envelope gets (FrameSize.h): the full certificate every time
+    /// unless the message says otherwise (a CAM: digest between certificates).
+    virtual SecurityProfile securityProfile() const { return SecurityProfile::Other; }
     /// Fields of the message's own the message trace shows on its lines (none by default).
     virtual std::vector<TraceField> traceFields() const { return {}; }
 
@@ -31,12 +38,16 @@ public:
     kernel::SimTime sentAt() const { return sentAt_; }
     /// The sender's count of messages before this one (0, 1, 2, …), over all its services.
     std::uint64_t sequence() const { return sequence_; }
+    /// The whole 802.11 frame carrying it (MAC header to FCS: GeoNetworking, BTP, LLC/SNAP and the
+    /// security envelope around byteSize(); FrameSize.h), as signed when it was sent.
+    std::size_t frameBytes() const { return frameBytes_; }
 
 private:
     friend class Medium;
     std::string sender_;
     kernel::SimTime sentAt_;
     std::uint64_t sequence_ = 0;
+    std::size_t frameBytes_ = 0;
 };
 
 }  // namespace sbsim::radio

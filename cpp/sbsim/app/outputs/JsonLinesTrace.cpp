@@ -23,7 +23,7 @@ std::string JsonLinesTrace::format(const TraceRecord& l) {
     s += fmt::format(R"(,"seq":{})", l.seq);
     switch (l.event) {
         case Event::Tx:
-            s += fmt::format(R"(,"bytes":{},"x":{:.2f},"y":{:.2f})", l.bytes, l.x, l.y);
+            s += fmt::format(R"(,"bytes":{},"frame_bytes":{},"x":{:.2f},"y":{:.2f})", l.bytes, l.frameBytes, l.x, l.y);
             if (l.cbr) s += fmt::format(R"(,"cbr":{:.4f})", *l.cbr);
             break;
         case Event::Rx:

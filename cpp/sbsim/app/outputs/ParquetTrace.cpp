@@ -18,6 +18,7 @@ enum Fixed : std::size_t {
     kSender,
     kSeq,
     kBytes,
+    kFrameBytes,
     kX,
     kY,
     kCbr,
@@ -40,13 +41,13 @@ constexpr std::size_t kBudgetEvery = 256;
 ParquetTrace::ParquetTrace(std::unique_ptr<storyboard::ParquetStream> stream, std::string what)
     : stream_(std::move(stream)), what_(std::move(what)) {
     const std::pair<const char*, Type> fixed[] = {
-        {"t", Type::Float64},         {"event", Type::String},     {"type", Type::String},
-        {"station", Type::String},    {"sender", Type::String},    {"seq", Type::Int64},
-        {"bytes", Type::Int64},       {"x", Type::Float64},        {"y", Type::Float64},
-        {"cbr", Type::Float64},       {"distance", Type::Float64}, {"delay", Type::Float64},
-        {"power_dbm", Type::Float64}, {"sinr_db", Type::Float64},  {"reason", Type::String},
-        {"phase", Type::String},      {"action", Type::String},    {"cause", Type::Int64},
-        {"subcause", Type::Int64},    {"more", Type::String}};
+        {"t", Type::Float64},      {"event", Type::String},      {"type", Type::String},
+        {"station", Type::String}, {"sender", Type::String},     {"seq", Type::Int64},
+        {"bytes", Type::Int64},    {"frame_bytes", Type::Int64}, {"x", Type::Float64},
+        {"y", Type::Float64},      {"cbr", Type::Float64},       {"distance", Type::Float64},
+        {"delay", Type::Float64},  {"power_dbm", Type::Float64}, {"sinr_db", Type::Float64},
+        {"reason", Type::String},  {"phase", Type::String},      {"action", Type::String},
+        {"cause", Type::Int64},    {"subcause", Type::Int64},    {"more", Type::String}};
     for (const auto& [name, type] : fixed) column(name, type);
 }
 
@@ -84,6 +85,7 @@ void ParquetTrace::append(const TraceRecord& l) {
     switch (l.event) {
         case Event::Tx:
             put(kBytes, static_cast<std::int64_t>(l.bytes));
+            put(kFrameBytes, static_cast<std::int64_t>(l.frameBytes));
             put(kX, l.x);
             put(kY, l.y);
             if (l.cbr) put(kCbr, *l.cbr);

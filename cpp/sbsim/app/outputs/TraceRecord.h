@@ -26,7 +26,8 @@ struct TraceRecord {
     std::string station;
     std::string sender;  ///< rx and lost
     std::uint64_t seq = 0;
-    std::uint64_t bytes = 0;                                    ///< tx
+    std::uint64_t bytes = 0;                                    ///< tx: the message's own
+    std::uint64_t frameBytes = 0;                               ///< tx: the whole 802.11 frame
     double x = 0, y = 0;                                        ///< tx
     std::optional<double> cbr;                                  ///< tx
     double distance = 0;                                        ///< rx and lost
@@ -52,6 +53,7 @@ struct TraceRecord {
         r.sender = line.sender;
         r.seq = line.seq;
         r.bytes = line.message->byteSize();
+        r.frameBytes = line.message->frameBytes();
         r.x = line.x;
         r.y = line.y;
         r.cbr = line.cbr;

@@ -35,13 +35,16 @@ ChannelMedium::ChannelMedium(ChannelSettings settings, const traffic::VehicleSna
       snapshot_(snapshot),
       reception_((settings_.validate(), settings_), *this),
       budget_(settings_, std::move(obstacles), stations_, snapshot_, fixedStations()),
-      access_(settings_, *this) {}
+      access_(settings_, *this) {
+    setSecured(settings_.secured);
+}
 
 ChannelMedium::~ChannelMedium() = default;
 
 void ChannelMedium::initialize() {
     seed_ = simulation().seed();
     access_.setSeed(seed_);
+    budget_.start(seed_);
     loadTimer_ = std::make_unique<kernel::Message>("channel load", kLoad);
     scheduleAt(DccStateMachine::kSampling * (simTime() / DccStateMachine::kSampling + 1), *loadTimer_);
 }
@@ -54,6 +57,7 @@ void ChannelMedium::handleMessage(kernel::Message& msg) {
             return endTransmission(static_cast<EndTimer&>(msg).tx);
         case kLoad:
             load_.sample(simTime(), stations_.present);
+            budget_.forget(simTime());
             return scheduleAfter(DccStateMachine::kSampling, msg);
         default:
             return Medium::handleMessage(msg);
@@ -190,14 +194,14 @@ void ChannelMedium::startTransmission(Slot s) {
     }
     if (stations_.present[s]) {
         const std::uint64_t frameKey = CounterRandom::frameKey(seed_, stations_.keys[s], tx->message->sequence());
-        budget_.computeLinks(s, frameKey, tx->links, simulation().parallel());
+        budget_.computeLinks(s, frameKey, simTime(), tx->links, simulation().parallel());
     }
 
     // The sender stops receiving: whatever it was receiving is lost to half-duplex.
     reception_.startSending(s, tx->id);
     setCbrBusy(s);
     reception_.frameStarts(tx->id, tx->links);
-    scheduleAt(simTime() + settings_.airtime(tx->message->byteSize()), tx->end);
+    scheduleAt(simTime() + settings_.airtime(tx->message->frameBytes()), tx->end);
     active_.emplace(tx->id, std::move(tx));
 }
 

@@ -8,10 +8,12 @@
 
 namespace sbsim::radio {
 
-kernel::SimTime ChannelSettings::airtime(std::size_t bytes) const {
-    const double bits = (static_cast<double>(bytes) + 30) * 8;
-    return kernel::SimTime::fromNanoseconds(40'000) +
-           kernel::SimTime::fromNanoseconds(static_cast<kernel::SimTime::rep>(std::ceil(bits * 1e3 / rateMbps)));
+kernel::SimTime ChannelSettings::airtime(std::size_t frameBytes) const {
+    // Data bits per symbol: 24 at 3 Mbit/s … 216 at 27 (every allowed rate gives a whole number).
+    const auto perSymbol = static_cast<std::size_t>(std::lround(rateMbps * 8));
+    const std::size_t bits = 16 + 8 * frameBytes + 6;
+    const auto symbols = static_cast<kernel::SimTime::rep>((bits + perSymbol - 1) / perSymbol);
+    return kernel::SimTime::fromNanoseconds(40'000 + symbols * 8'000);
 }
 
 void ChannelSettings::validate() const {
@@ -28,6 +30,7 @@ void ChannelSettings::validate() const {
     require(std::isfinite(noiseDbm) && std::isfinite(sensingDbm) && std::isfinite(interferenceFloorDbm),
             "noise_dbm, sensing_dbm and interference_floor_dbm must be numbers");
     require(shadowingSigmaDb >= 0, "shadowing_sigma_db must be >= 0");
+    require(shadowingCorrelation >= 0 && std::isfinite(shadowingCorrelation), "shadowing_correlation_m must be >= 0");
     require(nakagamiM >= 0.5, "nakagami_m must be >= 0.5");
     require(wallDb >= 0 && perMetreDb >= 0, "obstacle losses must be >= 0 dB");
     require(aifsn >= 1 && aifsn <= 15, "aifsn must be 1 to 15");

@@ -40,7 +40,12 @@ struct SBSIM_API ChannelSettings {
     std::string pathLoss = "winner-b1";
     PathLossModels::Keys pathLossKeys;
 
-    double shadowingSigmaDb = 3;  ///< log-normal, per link and message; 0 = none
+    double shadowingSigmaDb = 3;  ///< log-normal; 0 = none
+    /// m: shadowing per pair of stations correlated over the distance they move (Gudmundson,
+    /// propagation/CorrelatedShadowing.h); 0 draws it afresh per link and frame (Sepulcre et al.'s
+    /// setting). Presets: 10 m line of sight and 13 m NLOS (3GPP TR 37.885 Table 6.2.3-1), 25 m on
+    /// highways (WiLabV2Xsim). Default 10 m: TR 37.885's LOS value, for the default LOS law and σ.
+    double shadowingCorrelation = 10;
     Fading fading = Fading::None;
     double nakagamiM = 1.5;  ///< with Fading::Nakagami
 
@@ -74,12 +79,19 @@ struct SBSIM_API ChannelSettings {
     double delayMax = 0;  ///< s, uniform
     double delayShape = 2;
 
+    /// Frames carry the TS 103 097 security envelope (FrameSize.h, CertificatePolicy.h); the radio
+    /// file's `[frame] security = "none"` sends them unsecured.
+    bool secured = true;
+
     /// Lost receptions are traced (--messages) only for stations this close to the sender.
     double traceRange = 500;
 
     kernel::SimTime aifs() const { return sifs + slot * aifsn; }
-    /// 40 µs of preamble and header plus (bytes + 30 of MAC header and FCS) at the rate.
-    kernel::SimTime airtime(std::size_t bytes) const;
+    /// The time on air of a frame of `frameBytes` (the PSDU: MAC header to FCS, V2xMessage::frameBytes()):
+    /// 32 µs preamble and 8 µs SIGNAL, then 8 µs OFDM symbols of rate · 8 µs data bits each carrying
+    /// the 16 SERVICE bits, the frame and 6 tail bits, padded to a whole symbol (IEEE 802.11 §17.4.3
+    /// at 10 MHz; Vanetza's DataRateG5::data_length).
+    kernel::SimTime airtime(std::size_t frameBytes) const;
     /// Throws std::invalid_argument naming the first setting out of range.
     void validate() const;
     std::unique_ptr<PathLoss> makePathLoss() const;

@@ -61,7 +61,19 @@ void LinkBudget::newStep() {
     grid_.build(snapshot_, std::max(cutoff_ / 2, 1.0));
 }
 
-void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, std::vector<Link>& links, kernel::ParallelFor& pool) {
+void LinkBudget::start(std::uint64_t seed) {
+    if (settings_.shadowingSigmaDb > 0 && settings_.shadowingCorrelation > 0) {
+        shadowing_ =
+            std::make_unique<CorrelatedShadowing>(settings_.shadowingSigmaDb, settings_.shadowingCorrelation, seed);
+    }
+}
+
+void LinkBudget::forget(kernel::SimTime now) {
+    if (shadowing_) shadowing_->forget(now);
+}
+
+void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime now, std::vector<Link>& links,
+                              kernel::ParallelFor& pool) {
     // Who is in range, how far, and the mean power (path loss and obstacles) stay the same for
     // all of a sender's frames within one SUMO step: computed once per step, for the likely
     // senders of the step together at its first frame (prepareStep), else at the sender's first.
@@ -75,6 +87,8 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, std::vector<Link>&
     links.resize(near.receivers.size());
     const bool fading = settings_.fading != ChannelSettings::Fading::None;
     const bool shadowing = settings_.shadowingSigmaDb > 0;
+    // The pairs are looked up (and made) here, serially; the pool then moves distinct pairs on.
+    if (shadowing_) shadowing_->pairs(stations_.keys[s], near.key, now, pairs_);
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     pool.run(
         near.receivers.size(),
@@ -92,7 +106,11 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, std::vector<Link>&
                 link.halfDuplex = false;
                 link.locked = false;
                 double dbm = near.meanDbm[k];
-                if (shadowing) {
+                if (shadowing_) {
+                    if (k + 4 < end) shadowing_->prefetch(pairs_[k + 4]);
+                    dbm += shadowing_->valueDb(pairs_[k], stations_.keys[s], stations_.x[s], stations_.y[s],
+                                               near.key[k], stations_.x[r], stations_.y[r]);
+                } else if (shadowing) {
                     auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
                 }

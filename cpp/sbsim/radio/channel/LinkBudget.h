@@ -11,6 +11,7 @@
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/ChannelStations.h"
 #include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/propagation/CorrelatedShadowing.h"
 #include "sbsim/radio/propagation/NakagamiFading.h"
 #include "sbsim/radio/propagation/Obstacles.h"
 #include "sbsim/radio/propagation/PathLoss.h"
@@ -21,7 +22,9 @@ namespace sbsim::radio {
 
 /// The received power of every link of a frame: path loss and obstacles (the mean, the same for
 /// all of a sender's frames in one SUMO step, so kept per sender and step), then log-normal
-/// shadowing and optional Nakagami fading drawn per link and frame. Links whose mean power plus a
+/// shadowing — per pair of stations, correlated over the distance they moved (CorrelatedShadowing),
+/// or drawn per link and frame with a correlation distance of 0 — and optional Nakagami fading
+/// drawn per link and frame. Links whose mean power plus a
 /// margin falls below the interference floor are not computed (the cutoff range). Per station
 /// its neighbourhood for the step, struct-of-arrays by slot.
 class LinkBudget {
@@ -37,14 +40,19 @@ public:
     /// The mean received power (dBm) at `distance` m without obstacles, shadowing or fading.
     double meanPowerDbm(double distance) const;
 
+    /// The run starts with seed `seed` (the correlated shadowing's draws).
+    void start(std::uint64_t seed);
+    /// Forgets the shadowing of pairs unseen for a while (every load sample).
+    void forget(kernel::SimTime now);
     /// A new station, slot size().
     void addStation();
     /// The stations were refreshed for a new snapshot: neighbourhoods of stations that left are
     /// dropped (a long run sees tens of thousands of vehicles), the grid is built anew.
     void newStep();
     /// Fills `links` (ascending receiver slot) for the frame of `sender` keyed `frameKey`
-    /// (CounterRandom::frameKey), computing on `pool`: the same whatever its thread count.
-    void computeLinks(Slot sender, std::uint64_t frameKey, std::vector<Link>& links, kernel::ParallelFor& pool);
+    /// (CounterRandom::frameKey), sent at `now`, computing on `pool`: the same whatever its thread count.
+    void computeLinks(Slot sender, std::uint64_t frameKey, kernel::SimTime now, std::vector<Link>& links,
+                      kernel::ParallelFor& pool);
     std::uint64_t linksComputed() const { return linksComputed_; }
 
 private:
@@ -68,6 +76,8 @@ private:
     const FixedStations& fixed_;
     std::unique_ptr<PathLoss> pathLoss_;
     NakagamiFading fading_;
+    std::unique_ptr<CorrelatedShadowing> shadowing_;  // null: drawn per frame
+    std::vector<CorrelatedShadowing::Index> pairs_;   // the current frame's, per link
     double cutoff_ = 0;
 
     std::vector<Neighbourhood> near_;

@@ -39,6 +39,7 @@ std::map<std::string, NumberKey, std::less<>> makeNumberKeys() {
         {"sensing_dbm", {"phy", [](Settings& s, double v) { s.sensingDbm = v; }}},
         {"interference_floor_dbm", {"phy", [](Settings& s, double v) { s.interferenceFloorDbm = v; }}},
         {"shadowing_sigma_db", {"propagation", [](Settings& s, double v) { s.shadowingSigmaDb = v; }}},
+        {"shadowing_correlation_m", {"propagation", [](Settings& s, double v) { s.shadowingCorrelation = v; }}},
         {"nakagami_m", {"propagation", [](Settings& s, double v) { s.nakagamiM = v; }}},
         {"wall_db", {"obstacles", [](Settings& s, double v) { s.wallDb = v; }}},
         {"per_metre_db", {"obstacles", [](Settings& s, double v) { s.perMetreDb = v; }}},
@@ -99,6 +100,12 @@ const std::map<std::string, TextKey, std::less<>>& textKeys() {
               const auto it = models.find(v);
               if (it == models.end()) throw std::invalid_argument("must be none, constant, uniform or gamma");
               s.extraDelay = it->second;
+          }}},
+        {"security",
+         {"frame",
+          [](Settings& s, const std::string& v) {
+              if (v != "signed" && v != "none") throw std::invalid_argument("must be signed or none");
+              s.secured = v == "signed";
           }}},
         {"polygon_type", {"obstacles", [](Settings& s, const std::string& v) { s.obstacleType = v; }}},
     };

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,13 @@ struct TestMessage : V2xMessage {
     std::string_view typeName() const override { return "Test"; }
     std::size_t byteSize() const override { return 190; }
 };
+/// Signed as a CAM: certificate digest between certificates.
+struct CamLikeMessage : TestMessage {
+    SecurityProfile securityProfile() const override { return SecurityProfile::Cam; }
+};
+/// Its frame: single-hop broadcast, signed with the certificate (the default profile).
+const std::size_t kTestFrame =
+    frameBytes(190, GnTransport::SingleHopBroadcast, SecurityProfile::Other, SignerIdentifier::Certificate);
 
 /// A station's module: counts what reaches it.
 struct Station : kernel::Module, Receiver {
@@ -63,12 +71,16 @@ struct LinesTrace : MessageTrace {
         if (l.event == TraceLine::Event::Lost) s += fmt::format(" {}", lossReasonName(l.reason));
         if (l.powerDbm) s += fmt::format(" {:.6f} {:.6f}", *l.powerDbm, *l.sinrDb);
         lines.push_back(s);
-        if (l.event == TraceLine::Event::Tx) txTimes[std::string(l.station)].push_back(l.t);
+        if (l.event == TraceLine::Event::Tx) {
+            txTimes[std::string(l.station)].push_back(l.t);
+            frames[std::string(l.station)].push_back(l.message->frameBytes());
+        }
         if (l.event == TraceLine::Event::Lost)
             losses[std::string(l.station) + "<" + std::string(l.sender)] = lossReasonName(l.reason);
     }
     std::vector<std::string> lines;
     std::map<std::string, std::vector<SimTime>> txTimes;
+    std::map<std::string, std::vector<std::size_t>> frames;
     std::map<std::string, std::string_view> losses;
 };
 
@@ -104,6 +116,9 @@ struct Bench {
     }
     void send(SimTime t, const std::string& sender) {
         script->at(t, [this, sender] { medium->broadcast(sender, std::make_unique<TestMessage>()); });
+    }
+    void sendCam(SimTime t, const std::string& sender) {
+        script->at(t, [this, sender] { medium->broadcast(sender, std::make_unique<CamLikeMessage>()); });
     }
     void run(SimTime until = SimTime::fromMilliseconds(50)) {
         sim.initialize();
@@ -181,15 +196,80 @@ TEST(ChannelMedium, CsmaDefersToASensedFrame) {
     Bench b({{"a", 0}, {"b", 50}});
     const ChannelSettings& s = b.medium->settings();
     b.send(SimTime::zero(), "a");
-    b.send(SimTime::fromNanoseconds(200'000), "b");  // while a's 333 µs frame is on the air
+    b.send(SimTime::fromNanoseconds(200'000), "b");  // while a's 728 µs frame is on the air
     b.run();
     ASSERT_EQ(b.trace.txTimes["a"].size(), 1u);
     ASSERT_EQ(b.trace.txTimes["b"].size(), 1u);
-    const SimTime aEnd = b.trace.txTimes["a"][0] + s.airtime(190);
+    const SimTime aEnd = b.trace.txTimes["a"][0] + s.airtime(kTestFrame);
     EXPECT_GE(b.trace.txTimes["b"][0], aEnd + s.aifs());
     EXPECT_LE(b.trace.txTimes["b"][0], aEnd + s.aifs() + s.slot * s.contentionWindow);
     EXPECT_EQ(b.got("b", "a"), 1u);
     EXPECT_EQ(b.got("a", "b"), 1u);
+}
+
+TEST(ChannelMedium, FramesAreSignedAndLastTheirWholeSize) {
+    Bench b({{"a", 0}, {"b", 50}});
+    b.sendCam(SimTime::fromMilliseconds(0), "b");
+    b.sendCam(SimTime::fromMilliseconds(10), "a");
+    b.sendCam(SimTime::fromMilliseconds(20), "b");  // b heard a, new: its certificate again
+    b.sendCam(SimTime::fromMilliseconds(30), "b");
+    b.sendCam(SimTime::fromMilliseconds(40), "a");  // a had heard b before its first CAM
+    b.run();
+    const auto cam = [](SignerIdentifier signer) {
+        return frameBytes(190, GnTransport::SingleHopBroadcast, SecurityProfile::Cam, signer);
+    };
+    const std::size_t full = cam(SignerIdentifier::Certificate);
+    const std::size_t digest = cam(SignerIdentifier::Digest);
+    EXPECT_EQ(b.trace.frames["b"], (std::vector<std::size_t>{full, full, digest}));
+    EXPECT_EQ(b.trace.frames["a"], (std::vector<std::size_t>{full, digest}));
+    // Each reception ends its frame: the frame's whole size on the air.
+    const ChannelSettings& s = b.medium->settings();
+    ASSERT_EQ(b.modules["a"]->times.size(), 3u);
+    EXPECT_EQ(b.modules["a"]->times[0], b.trace.txTimes["b"][0] + s.airtime(full));
+    EXPECT_EQ(b.modules["a"]->times[2], b.trace.txTimes["b"][2] + s.airtime(digest));
+
+    ChannelSettings unsecured = Bench::quiet();
+    unsecured.secured = false;
+    Bench plain({{"a", 0}, {"b", 50}}, unsecured);
+    plain.sendCam(SimTime::zero(), "a");
+    plain.send(SimTime::fromMilliseconds(10), "a");
+    plain.run();
+    EXPECT_EQ(plain.trace.frames["a"], (std::vector<std::size_t>{190 + 82, 190 + 82}));
+    EXPECT_EQ(plain.modules["b"]->times[0], plain.trace.txTimes["a"][0] + s.airtime(190 + 82));
+}
+
+/// The received powers (dBm, as traced) of `receiver`'s receptions from `sender`, in order.
+std::vector<std::string> powers(const LinesTrace& trace, const std::string& receiver, const std::string& sender) {
+    std::vector<std::string> out;
+    for (const std::string& line : trace.lines) {
+        std::istringstream in(line);
+        std::string t, event, station, from, seq, power;
+        in >> t >> event >> station >> from >> seq >> power;
+        if (event == "rx" && station == receiver && from == sender) out.push_back(power);
+    }
+    return out;
+}
+
+TEST(ChannelMedium, CorrelatedShadowingStaysWhileStationsStandAndIsOneValueBothWays) {
+    ChannelSettings s;  // σ = 3 dB, correlated over 10 m
+    Bench b({{"a", 0}, {"b", 100}}, s);
+    for (int k = 0; k < 4; ++k) {
+        b.send(SimTime::fromMilliseconds(10 * k), "a");
+        b.send(SimTime::fromMilliseconds(10 * k + 5), "b");
+    }
+    b.run();
+    const auto ab = powers(b.trace, "b", "a");
+    ASSERT_EQ(ab.size(), 4u);
+    EXPECT_EQ(std::set<std::string>(ab.begin(), ab.end()).size(), 1u);  // nobody moved: one value
+    EXPECT_EQ(powers(b.trace, "a", "b"), ab);                           // and the same both ways
+    // Per frame (correlation 0, today's draw): a value per frame and direction.
+    s.shadowingCorrelation = 0;
+    Bench perFrame({{"a", 0}, {"b", 100}}, s);
+    for (int k = 0; k < 4; ++k) perFrame.send(SimTime::fromMilliseconds(10 * k), "a");
+    perFrame.run();
+    const auto drawn = powers(perFrame.trace, "b", "a");
+    ASSERT_EQ(drawn.size(), 4u);
+    EXPECT_EQ(std::set<std::string>(drawn.begin(), drawn.end()).size(), 4u);
 }
 
 TEST(ChannelMedium, ABuildingBlocksALink) {
@@ -214,7 +294,7 @@ TEST(ChannelMedium, ExtraDelayModelsPostponeDeliveries) {
     constant.send(SimTime::zero(), "a");
     constant.run(SimTime::fromMilliseconds(100));
     ASSERT_EQ(constant.modules["b"]->times.size(), 1u);
-    const SimTime end = constant.trace.txTimes["a"][0] + s.airtime(190);
+    const SimTime end = constant.trace.txTimes["a"][0] + s.airtime(kTestFrame);
     EXPECT_EQ(constant.modules["b"]->times[0], end + SimTime::fromMilliseconds(50));
 
     s.extraDelay = ChannelSettings::ExtraDelay::Uniform;
@@ -225,7 +305,7 @@ TEST(ChannelMedium, ExtraDelayModelsPostponeDeliveries) {
     Bench uniform(ring, s);
     uniform.send(SimTime::zero(), "a");
     uniform.run(SimTime::fromMilliseconds(100));
-    const SimTime frameEnd = uniform.trace.txTimes["a"][0] + s.airtime(190);
+    const SimTime frameEnd = uniform.trace.txTimes["a"][0] + s.airtime(kTestFrame);
     std::set<SimTime> distinct;
     for (int k = 1; k <= 20; ++k) {
         for (const SimTime t : uniform.modules[fmt::format("r{:02}", k)]->times) {
@@ -239,11 +319,13 @@ TEST(ChannelMedium, ExtraDelayModelsPostponeDeliveries) {
 
 TEST(ChannelMedium, BusyRatioAndDccFollowTheLoad) {
     Bench b({{"a", 0}, {"b", 50}});
-    // a sends every ms for 300 ms: 333 µs of 1000 busy at b.
-    for (int k = 0; k < 300; ++k) b.send(SimTime::fromMilliseconds(k), "a");
+    // a sends every 2 ms for 300 ms: 728 µs (its 508-byte frame) of 2000 busy at b.
+    for (int k = 0; k < 150; ++k) b.send(SimTime::fromMilliseconds(2 * k), "a");
     b.run(SimTime::fromMilliseconds(300));
-    EXPECT_NEAR(*b.medium->channelBusyRatio("b"), 0.333, 0.01);
-    EXPECT_NEAR(*b.medium->channelBusyRatio("a"), 0.333, 0.01);             // its own frames count
+    const double share = b.medium->settings().airtime(kTestFrame).seconds() / 2e-3;
+    EXPECT_NEAR(share, 0.364, 1e-9);
+    EXPECT_NEAR(*b.medium->channelBusyRatio("b"), share, 0.01);
+    EXPECT_NEAR(*b.medium->channelBusyRatio("a"), share, 0.01);             // its own frames count
     EXPECT_EQ(*b.medium->dccInterval("b"), SimTime::fromMilliseconds(60));  // one second not yet seen
 }
 
@@ -331,12 +413,14 @@ void expectClosedForm(const ChannelSettings& s) {
 }
 
 TEST(ChannelMediumClosedForm, InterferenceFreeDeliveryWithShadowing) {
-    ChannelSettings s;  // Sepulcre et al.: WINNER+ B1, σ = 3 dB, no fading
+    ChannelSettings s;  // Sepulcre et al.: WINNER+ B1, σ = 3 dB drawn per frame, no fading
+    s.shadowingCorrelation = 0;
     expectClosedForm(s);
 }
 
 TEST(ChannelMediumClosedForm, InterferenceFreeDeliveryWithShadowingAndNakagamiFading) {
     ChannelSettings s;
+    s.shadowingCorrelation = 0;
     s.fading = ChannelSettings::Fading::Nakagami;
     s.nakagamiM = 1.5;
     expectClosedForm(s);

@@ -191,10 +191,10 @@ TEST(Fading, NakagamiKeepsTheMeanPower) {
 
 TEST(Airtime, IsPreamblePlusFrameAtTheRate) {
     ChannelSettings s;
-    // 190 bytes at 6 Mbit/s: 40 µs + 220 · 8 / 6 µs = 333.33 µs.
-    EXPECT_EQ(s.airtime(190).raw(), 40'000 + 293'334);
+    // A 220-byte frame at 6 Mbit/s: 40 µs + 38 symbols of 8 µs (FrameSizeTest: the rounding).
+    EXPECT_EQ(s.airtime(220).raw(), 40'000 + 304'000);
     s.rateMbps = 18;
-    EXPECT_EQ(s.airtime(190).raw(), 40'000 + 97'778);
+    EXPECT_EQ(s.airtime(220).raw(), 40'000 + 104'000);
     EXPECT_EQ(s.aifs().raw(), 32'000 + 6 * 13'000);
 }
 
