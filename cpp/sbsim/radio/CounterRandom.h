@@ -17,7 +17,8 @@ enum class DrawPurpose : std::uint64_t {
     Backoff = 4,
     Start = 5,
     Delay = 6,
-    CorrelatedShadowing = 7,  // keyed by (seed, pair, update) instead of a frame
+    // 7 is the middleware clock phase on main (issue 27 part 2): the next number, so both merge.
+    CorrelatedShadowing = 8,  // keyed by (seed, pair, update) instead of a frame
 };
 
 /// A counter-based random generator: every number is a pure function of its key (seed, sender,
