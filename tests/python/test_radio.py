@@ -335,3 +335,23 @@ def test_losses_come_in_bursts_with_correlated_shadowing(tmp_path: Path, radio_f
         assert p_loss_after_loss > p_loss + 0.2, (p_loss, p_loss_after_loss)
     else:
         assert abs(p_loss_after_loss - p_loss) < 0.08, (p_loss, p_loss_after_loss)
+
+
+@pytest.mark.parametrize(
+    ("law", "reaches"),
+    [("3gpp-highway", True), ("3gpp-urban", True), ("3gpp-urban-nlos", False)],
+)
+def test_the_3gpp_path_loss_laws_are_radio_file_choices(tmp_path: Path, law: str, reaches: bool) -> None:
+    # 150 m at 5.89 GHz without shadowing: highway LOS 91.3 dB and urban LOS 89.1 dB leave -68 and
+    # -66 dBm; urban NLOS (116.7 dB) leaves -94 dBm, below the -85 dBm sensing threshold.
+    (tmp_path / "radio.toml").write_text(f'[propagation]\npath_loss = "{law}"\nshadowing_sigma_db = 0\n')
+    cfg = highway(tmp_path / "road", [50.0, 200.0], 1.0, building=False)
+    messages = tmp_path / "messages.jsonl"
+    beacon_run(cfg, tmp_path, "--messages", str(messages), end=1.0)
+    lines = read_messages(messages)
+    rx = [line for line in lines if line["event"] == "rx"]
+    assert bool(rx) == reaches
+    if reaches:
+        assert all(-75 < line["power_dbm"] < -60 for line in rx)
+    else:
+        assert {line["reason"] for line in lines if line["event"] == "lost"} == {"sensing"}
