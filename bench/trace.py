@@ -39,7 +39,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory(dir=cfg.parent) as tmp:
         out = Path(tmp)
         # The grid's junctions are 200 m apart from (0, 0): the unit sits near its middle.
-        (out / "services.xml").write_text(SERVICES.format(x=600, y=600))
+        (out / "services.xml").write_text(SERVICES.format(x=500, y=500))
         base = [sbsim(), "--sumocfg", str(cfg), "--end", repr(args.end), "--services", str(out / "services.xml")]
         runs = {
             "parquet, --messages-types DENM": ("denm.parquet", ["--messages-types", "DENM"]),
