@@ -54,11 +54,10 @@ std::string JsonLinesTrace::format(const TraceRecord& l) {
 }
 
 bool JsonLinesTrace::write(const TraceRecord& line, std::uint64_t budget) {
-    std::string text = format(line);
-    text += '\n';
-    if (bytes_ + text.size() > budget) return false;
-    out_ << text;
-    bytes_ += text.size();
+    const std::string text = format(line);
+    if (bytes_ + text.size() + 1 > budget) return false;
+    out_ << text << '\n';
+    bytes_ += text.size() + 1;
     return true;
 }
 

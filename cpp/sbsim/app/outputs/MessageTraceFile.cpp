@@ -25,8 +25,8 @@ void MessageTraceFile::emit(const TraceRecord& record) {
 }
 
 void MessageTraceFile::writeUpTo(kernel::SimTime now) {
-    while (!pending_.empty() && pending_.top().record.t <= now) {
-        emit(pending_.top().record);
+    while (!pending_.empty() && pending_.top().t <= now) {
+        emit(*pending_.top().record);
         pending_.pop();
     }
     if (truncatedAt_) pending_ = {};  // nothing waiting will be written
@@ -40,7 +40,7 @@ void MessageTraceFile::record(const radio::TraceLine& line, kernel::SimTime now)
         emit(TraceRecord::of(line));
         return;
     }
-    pending_.push({TraceRecord::of(line), order_++});
+    pending_.push({line.t, order_++, std::make_unique<TraceRecord>(TraceRecord::of(line))});
     writeUpTo(now);
 }
 

@@ -50,12 +50,12 @@ public:
     const MessageTraceFilter& filter() const { return filter_; }
 
 private:
+    // The record behind a pointer: the heap moves entries about, and a record is large.
     struct Pending {
-        TraceRecord record;
+        kernel::SimTime t;
         std::uint64_t order;
-        bool operator>(const Pending& o) const {
-            return record.t != o.record.t ? record.t > o.record.t : order > o.order;
-        }
+        std::unique_ptr<TraceRecord> record;
+        bool operator>(const Pending& o) const { return t != o.t ? t > o.t : order > o.order; }
     };
     void writeUpTo(kernel::SimTime now);
     void emit(const TraceRecord& record);
