@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sbsim/app/run/RadioSetup.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
@@ -30,6 +31,8 @@ struct RunFigures {
     const std::vector<std::pair<std::string, storyboard::CriterionVerdict>>& verdicts;
     double wall;                                ///< s
     const std::vector<std::string>& arguments;  ///< the command line
+    /// The channel model's buildings (--radio); null for the disc model.
+    const ObstacleFigures* obstacles = nullptr;
 };
 
 /// `key: value` lines on stdout: first what the run did (identical for identical runs), then the

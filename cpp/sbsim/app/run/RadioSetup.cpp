@@ -1,10 +1,12 @@
 #include "sbsim/app/run/RadioSetup.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <toml++/toml.h>
 #include <functional>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -193,7 +195,7 @@ radio::ChannelSettings readRadioSettings(const std::optional<std::filesystem::pa
 }
 
 radio::Medium& makeMedium(const CommandLine& cl, kernel::Simulation& sim, const traffic::VehicleSnapshot& snapshot,
-                          radio::Medium::Directory directory) {
+                          radio::Medium::Directory directory, std::optional<ObstacleFigures>* obstacleFigures) {
     if (!cl.radio) {
         radio::DiscSettings disc;
         disc.range = cl.v2xRange;
@@ -205,9 +207,18 @@ radio::Medium& makeMedium(const CommandLine& cl, kernel::Simulation& sim, const 
     radio::ChannelSettings settings = readRadioSettings(cl.radio, sim.parameters());
     if (cl.messagesRange) settings.traceRange = *cl.messagesRange;
     auto obstacles = std::make_shared<radio::Obstacles>(settings.wallDb, settings.perMetreDb);
+    std::set<std::string> types;
     for (traffic::SumoPolygons::Polygon& p : traffic::SumoPolygons::all()) {
         if (p.type == settings.obstacleType) obstacles->add(std::move(p.shape));
+        types.insert(std::move(p.type));
     }
+    if (!types.empty() && types.count(settings.obstacleType) == 0) {
+        throw InputError(
+            fmt::format("{}: [obstacles] polygon_type '{}' matches no polygon of the scenario (its "
+                        "polygon types: {})",
+                        cl.radio->string(), settings.obstacleType, fmt::join(types, ", ")));
+    }
+    if (obstacleFigures != nullptr) *obstacleFigures = ObstacleFigures{settings.obstacleType, obstacles->size()};
     return sim.emplaceModule<radio::ChannelMedium>(std::move(settings), snapshot, std::move(directory),
                                                    std::move(obstacles));
 }

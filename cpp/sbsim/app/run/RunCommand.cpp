@@ -87,10 +87,7 @@ int RunCommand::run(const CommandLine& cl) {
         if (!cl.services) throw UsageError("--messages: there are no messages without --services");
         messages.emplace("--messages", *cl.messages, files);
     }
-    if (cl.radio) {
-        if (!cl.services) throw UsageError("--radio: the radio carries the services' messages; give --services");
-        files.requireInput("--radio", *cl.radio);
-    }
+    checkRadioInput(cl, files);
     std::optional<MessageTraceFile> messageTrace;
     if (messages) messageTrace.emplace(messages->stream());
     std::optional<OutputFile> statisticsFile;
@@ -245,7 +242,8 @@ int RunCommand::run(const CommandLine& cl) {
                              &scenario.statistics(),
                              verdicts,
                              std::chrono::duration<double>(Clock::now() - started).count(),
-                             cl.arguments};
+                             cl.arguments,
+                             scenario.obstacles() ? &*scenario.obstacles() : nullptr};
     if (summary) {
         summary->stream() << summaryJson(figures).dump(2) << '\n';
         if (!Interruption::requested()) summary->commit();
