@@ -59,6 +59,29 @@ find_python() {
   exit 1
 }
 
+# Whether every requirement given is installed in the venv, at a version it allows (pip's own
+# `packaging` judges, as pip would); quiet, exit status only.
+requirements_satisfied() {
+  "$VENV/bin/python" - "$@" <<'PY' 2>/dev/null
+import sys
+from importlib.metadata import PackageNotFoundError, version
+from pip._vendor.packaging.requirements import Requirement
+
+for text in sys.argv[1:]:
+    requirement = Requirement(text)
+    try:
+        if not requirement.specifier.contains(version(requirement.name), prereleases=True):
+            sys.exit(1)
+    except PackageNotFoundError:
+        sys.exit(1)
+PY
+}
+
+# The venv and the Python dependencies: PYTHON_DEPENDENCIES, the study extras (every documented
+# feature: studies, --statistics, reports) and any given. The stamp lists what was installed, one
+# requirement a line: a command wanting a subset of it (./sbsim after ./run-tests) installs nothing.
+# Without a stamp (a venv made by hand, or by an older set-up) the venv itself is asked first, so a
+# ready checkout starts at once.
 ensure_venv() {
   if [ ! -x "$VENV/bin/python" ]; then
     if [ -L "$VENV" ] || [ -e "$VENV" ]; then
@@ -68,24 +91,34 @@ ensure_venv() {
     say "creating $VENV"
     "$(find_python)" -m venv "$VENV"
   fi
-  local stamp="$VENV/.sbsim-deps" wanted="${PYTHON_DEPENDENCIES[*]} $*"
-  if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$wanted" ]; then
-    say "installing Python dependencies: $wanted"
-    "$VENV/bin/python" -m pip install -q --disable-pip-version-check --upgrade "${PYTHON_DEPENDENCIES[@]}" "$@"
-    echo "$wanted" > "$stamp"
+  local stamp="$VENV/.sbsim-deps" wanted=() missing=() r
+  wanted=("${PYTHON_DEPENDENCIES[@]}" "${STUDY_DEPENDENCIES[@]}" "$@")
+  for r in "${wanted[@]}"; do
+    [ -f "$stamp" ] && grep -qxF -- "$r" "$stamp" && continue
+    missing+=("$r")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  if ! requirements_satisfied "${missing[@]}"; then
+    say "installing Python dependencies: ${missing[*]}"
+    "$VENV/bin/python" -m pip install -q --disable-pip-version-check --upgrade "${missing[@]}"
   fi
+  { [ -f "$stamp" ] && cat "$stamp"; printf '%s\n' "${missing[@]}"; } | sort -u > "$stamp.new"
+  mv "$stamp.new" "$stamp"
 }
 
 # Reinstalls sbsim when a source is newer than the last install; the build folder is kept, so
-# only what changed is recompiled.
+# only what changed is recompiled. An install with the C++ tests (./run-tests) serves ./sbsim too.
 ensure_sbsim_installed() {
-  local stamp="$SBSIM_ROOT/build/.installed-tests-${SBSIM_BUILD_TESTS:-OFF}"
-  if [ -f "$stamp" ] && [ -x "$VENV/bin/sbsim" ] && [ -z "$(cd "$SBSIM_ROOT" && find CMakeLists.txt cmake cpp python pyproject.toml stories tests/cpp -newer "$stamp" -print -quit 2>/dev/null)" ]; then
-    return 0
-  fi
+  local wanted="${SBSIM_BUILD_TESTS:-OFF}" stamp
+  for stamp in "$SBSIM_ROOT/build/.installed-tests-$wanted" "$SBSIM_ROOT/build/.installed-tests-ON"; do
+    if [ -f "$stamp" ] && [ -x "$VENV/bin/sbsim" ] && [ -z "$(cd "$SBSIM_ROOT" && find CMakeLists.txt cmake cpp python pyproject.toml stories tests/cpp -newer "$stamp" -print -quit 2>/dev/null)" ]; then
+      return 0
+    fi
+  done
+  stamp="$SBSIM_ROOT/build/.installed-tests-$wanted"
   say "building and installing sbsim (log: build/pip-install.log)"
   mkdir -p "$SBSIM_ROOT/build"
-  if ! (cd "$SBSIM_ROOT" && SBSIM_BUILD_TESTS="${SBSIM_BUILD_TESTS:-OFF}" "$VENV/bin/python" -m pip install \
+  if ! (cd "$SBSIM_ROOT" && SBSIM_BUILD_TESTS="$wanted" "$VENV/bin/python" -m pip install \
         --disable-pip-version-check --no-build-isolation --no-deps . >build/pip-install.log 2>&1); then
     tail -n 40 "$SBSIM_ROOT/build/pip-install.log" >&2
     say "build failed; full log: build/pip-install.log"

@@ -25,7 +25,7 @@ else:
     _CORE_NAMES = sorted(name for name in dir(_sbsim) if not name.startswith("_"))
     globals().update({name: getattr(_sbsim, name) for name in _CORE_NAMES})
 
-__all__ = [*_CORE_NAMES, "IN_SBSIM", "all_of", "any_of", "milliseconds", "seconds"]
+__all__ = [*_CORE_NAMES, "IN_SBSIM", "all_of", "any_of", "milliseconds", "once", "seconds"]
 
 
 def _require_sbsim(name: str) -> None:
@@ -47,6 +47,12 @@ def any_of(*conditions: Any) -> Any:
     if not conditions:
         raise ValueError("any_of needs at least one condition")
     return _sbsim.AnyCondition(*conditions)
+
+
+def once(condition: Any) -> Any:
+    """``LatchCondition(condition)``: once true for a vehicle, true for it until it leaves."""
+    _require_sbsim("once")
+    return _sbsim.LatchCondition(condition)
 
 
 def seconds(x: float) -> Any:

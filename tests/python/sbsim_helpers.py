@@ -6,7 +6,9 @@ import os
 import re
 import subprocess
 import textwrap
+import time
 from collections import defaultdict
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -50,6 +52,30 @@ def assert_no_crash(result: RunResult) -> None:
     for marker in CRASH_MARKERS:
         assert marker not in result.stderr, f"sbsim crashed ({marker!r}):\n{result.stderr}"
     assert result.returncode >= 0, f"sbsim was killed by signal {-result.returncode}:\n{result.stderr}"
+
+
+def wait_until(
+    ready: Callable[[], bool], what: str, proc: subprocess.Popen[Any] | None = None, timeout: float = 60.0
+) -> None:
+    """Returns once ``ready()`` holds (a marker the program or its story writes once it got somewhere,
+    processes gone), polling: a test never waits a fixed time for a process to get somewhere, which
+    depends on the machine's speed. Fails if ``proc`` ended first (it is then not going to get there) or
+    ``timeout`` passed (``proc`` is then killed)."""
+    deadline = time.monotonic() + timeout
+    while not ready():
+        if proc is not None and proc.poll() is not None:
+            pytest.fail(f"the process ended (exit {proc.returncode}) before {what}")
+        if time.monotonic() > deadline:
+            if proc is not None:
+                proc.kill()
+                proc.wait()
+            pytest.fail(f"not {what} within {timeout:.0f} s")
+        time.sleep(0.01)
+
+
+def wait_for_file(proc: subprocess.Popen[Any], marker: Path, timeout: float = 60.0) -> None:
+    """Returns once ``marker`` exists (a story touches it once the run is where a test wants it)."""
+    wait_until(marker.exists, f"it created {marker.name}", proc, timeout)
 
 
 def write_story(directory: Path, source: str, name: str = "story.py") -> Path:

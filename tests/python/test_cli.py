@@ -5,13 +5,20 @@ from __future__ import annotations
 import re
 import signal
 import subprocess
-import time
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
 from sbsim.runner import executable, run
-from sbsim_helpers import REPO, assert_bad_input, assert_no_crash, env_without, stable_stdout, write_story
+from sbsim_helpers import (
+    REPO,
+    assert_bad_input,
+    assert_no_crash,
+    env_without,
+    stable_stdout,
+    wait_for_file,
+    write_story,
+)
 
 SUMMARY_KEYS = ("end", "steps", "vehicles seen", "peak running", "wall time", "real-time factor")
 
@@ -438,16 +445,20 @@ def test_story_without_sumocfg_runs_on_the_bundled_scenario(tmp_path: Path) -> N
 
 
 def test_ctrl_c_stops_after_the_step_and_closes_sumo(trips_cfg: Path, tmp_path: Path) -> None:
-    # A story that makes every step take 20 ms, so the run is still going when SIGINT arrives.
+    # A story that tells it is stepping (the marker file) and makes every step take at least 20 ms
+    # whatever the machine, so the run (300 steps) is still going when SIGINT arrives.
+    marker = tmp_path / "stepping"
     story = write_story(
         tmp_path,
-        """
+        f"""
         import time
+        from pathlib import Path
         import numpy as np
         import storyboard
 
         class Slow(storyboard.Condition):
             def test_all(self, snapshot):
+                Path({str(marker)!r}).touch()
                 time.sleep(0.02)
                 return np.zeros(len(snapshot), bool)
 
@@ -464,7 +475,7 @@ def test_ctrl_c_stops_after_the_step_and_closes_sumo(trips_cfg: Path, tmp_path: 
             "--story",
             str(story),
             "--end",
-            "100000",
+            "300",
             "--sumo-option",
             f"--tripinfo-output {tripinfo} --tripinfo-output.write-unfinished",
         ],
@@ -473,8 +484,7 @@ def test_ctrl_c_stops_after_the_step_and_closes_sumo(trips_cfg: Path, tmp_path: 
         text=True,
     )
     try:
-        time.sleep(1.5)
-        assert proc.poll() is None, "the run ended before it could be interrupted"
+        wait_for_file(proc, marker)
         proc.send_signal(signal.SIGINT)
         out, err = proc.communicate(timeout=30)
     finally:

@@ -6,7 +6,10 @@ case.json keys:
 - ``scenario`` (optional): "trips" copies the small generated grid (grid.sumocfg, net.net.xml,
   routes.rou.xml) in first; the case's own files override it;
 - ``setup`` (optional): shell lines run in the scratch folder before (FIFOs, truncated files, symlinks);
-- ``interrupt`` (optional): ``{"signal": "SIGINT", "when": "<regex on stdout+stderr>" | seconds, "repeat": n}``;
+- ``interrupt`` (optional): ``{"signal": "SIGINT", "ready": "<file>", "repeat": n}``: the signal is sent once the
+  run has created ``ready`` (the case's story touches it where the signal is to land), never after a fixed time,
+  so the case holds on any machine; a run that could end before the signal is made long by its story (a sleep per
+  step) and bounded by ``--end``. ``repeat``: signals sent while the run goes on (a second one ends it at once);
 - ``outputs`` (optional): files the run may leave complete (a successful run's event log);
 - ``message_lost`` (optional): the case closes stderr itself, so no message line can arrive;
 - ``produces`` (optional): files the run must leave (a finished log that must not be lost).
@@ -26,17 +29,18 @@ import re
 import shutil
 import signal
 import subprocess
-import time
 from pathlib import Path
 from typing import Any
 
 import pytest
 from sbsim.runner import executable
-from sbsim_helpers import CRASH_MARKERS, REPO
+from sbsim_helpers import CRASH_MARKERS, REPO, wait_for_file
 
 CORPUS = REPO / "tests" / "corpus"
 CASES = sorted(p.parent.name for p in CORPUS.glob("*/case.json"))
 TIMEOUT = 60.0
+# With ``repeat``, how long a signal may take to end the run before the next is sent.
+REPEAT_AFTER = 1.0
 
 
 def snapshot(folder: Path) -> dict[str, str]:
@@ -72,13 +76,18 @@ def run_case(case: dict[str, Any], work: Path) -> tuple[int, str, str]:
     )
     interrupt = case.get("interrupt")
     if interrupt is not None:
-        # Wait the given time, then send the signal (repeat times, 0.3 s apart).
-        time.sleep(float(interrupt["when"]))
+        assert "when" not in interrupt, "a signal after a fixed time depends on the machine's speed: use 'ready'"
+        wait_for_file(proc, work / interrupt["ready"], TIMEOUT)
         for _ in range(int(interrupt.get("repeat", 1))):
             if proc.poll() is not None:
                 break
             proc.send_signal(getattr(signal, interrupt["signal"]))
-            time.sleep(0.3)
+            # Two signals sent at once may arrive as one: the next goes once this one had time to
+            # act (the run ending, which ends the loop, is what a single signal does).
+            try:
+                proc.wait(timeout=REPEAT_AFTER)
+            except subprocess.TimeoutExpired:
+                pass
     try:
         out, err = proc.communicate(timeout=TIMEOUT)
     except subprocess.TimeoutExpired:
@@ -86,6 +95,16 @@ def run_case(case: dict[str, Any], work: Path) -> tuple[int, str, str]:
         proc.communicate()
         pytest.fail(f"sbsim did not end within {TIMEOUT:.0f} s")
     return proc.returncode, out, err
+
+
+def test_no_case_signals_after_a_fixed_time() -> None:
+    # A signal sent after a fixed sleep lands after the run's end on a fast machine (issue 29).
+    for name in CASES:
+        interrupt = json.loads((CORPUS / name / "case.json").read_text(encoding="utf-8")).get("interrupt")
+        if interrupt is not None:
+            assert set(interrupt) <= {"signal", "ready", "repeat"} and "ready" in interrupt, name
+            story = (CORPUS / name / "story.py").read_text(encoding="utf-8")
+            assert interrupt["ready"] in story, f"{name}: its story never creates {interrupt['ready']}"
 
 
 @pytest.fixture(scope="session")
@@ -130,6 +149,8 @@ def test_corpus_case(name: str, tmp_path: Path, corpus_scenario: Path) -> None:
     for path, digest in before.items():
         assert after.get(path) == digest, f"input {path} was changed or removed"
     allowed = set(case.get("outputs", []))
+    if "interrupt" in case:
+        allowed.add(case["interrupt"]["ready"])  # the story's own marker
     for path in set(after) - set(before):
         assert path.endswith(".incomplete") or path in allowed, f"{path} was written and looks complete"
     for path in case.get("produces", []):

@@ -91,6 +91,8 @@ def test_missing_pyarrow_is_one_line_before_the_run(loops_cfg: Path, tmp_path: P
     assert done.returncode == 2, done.stderr
     lines = done.stderr.strip().splitlines()
     assert len(lines) == 1 and "--statistics" in lines[0] and "pyarrow" in lines[0], done.stderr
+    # The exact command to run (issue 29), for the interpreter sbsim embeds.
+    assert "(install it with: " in lines[0] and " -m pip install 'pyarrow>=14')" in lines[0], lines[0]
     assert done.stdout == ""  # no summary: the run never started
     assert not out.exists()
 

@@ -1,4 +1,4 @@
-"""Story logic (Not, All/Any, Hold, Rising, max_activations) and the conditions read from the snapshot
+"""Story logic (Not, All/Any, Hold, Rising, Latch, max_activations) and the conditions read from the snapshot
 (distance, standstill, acceleration, road, lane, type), checked step by step against SUMO's FCD output."""
 
 from __future__ import annotations
@@ -36,6 +36,7 @@ def logic_run(trips_cfg: Path, tmp_path_factory: pytest.TempPathFactory) -> Stor
             board.registerStory(sb.Story(sb.AnyCondition(sb.SpeedConditionGreater(12), sb.TypeCondition("tr.*")),
                                          [], "any"))
             board.registerStory(sb.Story(sb.DistanceCondition({CENTRE!r}, 150), [], "near_point"))
+            board.registerStory(sb.Story(sb.once(sb.DistanceCondition({CENTRE!r}, 150)), [], "was_near_point"))
             board.registerStory(sb.Story(sb.DistanceCondition("veh3", 100), [sb.SignalEffect("near")], "near_veh3"))
             board.registerStory(sb.Story(sb.RoadCondition({roads!r}), [], "roads"))
             board.registerStory(sb.Story(sb.LaneCondition({[r + "_0" for r in roads[:2]]!r}), [], "lanes"))
@@ -128,6 +129,31 @@ def test_distance_to_a_point_and_to_a_vehicle(logic_run: StoryRun) -> None:
     assert assert_active_as_predicted(logic_run, "near_veh3", near_veh3, ambiguous=edge) > 5
     signals = logic_run.of(type="signal", story="near_veh3")
     assert signals and all(s["others"] == ["veh3"] for s in signals)
+
+
+def test_once_near_stays_true_until_the_vehicle_leaves(logic_run: StoryRun) -> None:
+    fcd = logic_run.fcd
+    assert fcd is not None
+
+    def distances_so_far(v: str, t: float) -> list[float]:
+        return [math.dist(p, CENTRE) for when, p in fcd.pos[v].items() if when <= t]
+
+    latched = assert_active_as_predicted(
+        logic_run,
+        "was_near_point",
+        lambda v, t: min(distances_so_far(v, t)) <= 150,
+        ambiguous=lambda v, t: any(abs(d - 150) < 1e-3 for d in distances_so_far(v, t)),
+    )
+    near = assert_active_as_predicted(
+        logic_run,
+        "near_point",
+        lambda v, t: math.dist(fcd.pos[v][t], CENTRE) <= 150,
+        ambiguous=lambda v, t: abs(math.dist(fcd.pos[v][t], CENTRE) - 150) < 1e-3,
+    )
+    assert latched > near + 20  # vehicles drove off and stayed latched
+    # One activation per vehicle: a latch never lets go while the vehicle runs.
+    activated = logic_run.activated("was_near_point")
+    assert len(activated) == len(set(activated)) > 5
 
 
 def test_road_and_lane(logic_run: StoryRun, trips_cfg: Path) -> None:

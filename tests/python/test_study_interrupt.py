@@ -16,18 +16,23 @@ from pathlib import Path
 import pandas as pd
 import psutil
 import pytest
-from sbsim_helpers import REPO, write_story
+from sbsim_helpers import REPO, wait_until, write_story
 
-# Slow on purpose (50 ms a step, 120 steps): a run is surely under way when the signal comes.
+# Slow on purpose (at least 50 ms a step whatever the machine, 120 steps): a run is surely under way
+# when the signal comes. Each run touches a marker (under MARKERS, named by its process id) once it is
+# stepping: the test's cue, never a fixed wait.
 SLOW = """
+    import os
     import time
+    from pathlib import Path
     import storyboard
 
     class Slow(storyboard.Condition):
         columns = ("speed",)
 
         def test_all(self, snapshot):
-            time.sleep(0.05)
+            Path(MARKERS, str(os.getpid())).touch()
+            time.sleep(SLEEP)
             return snapshot.speeds < 0
 
     def createStories(board):
@@ -37,11 +42,12 @@ SLOW = """
 SEEDS = 4
 
 
-def make_study(folder: Path, cfg: Path) -> Path:
+def make_study(folder: Path, cfg: Path, sleep: float = 0.05) -> Path:
     for f in cfg.parent.iterdir():
         if f.is_file():
             shutil.copy(f, folder / f.name)
-    write_story(folder, SLOW)
+    (folder / "markers").mkdir()
+    write_story(folder, SLOW.replace("MARKERS", repr(str(folder / "markers"))).replace("SLEEP", repr(sleep)))
     toml = folder / "study.toml"
     toml.write_text(
         f'sumocfg = "{cfg.name}"\nstory = "story.py"\nseeds = {{ first = 1, count = {SEEDS} }}\nend = 120\n'
@@ -79,15 +85,21 @@ def sbsim_processes(folder: Path) -> list[psutil.Process]:
     return found
 
 
+def still_running(proc: psutil.Process) -> bool:
+    try:
+        return proc.is_running() and proc.status() != psutil.STATUS_ZOMBIE
+    except psutil.NoSuchProcess:
+        return False
+
+
 def wait_for_runs_under_way(folder: Path, study: subprocess.Popen[bytes]) -> None:
-    deadline = time.monotonic() + 120
-    while time.monotonic() < deadline:
-        assert study.poll() is None, (folder / "stderr.txt").read_text()
-        if list((folder / "results" / "runs").glob("*/events.jsonl.incomplete")) and sbsim_processes(folder):
-            time.sleep(0.5)  # the runs are into their steps
-            return
-        time.sleep(0.1)
-    pytest.fail("no run started within 120 s")
+    """Returns once a run's sbsim process is stepping (its story touched its marker)."""
+
+    def stepping() -> bool:
+        markers = {m.name for m in (folder / "markers").iterdir()}
+        return any(str(p.pid) in markers for p in sbsim_processes(folder))
+
+    wait_until(stepping, "a run was stepping", study, timeout=120)
 
 
 @pytest.mark.parametrize("how", ["kill -INT", "kill -INT (SIGINT ignored)", "Ctrl-C", "kill -TERM"])
@@ -117,10 +129,11 @@ def test_a_stopped_study_stops_its_runs_and_resumes(how: str, trips_cfg: Path, t
     assert found[2] == str(tmp_path / "results") and finished + int(found[3]) == SEEDS
     assert finished < SEEDS  # each run takes over 10 s: the signal came before the end
     assert took < 20, took  # the runs were stopped, not waited for
-    # No sbsim process is left running: neither those seen nor any other of this study.
-    time.sleep(0.5)
-    assert not [p for p in running if p.is_running() and p.status() != psutil.STATUS_ZOMBIE]
-    assert not sbsim_processes(tmp_path)
+    # No sbsim process is left running: neither those seen nor any other of this study. The study
+    # waited for them; an orphan still going is given a grace time to end, then it is a failure.
+    wait_until(
+        lambda: not any(map(still_running, running)) and not sbsim_processes(tmp_path), "every sbsim ended", None, 10
+    )
     # A finished run has its record; one stopped half-way left only *.incomplete outputs and no record.
     folders = sorted((tmp_path / "results" / "runs").iterdir())
     complete = [f for f in folders if (f / "result.json").exists()]
@@ -152,12 +165,14 @@ def test_a_stopped_study_stops_its_runs_and_resumes(how: str, trips_cfg: Path, t
 
 
 def test_a_run_past_its_timeout_is_stopped_and_recorded_as_failed(trips_cfg: Path, tmp_path: Path) -> None:
-    make_study(tmp_path, trips_cfg)
+    # The run lasts at least 60 s (0.5 s a step) whatever the machine, far past the 4 s timeout, which
+    # leaves a slow machine time to start sbsim (its handlers installed) before the SIGTERM.
+    make_study(tmp_path, trips_cfg, sleep=0.5)
     (tmp_path / "study.toml").write_text(
         f'sumocfg = "{trips_cfg.name}"\nstory = "story.py"\nseeds = [1]\nend = 120\n', encoding="utf-8"
     )
     done = subprocess.run(
-        [sys.executable, "-m", "sbsim.study", "study.toml", "--workers", "1", "--timeout", "1.5"],
+        [sys.executable, "-m", "sbsim.study", "study.toml", "--workers", "1", "--timeout", "4"],
         cwd=tmp_path,
         capture_output=True,
         text=True,
@@ -175,7 +190,7 @@ def test_a_run_past_its_timeout_is_stopped_and_recorded_as_failed(trips_cfg: Pat
         "stderr.txt",
         "summary.json.incomplete",
     ]
-    assert (run_dir / "stderr.txt").read_text(encoding="utf-8").endswith("study: the run took longer than 1.5 s\n")
+    assert (run_dir / "stderr.txt").read_text(encoding="utf-8").endswith("study: the run took longer than 4.0 s\n")
     runs = pd.read_parquet(tmp_path / "results" / "runs.parquet")
     assert list(runs["exit_code"]) == [-1] and "took longer" in runs["stderr_tail"][0]
     assert not sbsim_processes(tmp_path)

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "sbsim/kernel/Module.h"
+#include "sbsim/kernel/StopRequest.h"
 
 namespace sbsim::kernel {
 
@@ -88,7 +89,10 @@ Simulation::StopReason Simulation::run(SimTime limit) {
     // The request is used up when honoured, not reset on entry: a stop() from initialize() (say, an
     // end time before the first SUMO step) must end this run before any event.
     while (true) {
-        if (stopRequested_) {
+        // The program's stop request (SIGINT, SIGTERM) too, between any two events: events that
+        // keep coming at one instant (a timer of period 0) would otherwise never reach a step's end,
+        // where the program asks for the stop.
+        if (stopRequested_ || StopRequest::requested()) {
             stopRequested_ = false;
             return StopReason::Requested;
         }

@@ -417,8 +417,11 @@ std::vector<ServiceSpec> readSpecs(std::string_view text, const std::string& sou
 std::string readFile(const std::filesystem::path& path) {
     const std::string source = path.string();
     std::error_code ec;
-    // An ifstream opens a directory without complaint and then reads nothing.
-    if (std::filesystem::is_directory(path, ec)) throw ServicesConfigError(source + ": cannot read");
+    // Refused before it is opened: an ifstream opens a directory without complaint and then reads
+    // nothing, and opening a FIFO blocks until a writer comes, which may be never.
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        throw ServicesConfigError(source + ": cannot read: not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ServicesConfigError(source + ": cannot read");
     std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -503,6 +506,19 @@ double ServiceSpec::number(std::string_view name, double fallback) const {
         badParameter(name, "a number");
     }
     return value;
+}
+
+kernel::SimTime ServiceSpec::duration(std::string_view name, double fallback) const {
+    const double seconds = number(name, fallback);
+    if (!(seconds >= kMinDurationSeconds && seconds <= kMaxDurationSeconds)) {
+        const std::string bounds =
+            fmt::format("a duration from {:g} to {:g} s", kMinDurationSeconds, kMaxDurationSeconds);
+        if (parameters.find(name) != parameters.end()) badParameter(name, bounds);
+        fail(source, line,
+             fmt::format("parameter '{}' of service '{}' must be {}; unset, it is {:g} s here: set it", name, type,
+                         bounds, seconds));
+    }
+    return kernel::SimTime::fromSeconds(seconds);
 }
 
 bool ServiceSpec::boolean(std::string_view name, bool fallback) const {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/SimTime.h"
 
 namespace re2 {
 class RE2;
@@ -80,6 +81,12 @@ struct SBSIM_API ServiceSpec {
     double number(std::string_view name, double fallback) const;
     /// "true"/"1" or "false"/"0", `fallback` if absent; throws ServicesConfigError otherwise.
     bool boolean(std::string_view name, bool fallback) const;
+    /// A duration (an interval, a validity) in seconds, `fallback` if absent: a number from
+    /// kMinDurationSeconds to kMaxDurationSeconds, else ServicesConfigError naming the bounds. The
+    /// lower bound keeps a timer from firing at one instant for ever (1e-12 s rounds to 0 ns).
+    kernel::SimTime duration(std::string_view name, double fallback) const;
+    static constexpr double kMinDurationSeconds = 1e-3;
+    static constexpr double kMaxDurationSeconds = 1e9;
 
 private:
     [[noreturn]] void badParameter(std::string_view name, std::string_view expected) const;

@@ -16,7 +16,7 @@ void requireTimeOnly(const Condition& c) {
     });
     if (culprit != nullptr) return requireTimeOnly(*culprit);
     throw std::invalid_argument(
-        "WorldStory conditions look at time only (TimeCondition, and Not/All/Any/Hold/"
+        "WorldStory conditions look at time only (TimeCondition, and Not/All/Any/Hold/Latch/"
         "Rising/And/Or over it), got " +
         c.typeName());
 }

@@ -43,8 +43,22 @@ The package, one job a module: :mod:`~sbsim.report.loading` (the run's files, er
 
 from __future__ import annotations
 
-from sbsim.fcd import read_fcd
-from sbsim.report.analysis import (
+import sys
+
+from sbsim.extras import missing_message
+
+# Checked before the modules below import them. `python -m sbsim.report` imports this package first,
+# while sys.argv[0] is still "-m" (Python's documented behaviour): the command gets one line and
+# exit code 2, a program importing the package an ImportError saying the same.
+_missing = missing_message("report", ("pandas", "matplotlib", "sumolib"))
+if _missing is not None:
+    if sys.argv[:1] == ["-m"]:
+        print(_missing, file=sys.stderr)
+        sys.exit(2)
+    raise ModuleNotFoundError(_missing)
+
+from sbsim.fcd import read_fcd  # noqa: E402
+from sbsim.report.analysis import (  # noqa: E402
     Events,
     activation_positions,
     active_counts,
@@ -53,13 +67,13 @@ from sbsim.report.analysis import (
     stays,
     stories,
 )
-from sbsim.report.areas import CHECK_TIMEOUT_S, Area, story_areas
-from sbsim.report.cli import PROG, main
-from sbsim.report.compose import Report, build
-from sbsim.report.figures import MARKERS, plot_activity, plot_durations, plot_map, plot_speeds
-from sbsim.report.html import CAPTIONS, png, to_html, write_pngs
-from sbsim.report.loading import ReportError, Scenario, load_events, load_fcd, load_summary, read_net, read_sumocfg
-from sbsim.report.tables import run_table, story_table
+from sbsim.report.areas import CHECK_TIMEOUT_S, Area, story_areas  # noqa: E402
+from sbsim.report.cli import PROG, main  # noqa: E402
+from sbsim.report.compose import Report, build  # noqa: E402
+from sbsim.report.figures import MARKERS, plot_activity, plot_durations, plot_map, plot_speeds  # noqa: E402
+from sbsim.report.html import CAPTIONS, png, to_html, write_pngs  # noqa: E402
+from sbsim.report.loading import ReportError, Scenario, load_events, load_fcd, load_summary, read_net, read_sumocfg  # noqa: E402
+from sbsim.report.tables import run_table, story_table  # noqa: E402
 
 __all__ = [
     "CAPTIONS",

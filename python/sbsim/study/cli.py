@@ -9,6 +9,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
+from sbsim.extras import missing_message
 from sbsim.study.execution import StudyInterrupted, run
 from sbsim.study.spec import StudyError, StudySpec
 from sbsim.study.tables import plot, plot_column
@@ -38,6 +39,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         "that column against the first parameter (repeatable)",
     )
     args = parser.parse_args(argv)
+    # Before any run: the sweep (Dask), the tables (pandas, pyarrow), the progress bar and the plots.
+    message = missing_message("study", ("dask", "distributed", "pandas", "pyarrow", "tqdm", "matplotlib"))
+    if message is not None:
+        print(message, file=sys.stderr)
+        return 2
     if argv is None:  # the command: SIGINT and SIGTERM stop the study, even if started with SIGINT ignored (`&`)
         signal.signal(signal.SIGINT, signal.default_int_handler)
         signal.signal(signal.SIGTERM, signal.default_int_handler)

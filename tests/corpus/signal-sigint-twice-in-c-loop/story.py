@@ -1,4 +1,6 @@
+from pathlib import Path
 
-import storyboard
+
 def createStories(board):
+    Path("stepping").touch()  # the test's cue: the signals come now, inside the C loop
     sum(range(10**12))

@@ -1,8 +1,17 @@
+import time
+from pathlib import Path
 
-import time, storyboard
+import storyboard
+
+
 class Slow(storyboard.Condition):
+    columns = ("speed",)
+
     def test_all(self, snapshot):
-        time.sleep(0.05)  # a long run: the signal comes mid-run
+        Path("stepping").touch()  # the test's cue: the run is stepping
+        time.sleep(0.05)  # at least 50 ms a step whatever the machine: the signal comes mid-run
         return snapshot.speeds < 0
+
+
 def createStories(board):
     board.registerStory(storyboard.Story(Slow(), []))

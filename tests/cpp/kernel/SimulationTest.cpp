@@ -11,6 +11,7 @@
 #include "TestPrinters.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/kernel/StopRequest.h"
 
 namespace sbsim::kernel {
 namespace {
@@ -309,6 +310,26 @@ TEST(Simulation, StopFromHandleMessage) {
     EXPECT_EQ(sim.run(), Simulation::StopReason::NoMoreEvents);
     EXPECT_EQ(trace.back(), "m:c@2");
     EXPECT_EQ(sim.eventCount(), 3u);
+}
+
+TEST(Simulation, TheProgramsStopRequestEndsARunBetweenEventsOfOneInstant) {
+    // A timer that fires again at the same instant forever (a period rounded to 0 ns): the
+    // program's stop request (its signal handler) must end the run between two of its events.
+    Trace trace;
+    Simulation sim;
+    auto& m = sim.emplaceModule<Recorder>("m", trace);
+    Message tick("tick");
+    m.onInitialize = [&](Recorder& self) { self.scheduleAt(sec(1), tick); };
+    std::uint64_t fired = 0;
+    m.onMessage = [&](Recorder& self, Message&) {
+        if (++fired == 100) StopRequest::request();
+        if (fired == 100000) self.simulation().stop();  // the bound of a run that ignored the request
+        self.scheduleAfter(SimTime::zero(), tick);
+    };
+    EXPECT_EQ(sim.run(), Simulation::StopReason::Requested);
+    StopRequest::clear();
+    EXPECT_EQ(fired, 100u);
+    EXPECT_EQ(sim.now(), sec(1));
 }
 
 TEST(Simulation, StopFromInitializeEndsTheRunBeforeAnyEvent) {

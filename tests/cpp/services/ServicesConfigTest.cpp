@@ -1,6 +1,7 @@
 #include "sbsim/services/ServicesConfig.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -195,6 +196,27 @@ TEST(ServicesConfig, NumberParameters) {
     EXPECT_DOUBLE_EQ(spec.number("e", 0), 0.25);
     EXPECT_DOUBLE_EQ(spec.number("i", 0), 10);
     EXPECT_DOUBLE_EQ(spec.number("missing", 42.5), 42.5);
+}
+
+TEST(ServicesConfig, DurationsHaveBounds) {
+    // 1e-12 s passed a "> 0" check, rounded to 0 ns and fired at one instant for ever.
+    const ServicesConfig config =
+        parse(oneService("", R"(type="S" a="0.5" tiny="1e-12" zero="0" negative="-1" huge="1e300" edge="0.001")"));
+    const ServiceSpec& spec = onlyService(config);
+    EXPECT_EQ(spec.duration("a", 1), kernel::SimTime::fromMilliseconds(500));
+    EXPECT_EQ(spec.duration("edge", 1), kernel::SimTime::fromMilliseconds(1));
+    EXPECT_EQ(spec.duration("missing", 2), kernel::SimTime::fromSeconds(2));
+    for (const std::string name : {"tiny", "zero", "negative", "huge"}) {
+        try {
+            (void)spec.duration(name, 1);
+            ADD_FAILURE() << name << ": no error";
+        } catch (const ServicesConfigError& e) {
+            EXPECT_EQ(std::string(e.what()), "s.xml:2: parameter '" + name +
+                                                 "' of service 'S' must be a duration from 0.001 to 1e+09 s, got '" +
+                                                 *spec.parameter(name) + "'");
+        }
+    }
+    EXPECT_THROW((void)spec.duration("missing", 1e-6), ServicesConfigError) << "a default out of bounds too";
 }
 
 TEST(ServicesConfig, MalformedNumberNamesFileLineServiceAndText) {
@@ -526,7 +548,16 @@ TEST(ServicesConfigFile, UnreadableFile) {
 
 TEST(ServicesConfigFile, ADirectoryIsUnreadable) {
     const std::filesystem::path directory = std::filesystem::temp_directory_path();
-    EXPECT_EQ(loadErrorOf(directory), directory.string() + ": cannot read");
+    EXPECT_EQ(loadErrorOf(directory), directory.string() + ": cannot read: not a regular file");
+}
+
+TEST(ServicesConfigFile, AFifoIsRefusedWithoutOpeningIt) {
+    // Opening a FIFO blocks until a writer comes: this test would hang if it were opened.
+    const std::filesystem::path fifo = std::filesystem::temp_directory_path() / "sbsim_services_fifo.xml";
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(loadErrorOf(fifo), fifo.string() + ": cannot read: not a regular file");
+    std::filesystem::remove(fifo);
 }
 
 TEST(ServicesConfigFile, MalformedXmlInAFileNamesTheFileAndLine) {

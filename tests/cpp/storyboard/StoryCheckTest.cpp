@@ -27,6 +27,7 @@
 #include "sbsim/storyboard/conditions/HeadwayCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
 #include "sbsim/storyboard/conditions/LaneCondition.h"
+#include "sbsim/storyboard/conditions/LatchCondition.h"
 #include "sbsim/storyboard/conditions/LikelihoodCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
 #include "sbsim/storyboard/conditions/NotCondition.h"
@@ -168,6 +169,8 @@ TEST(StoryCheck, LogicNodesAreTimeOnlyExactlyWhenTheirOperandsAre) {
     EXPECT_TRUE(AllCondition({t, t, std::make_shared<RisingCondition>(t)}).timeOnly());
     EXPECT_FALSE(AnyCondition({t, std::make_shared<HoldCondition>(speed, s(1))}).timeOnly());
     EXPECT_TRUE(AnyCondition({t, std::make_shared<HoldCondition>(t, s(1))}).timeOnly());
+    EXPECT_TRUE(LatchCondition(t).timeOnly());
+    EXPECT_FALSE(LatchCondition(speed).timeOnly());
 }
 
 TEST(StoryCheck, ConjunctionsIntersectTheirOperandsTimeWindows) {

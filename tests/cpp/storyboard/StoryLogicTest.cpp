@@ -1,5 +1,6 @@
 // Story logic: Not, All/Any (n-ary, lazy, And/Or's set rules), Hold and Rising (per-vehicle runs
-// of true steps, reset by a false or skipped step, dropped when the vehicle leaves).
+// of true steps, reset by a false or skipped step, dropped when the vehicle leaves), Latch (true
+// for good once true, until the vehicle leaves).
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/AnyCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
+#include "sbsim/storyboard/conditions/LatchCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
 #include "sbsim/storyboard/conditions/NotCondition.h"
 #include "sbsim/storyboard/conditions/OrCondition.h"
@@ -224,6 +226,43 @@ TEST(RisingCondition, TrueOnlyAtTheStepTheOperandTurnsTrue) {
     rising.forget("a");
     EXPECT_EQ(rising.tracked(), 0u);
     EXPECT_THROW(RisingCondition(nullptr), std::invalid_argument);
+}
+
+TEST(LatchCondition, OnceTrueForAVehicleStaysTrueUntilItLeaves) {
+    LatchCondition latch(std::make_shared<SpeedConditionGreater>(5.0));
+    Timeline steps(latch);
+    EXPECT_FALSE(steps.next(1));
+    EXPECT_FALSE(steps.next(1));
+    EXPECT_TRUE(steps.next(10));
+    EXPECT_TRUE(steps.next(1)) << "the operand turned false: the latch holds";
+    steps.skip();
+    EXPECT_TRUE(steps.next(1)) << "a step it was not evaluated changes nothing";
+    EXPECT_EQ(latch.heldVehicles(), 1u);
+    latch.forget("a");
+    EXPECT_EQ(latch.heldVehicles(), 0u);
+    EXPECT_FALSE(steps.next(1)) << "a vehicle forgotten starts again";
+    EXPECT_THROW(LatchCondition(nullptr), std::invalid_argument);
+}
+
+TEST(LatchCondition, YieldsTheOperandsSetWhileItHoldsThenAPlainTrue) {
+    class OthersWhileFast : public Condition {
+    public:
+        ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override {
+            if (ctx.snapshot().speeds()[ego] <= 5.0) return false;
+            return ConditionResult::ofOthers(std::vector<VehicleIndex>{1});
+        }
+    };
+    const auto operand = std::make_shared<OthersWhileFast>();
+    LatchCondition latch(operand);
+    Timeline steps(latch);
+    const ConditionResult r = steps.next(10);
+    ASSERT_TRUE(r.isSet());
+    EXPECT_EQ(steps.scene().others(r), (Ids{"b"}));
+    const ConditionResult after = steps.next(1);
+    EXPECT_TRUE(after);
+    EXPECT_FALSE(after.isSet());
+    EXPECT_FALSE(latch.pure()) << "it keeps per-vehicle state";
+    EXPECT_EQ(latch.describe(), "LatchCondition");
 }
 
 }  // namespace

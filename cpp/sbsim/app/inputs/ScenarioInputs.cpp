@@ -68,6 +68,12 @@ services::ServicesConfig loadServicesConfig(const fs::path& path, FileLedger& fi
     return std::move(*config);
 }
 
+void checkRadioInput(const CommandLine& options, FileLedger& files) {
+    if (!options.radio) return;
+    if (!options.services) throw UsageError("--radio: the radio carries the services' messages; give --services");
+    files.requireInput("--radio", *options.radio);
+}
+
 void checkSumoInputs(const std::filesystem::path& sumocfg, const std::vector<std::string>& words, FileLedger& files) {
     files.requireInput("--sumocfg", sumocfg);
     const SumoOptions options(sumocfg, words);

@@ -34,5 +34,7 @@ std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<std::f
                                                         FileLedger& files);
 /// The --services file, with every service type it names known to the registry.
 services::ServicesConfig loadServicesConfig(const std::filesystem::path& path, FileLedger& files);
+/// The --radio file as an input; UsageError without --services (the radio carries their messages).
+void checkRadioInput(const CommandLine& options, FileLedger& files);
 
 }  // namespace sbsim::app

@@ -52,6 +52,8 @@ void printSummary(const RunFigures& f) {
     if (f.services != nullptr) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
         if (f.services->roadsideUnits() > 0) fmt::print("roadside units: {}\n", f.services->roadsideUnits());
+        if (f.obstacles != nullptr)
+            fmt::print("obstacles: {} (polygon type '{}')\n", f.obstacles->count, f.obstacles->polygonType);
         if (f.services->signalsWithoutServices() > 0)
             fmt::print("signals without services: {}\n", f.services->signalsWithoutServices());
         for (const auto& [type, counts] : f.medium->counts()) {
@@ -133,6 +135,8 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();
         if (f.services->roadsideUnits() > 0) out["roadside_units"] = f.services->roadsideUnits();
+        if (f.obstacles != nullptr)
+            out["obstacles"] = {{"polygon_type", f.obstacles->polygonType}, {"count", f.obstacles->count}};
         out["signals_without_services"] = f.services->signalsWithoutServices();
         for (const auto& [type, counts] : f.medium->counts()) {
             ordered_json bins = ordered_json::array();

@@ -10,6 +10,7 @@
 
 #include "sbsim/app/outputs/MessageTraceFile.h"
 
+#include "sbsim/app/run/RadioSetup.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
@@ -34,6 +35,8 @@ struct RunFigures {
     double wall;                                              ///< s
     const std::vector<std::string>& arguments;                ///< the command line
     std::optional<TraceFigures> messageTrace = std::nullopt;  ///< --messages
+    /// The channel model's buildings (--radio); null for the disc model.
+    const ObstacleFigures* obstacles = nullptr;
 };
 
 /// `key: value` lines on stdout: first what the run did (identical for identical runs), then the

@@ -1,6 +1,12 @@
 #include "sbsim/app/run/RadioSetup.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <memory>
+#include <optional>
+#include <set>
+#include <string>
 #include <utility>
 
 #include "sbsim/app/cli/BadInput.h"
@@ -29,7 +35,7 @@ radio::ChannelSettings readRadioSettings(const std::optional<std::filesystem::pa
 }  // namespace
 
 radio::Medium& makeMedium(const CommandLine& cl, kernel::Simulation& sim, const traffic::VehicleSnapshot& snapshot,
-                          radio::Medium::Directory directory) {
+                          radio::Medium::Directory directory, std::optional<ObstacleFigures>* obstacleFigures) {
     if (!cl.radio) {
         radio::DiscSettings disc;
         disc.range = cl.v2xRange;
@@ -44,9 +50,18 @@ radio::Medium& makeMedium(const CommandLine& cl, kernel::Simulation& sim, const 
     if (cl.messagesRange) settings.traceRange = *cl.messagesRange;
     if (!cl.messagesLost()) settings.traceRange = 0;
     auto obstacles = std::make_shared<radio::Obstacles>(settings.wallDb, settings.perMetreDb);
+    std::set<std::string> types;
     for (traffic::SumoPolygons::Polygon& p : traffic::SumoPolygons::all()) {
         if (p.type == settings.obstacleType) obstacles->add(std::move(p.shape));
+        types.insert(std::move(p.type));
     }
+    if (!types.empty() && types.count(settings.obstacleType) == 0) {
+        throw InputError(
+            fmt::format("{}: [obstacles] polygon_type '{}' matches no polygon of the scenario (its "
+                        "polygon types: {})",
+                        cl.radio->string(), settings.obstacleType, fmt::join(types, ", ")));
+    }
+    if (obstacleFigures != nullptr) *obstacleFigures = ObstacleFigures{settings.obstacleType, obstacles->size()};
     return sim.emplaceModule<radio::ChannelMedium>(std::move(settings), snapshot, std::move(directory),
                                                    std::move(obstacles));
 }

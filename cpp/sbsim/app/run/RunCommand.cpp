@@ -126,10 +126,7 @@ int RunCommand::run(const CommandLine& cl) {
         if (!cl.services) throw UsageError("--messages: there are no messages without --services");
         messages.emplace("--messages", *cl.messages, files);
     }
-    if (cl.radio) {
-        if (!cl.services) throw UsageError("--radio: the radio carries the services' messages; give --services");
-        files.requireInput("--radio", *cl.radio);
-    }
+    checkRadioInput(cl, files);
     std::optional<OutputFile> statisticsFile;
     if (cl.statistics) statisticsFile.emplace("--statistics", *cl.statistics, files);
     std::optional<OutputFile> junit;
@@ -294,7 +291,8 @@ int RunCommand::run(const CommandLine& cl) {
                              verdicts,
                              std::chrono::duration<double>(Clock::now() - started).count(),
                              cl.arguments,
-                             messageTrace ? std::optional(messageTrace->figures()) : std::nullopt};
+                             messageTrace ? std::optional(messageTrace->figures()) : std::nullopt,
+                             scenario.obstacles() ? &*scenario.obstacles() : nullptr};
     if (summary) {
         summary->stream() << summaryJson(figures).dump(2) << '\n';
         if (!Interruption::requested()) summary->commit();

@@ -65,8 +65,9 @@ void Scenario::addServices(services::ServicesConfig config, kernel::SimTime inte
     services_ = &sim_.emplaceModule<services::ServiceManager>(std::move(config), interval, sumo_.snapshot(), vehicles_);
     services_->setStatistics(statistics_);
     services::ServiceManager* manager = services_;
-    medium_ = &makeMedium(options_, sim_, sumo_.snapshot(),
-                          [manager](const std::string& id) -> kernel::Module* { return manager->middlewareOf(id); });
+    medium_ = &makeMedium(
+        options_, sim_, sumo_.snapshot(),
+        [manager](const std::string& id) -> kernel::Module* { return manager->middlewareOf(id); }, &obstacles_);
     if (trace != nullptr) medium_->setTrace(trace);
     services_->useStations(stations_);
     services_->setMedium(*medium_);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sbsim/app/cli/CommandLine.h"
+#include "sbsim/app/run/RadioSetup.h"
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/kernel/Statistics.h"
@@ -68,6 +69,8 @@ public:
     storyboard::Storyboard* board() { return board_; }
     services::ServiceManager* services() { return services_; }
     radio::Medium* medium() { return medium_; }
+    /// The channel model's buildings (--radio); none for the disc model or before addServices().
+    const std::optional<ObstacleFigures>& obstacles() const { return obstacles_; }
     /// What every station heard (LDMs, DENM memories): written by the services, read by the
     /// stories' V2X conditions.
     facilities::StationRegistry& stations() { return *stations_; }
@@ -93,6 +96,7 @@ private:
     std::unique_ptr<storyboard::BoardFeed> feed_;
     services::ServiceManager* services_ = nullptr;
     radio::Medium* medium_ = nullptr;
+    std::optional<ObstacleFigures> obstacles_;
 };
 
 }  // namespace sbsim::app

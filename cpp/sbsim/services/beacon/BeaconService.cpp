@@ -14,12 +14,10 @@ namespace sbsim::services {
 SBSIM_REGISTER_SERVICE_AS(BeaconService, "Beacon");
 
 void BeaconService::initialize() {
-    const double interval = numberParameter("interval", 0.1);
+    interval_ = spec().duration("interval", 0.1);
     const double bytes = numberParameter("bytes", 190);
-    if (!(interval > 0) || !std::isfinite(interval)) throw ServicesConfigError("Beacon: interval must be > 0 s");
     if (!(bytes >= 1 && bytes <= 2304) || bytes != std::floor(bytes))
         throw ServicesConfigError("Beacon: bytes must be a whole number from 1 to 2304");
-    interval_ = kernel::SimTime::fromSeconds(interval);
     bytes_ = static_cast<std::size_t>(bytes);
     radio::CounterRandom random(simulation().seed(), radio::CounterRandom::keyOf(vehicleId()), 0, 0,
                                 radio::DrawPurpose::Start);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sbsim/services/ServiceRegistry.h"
+#include "sbsim/services/ServicesConfig.h"
 
 namespace sbsim::services {
 
@@ -10,8 +11,8 @@ SBSIM_REGISTER_SERVICE(CaService);
 
 void CaService::initialize() {
     CamRuleSettings settings;
-    settings.minInterval = kernel::SimTime::fromSeconds(numberParameter("minInterval", 0.1));
-    settings.maxInterval = kernel::SimTime::fromSeconds(numberParameter("maxInterval", 1.0));
+    settings.minInterval = spec().duration("minInterval", 0.1);
+    settings.maxInterval = spec().duration("maxInterval", 1.0);
     settings.headingDelta = numberParameter("headingDelta", settings.headingDelta);
     settings.positionDelta = numberParameter("positionDelta", settings.positionDelta);
     settings.speedDelta = numberParameter("speedDelta", settings.speedDelta);

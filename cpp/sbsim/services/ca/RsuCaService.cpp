@@ -8,14 +8,7 @@ namespace sbsim::services {
 
 SBSIM_REGISTER_SERVICE(RsuCaService);
 
-void RsuCaService::initialize() {
-    const double seconds = numberParameter("generationInterval", 1.0);
-    if (!(seconds > 0)) {
-        throw ServicesConfigError(spec().source + ":" + std::to_string(spec().line) +
-                                  ": parameter 'generationInterval' of service 'RsuCaService' must be > 0 s");
-    }
-    interval_ = kernel::SimTime::fromSeconds(seconds);
-}
+void RsuCaService::initialize() { interval_ = spec().duration("generationInterval", 1.0); }
 
 void RsuCaService::trigger() {
     const kernel::SimTime now = simTime();

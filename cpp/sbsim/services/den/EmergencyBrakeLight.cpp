@@ -7,11 +7,10 @@
 namespace sbsim::services {
 
 void EmergencyBrakeLight::initialize() {
-    samples_.emplace(kernel::SimTime::fromSeconds(number("sampleDuration", 0.5)),
-                     kernel::SimTime::fromSeconds(number("sampleInterval", 0.1)));
+    samples_.emplace(duration("sampleDuration", 0.5), duration("sampleInterval", 0.1));
     speedThreshold_ = number("speedThreshold", speedThreshold_);
     decelerationThreshold_ = number("decelerationThreshold", decelerationThreshold_);
-    setDetectionBlockingInterval(kernel::SimTime::fromSeconds(number("detectionBlockingInterval", 0.1)));
+    setDetectionBlockingInterval(duration("detectionBlockingInterval", 0.1));
 }
 
 void EmergencyBrakeLight::check() {

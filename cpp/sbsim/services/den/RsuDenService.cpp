@@ -40,12 +40,8 @@ void RsuDenService::initialize() {
         until_ = kernel::SimTime::fromSeconds(spec.number("until", 0));
         if (*until_ <= from_) bad("'until' must be after 'from'");
     }
-    const double interval = spec.number("interval", 1);
-    if (!(interval > 0)) bad("'interval' must be > 0 s");
-    interval_ = kernel::SimTime::fromSeconds(interval);
-    const double validity = spec.number("validity", until_ ? (*until_ - from_).seconds() : 600.0);
-    if (!(validity > 0)) bad("'validity' must be > 0 s");
-    validity_ = kernel::SimTime::fromSeconds(validity);
+    interval_ = spec.duration("interval", 1);
+    validity_ = spec.duration("validity", until_ ? (*until_ - from_).seconds() : 600.0);
     scheduleAt(std::max(from_, simTime()), startTimer_);
     if (until_) scheduleAt(std::max(*until_, simTime()), endTimer_);
 }

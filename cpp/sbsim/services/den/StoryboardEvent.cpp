@@ -31,16 +31,15 @@ void StoryboardEvent::check() {
     if (!pending_) return;
     pending_ = false;
     if (event_ && service().repeating(*event_)) return;  // still going
-    const double validity = number("validity", 600);
+    const kernel::SimTime validity = duration("validity", 600);
     facilities::DenmContent denm = skeleton(number("area", 1000));
     denm.cause = static_cast<int>(number("cause", 0));
     denm.subcause = static_cast<int>(number("subcause", 0));
     if (text("relevance")) denm.relevanceDistance = number("relevance", 0);
-    denm.validity = kernel::SimTime::fromSeconds(validity);
+    denm.validity = validity;
     denm.trafficClass = static_cast<int>(number("trafficClass", 1));
     event_ = denm.action;
-    service().sendDenm(denm, Repetition{kernel::SimTime::fromSeconds(number("interval", 1)),
-                                        kernel::SimTime::fromSeconds(number("duration", validity))});
+    service().sendDenm(denm, Repetition{duration("interval", 1), duration("duration", validity.seconds())});
 }
 
 }  // namespace sbsim::services

@@ -4,9 +4,7 @@
 
 namespace sbsim::services {
 
-void TractionLoss::initialize() {
-    setDetectionBlockingInterval(kernel::SimTime::fromSeconds(number("detectionBlockingInterval", 20)));
-}
+void TractionLoss::initialize() { setDetectionBlockingInterval(duration("detectionBlockingInterval", 20)); }
 
 void TractionLoss::handleSignal(const traffic::StoryboardSignal& signal) {
     if (signal.cause == "traction loss") pending_ = true;

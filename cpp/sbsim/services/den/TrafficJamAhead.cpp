@@ -6,10 +6,9 @@
 namespace sbsim::services {
 
 void TrafficJamAhead::initialize() {
-    speeds_.emplace(kernel::SimTime::fromSeconds(number("sampleDuration", 120)),
-                    kernel::SimTime::fromSeconds(number("sampleInterval", 1)));
+    speeds_.emplace(duration("sampleDuration", 120), duration("sampleInterval", 1));
     nonUrban_ = number("nonUrbanEnvironment", 1) != 0;
-    setDetectionBlockingInterval(kernel::SimTime::fromSeconds(number("detectionBlockingInterval", 60)));
+    setDetectionBlockingInterval(duration("detectionBlockingInterval", 60));
 }
 
 void TrafficJamAhead::check() {

@@ -5,10 +5,9 @@
 namespace sbsim::services {
 
 void TrafficJamEndOfQueue::initialize() {
-    speeds_.emplace(kernel::SimTime::fromSeconds(number("sampleDuration", 10)),
-                    kernel::SimTime::fromSeconds(number("sampleInterval", 0.1)));
+    speeds_.emplace(duration("sampleDuration", 10), duration("sampleInterval", 0.1));
     nonUrban_ = number("nonUrbanEnvironment", 1) != 0;
-    setDetectionBlockingInterval(kernel::SimTime::fromSeconds(number("detectionBlockingInterval", 60)));
+    setDetectionBlockingInterval(duration("detectionBlockingInterval", 60));
 }
 
 bool TrafficJamEndOfQueue::egoDecelerated() const {

@@ -12,6 +12,10 @@ void UseCase::attach(DenService& service, const ServiceSpec& spec) {
 
 double UseCase::number(std::string_view name, double fallback) const { return spec_->number(name, fallback); }
 
+kernel::SimTime UseCase::duration(std::string_view name, double fallback) const {
+    return spec_->duration(name, fallback);
+}
+
 std::optional<std::string> UseCase::text(std::string_view name) const { return spec_->parameter(name); }
 
 bool UseCase::isDetectionBlocked() {

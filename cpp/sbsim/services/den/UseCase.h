@@ -35,6 +35,8 @@ protected:
     DenService& service() const { return *service_; }
     /// A number from the <usecase> element's attributes, else `fallback`.
     double number(std::string_view name, double fallback) const;
+    /// A duration from the attributes, else `fallback`, within ServiceSpec::duration's bounds.
+    kernel::SimTime duration(std::string_view name, double fallback) const;
     std::optional<std::string> text(std::string_view name) const;
 
     /// Artery's detection blocking: after blockDetection(), isDetectionBlocked() is true until the

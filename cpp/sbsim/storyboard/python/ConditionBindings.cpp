@@ -17,6 +17,7 @@
 #include "sbsim/storyboard/conditions/HeadwayCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
 #include "sbsim/storyboard/conditions/LaneCondition.h"
+#include "sbsim/storyboard/conditions/LatchCondition.h"
 #include "sbsim/storyboard/conditions/LikelihoodCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
 #include "sbsim/storyboard/conditions/NotCondition.h"
@@ -261,6 +262,8 @@ void bindConditions(py::module_& m) {
              }),
              py::arg("condition"), py::arg("seconds"));
     py::class_<RisingCondition, Condition, py::smart_holder>(m, "RisingCondition")
+        .def(py::init<ConditionPtr>(), py::arg("condition"));
+    py::class_<LatchCondition, Condition, py::smart_holder>(m, "LatchCondition")
         .def(py::init<ConditionPtr>(), py::arg("condition"));
     py::class_<LimitCondition, Condition, py::smart_holder>(m, "LimitCondition")
         .def(py::init([](const py::object& n) {

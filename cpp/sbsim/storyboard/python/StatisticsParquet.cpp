@@ -36,8 +36,10 @@ std::string runChild(const char* code, const std::string& input) {
     if (done.attr("returncode").cast<int>() != 0) {
         std::string err = done.attr("stderr").cast<std::string>();
         while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
-        throw StatisticsParquet::Unavailable("pyarrow cannot write Parquet (pip install pyarrow): " +
-                                             err.substr(err.rfind('\n') + 1));
+        // The exact command for this interpreter (./sbsim installs pyarrow with the study extras).
+        const std::string python = py::module_::import("shlex").attr("quote")(executable).cast<std::string>();
+        throw StatisticsParquet::Unavailable("pyarrow cannot write Parquet (install it with: " + python +
+                                             " -m pip install 'pyarrow>=14'): " + err.substr(err.rfind('\n') + 1));
     }
     return done.attr("stdout").cast<std::string>();
 }
