@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -10,10 +11,14 @@
 #include "sbsim/kernel/Object.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/TraceField.h"
+#include "sbsim/radio/geonet/PacketHeader.h"
 
 namespace sbsim::radio {
 
 class Medium;
+namespace geonet {
+class Router;
+}
 
 /// A message one station broadcasts to the stations around it. Subclass it with the content of
 /// your application; give it a name (per-type counts in the summary) and a byte size (what it
@@ -32,8 +37,24 @@ public:
     /// The sender's count of messages before this one (0, 1, 2, …), over all its services.
     std::uint64_t sequence() const { return sequence_; }
 
+    /// Its GeoNetworking header: a single-hop broadcast unless the message made itself a
+    /// geo-broadcast; the sending station's router fills in the rest.
+    const geonet::PacketHeader& geonet() const { return geonet_; }
+    /// A copy of this message, for a station that forwards it (GeoNetworking); none (the
+    /// default): the message is received, never forwarded.
+    virtual std::unique_ptr<V2xMessage> clone() const { return nullptr; }
+
+protected:
+    /// Makes this message a geo-broadcast (GBC) to the stations in `area`.
+    void geoBroadcastTo(const geonet::GeoArea& area) {
+        geonet_.transport = geonet::Transport::GeoBroadcast;
+        geonet_.area = area;
+    }
+
 private:
     friend class Medium;
+    friend class geonet::Router;
+    geonet::PacketHeader geonet_;
     std::string sender_;
     kernel::SimTime sentAt_;
     std::uint64_t sequence_ = 0;
