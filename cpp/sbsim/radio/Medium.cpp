@@ -64,7 +64,8 @@ void Medium::stamp(V2xMessage& message, const std::string& sender) {
     message.sender_ = sender;
     message.sentAt_ = simTime();
     message.sequence_ = sequences_[sender]++;
-    ++counts_[std::string(message.typeName())].sent;
+    Counts& c = counts_[std::string(message.typeName())];
+    ++(message.geonet().hops() > 1 ? c.forwarded : c.sent);
 }
 
 Medium::Counts* Medium::countsOf(const V2xMessage& message) {

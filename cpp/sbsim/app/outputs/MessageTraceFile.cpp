@@ -34,6 +34,12 @@ std::string MessageTraceFile::format(const radio::TraceLine& l) {
             s += fmt::format(R"(,"distance":{:.2f},"reason":"{}")", l.distance, radio::lossReasonName(l.reason));
             break;
     }
+    // A geo-broadcast's lines name its source and its hops (`sender` is the station that sent this
+    // frame: the source, or the forwarder).
+    if (const radio::geonet::PacketHeader& gn = l.message->geonet(); gn.geoBroadcast()) {
+        s += fmt::format(R"(,"source":{},"hops":{})", jsonText(gn.source), gn.hops());
+        if (!gn.nextHop.empty()) s += fmt::format(R"(,"next_hop":{})", jsonText(gn.nextHop));
+    }
     for (const radio::TraceField& field : l.message->traceFields()) {
         s += fmt::format(",{}:", jsonText(field.name));
         std::visit(
