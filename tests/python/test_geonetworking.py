@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 from sbsim.runner import read_messages, run
 from sbsim.sumo import sumo_binary
-from sbsim_helpers import assert_no_crash, message_counts, write_story
+from sbsim_helpers import assert_bad_input, assert_no_crash, message_counts, write_story
 
 RANGE = "300"
 
@@ -157,3 +157,16 @@ def test_a_unit_outside_its_area_reaches_it_greedily(tmp_path: Path) -> None:
     assert "next_hop" not in first["b"] and first["b"]["hops"] == 3, "inside the area: broadcast"
     off, _ = denm_run(cfg, tmp_path, "--gn-forwarding", "off")
     assert warned(off) == {"works"}, "one hop reaches only a, outside the area"
+
+
+@pytest.mark.parametrize(
+    ("words", "needle"),
+    [
+        (["--gn-forwarding", "maybe"], "expects on or off, got 'maybe'"),
+        (["--param", "gn_forwarding=7"], "expects on or off, got '7'"),
+        (["--gn-hop-limit", "0"], "expects 1 to 255, got '0'"),
+        (["--param", "gn_hop_limit=256"], "expects 1 to 255, got '256'"),
+    ],
+)
+def test_bad_geonetworking_options_are_one_line(words: list[str], needle: str) -> None:
+    assert_bad_input(run(extra=words, timeout=60), needle)
