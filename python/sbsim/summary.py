@@ -7,7 +7,7 @@ The program writes one JSON object at the end of a run::
      "steps": 300, "vehicles_seen": 150, "peak_running": 40,
      "stories": [{"name": "rain", "activations": 12, "active_vehicle_seconds": 340.0}],
      "signals": {"cause": count}, "services_created": 3,
-     "messages": {"Type": {"sent": 10, "delivered": 8}},
+     "messages": {"Type": {"sent": 10, "delivered": 8}},  # also "forwarded" when GeoNetworking forwarded
      "message_trace": {"format": "parquet", "lines": 5000, "bytes": 81234, "max_bytes": 2000000000,
                        "truncated": false, "truncated_at": null},
      "statistics": {"name": {"count": 3, "sum": 9.0, "mean": 3.0, "min": -2.0, "max": 7.0}},
@@ -130,6 +130,8 @@ def table_columns(summary: Summary) -> dict[str, Any]:
     for kind, counts in summary.get("messages", {}).items():
         row[f"sent:{kind}"] = counts["sent"]
         row[f"delivered:{kind}"] = counts["delivered"]
+        if "forwarded" in counts:
+            row[f"forwarded:{kind}"] = counts["forwarded"]
         if "mean_receivers" in counts:
             row[f"mean_receivers:{kind}"] = counts["mean_receivers"]
     trace = summary.get("message_trace")

@@ -232,10 +232,10 @@ def assert_active_as_predicted(
 
 
 def message_counts(stdout: str) -> dict[str, tuple[int, int]]:
-    """The summary's ``messages <Type>: sent N, delivered M`` lines, as {type: (sent, delivered)}."""
+    """The summary's ``messages <Type>: sent N[, forwarded F], delivered M`` lines, as {type: (sent, delivered)}."""
     out: dict[str, tuple[int, int]] = {}
     for line in stdout.splitlines():
-        m = re.fullmatch(r"messages (\S+): sent (\d+), delivered (\d+)", line.strip())
+        m = re.fullmatch(r"messages (\S+): sent (\d+)(?:, forwarded \d+)?, delivered (\d+)", line.strip())
         if m:
             out[m.group(1)] = (int(m.group(2)), int(m.group(3)))
     return out

@@ -83,6 +83,8 @@ OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--v2x-range": (None, "500"),
     "--v2x-latency": (None, "0.001"),
     "--v2x-fade-start": (None, None),
+    "--gn-forwarding": (None, "on"),
+    "--gn-hop-limit": (None, "10"),
     "--radio": (None, None),
     "--messages": (None, None),
     "--messages-range": (None, None),

@@ -91,7 +91,9 @@ def test_roadside_units_send_cams_and_a_denm_to_the_vehicles_in_range(grid: Path
     # rsu0's DENM: new at 20 s, sent every second, cancelled at 80 s; taken only inside its area.
     denm = [m for m in lines if m["event"] == "denm"]
     assert [(m["t"], m["phase"]) for m in denm if m["station"] == "rsu0"] == [(20, "new"), (80, "terminate")]
-    denm_tx = [m["t"] for m in lines if m["event"] == "tx" and m["type"] == "DENM"]
+    # Its own transmissions (vehicles inside the area forward them too: GeoNetworking).
+    denm_tx = [m["t"] for m in lines if m["event"] == "tx" and m["type"] == "DENM" and m["station"] == "rsu0"]
+    assert all(m["source"] == "rsu0" for m in lines if m["event"] == "tx" and m["type"] == "DENM")
     assert denm_tx == pytest.approx([20.0 + k for k in range(60)] + [80.0])
     warned = {m["station"]: m["t"] for m in denm if m["phase"] == "new" and m["station"] != "rsu0"}
     assert len(warned) > 10
@@ -101,7 +103,11 @@ def test_roadside_units_send_cams_and_a_denm_to_the_vehicles_in_range(grid: Path
     # Heard over the radio outside the area: taken by nobody (a vehicle first heard outside it is
     # warned only once inside).
     phase_at = {(m["station"], m["t"]) for m in denm}
-    outside = [m for m in lines if m["event"] == "rx" and m["type"] == "DENM" and m["distance"] > AREA + 1]
+    outside = [
+        m
+        for m in lines
+        if m["event"] == "rx" and m["type"] == "DENM" and m["sender"] == "rsu0" and m["distance"] > AREA + 1
+    ]
     assert outside
     assert not any((m["station"], m["t"]) in phase_at for m in outside)
     counts = message_counts(result.stdout)

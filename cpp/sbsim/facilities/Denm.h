@@ -51,7 +51,7 @@ struct SBSIM_API DenmContent {
 /// A decentralized environmental notification message, sent as geo-broadcast to a circle.
 class SBSIM_API Denm : public ItsMessage {
 public:
-    explicit Denm(DenmContent content) : content_(std::move(content)) {}
+    explicit Denm(DenmContent content) : content_(std::move(content)) { geoBroadcastTo(content_.destination); }
     const DenmContent& content() const { return content_; }
 
     std::string_view typeName() const override { return "DENM"; }
@@ -59,7 +59,6 @@ public:
     /// situation (4), location with an empty trace (8); the impact-reduction container 20 more.
     /// A termination DENM carries the management container only.
     std::size_t byteSize() const override;
-    radio::GnTransport gnTransport() const override { return radio::GnTransport::GeoBroadcast; }
     radio::SecurityProfile securityProfile() const override { return radio::SecurityProfile::Denm; }
     /// `cause`, `subcause` and `action` ("<station>:<sequence>").
     std::vector<radio::TraceField> traceFields() const override;
@@ -67,6 +66,8 @@ public:
     bool reaches(const Eigen::Vector2d& position) const override { return content_.destination.contains(position); }
     void store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const override;
     void dispatch(ItsMessageHandler& handler) const override { handler.indicateDenm(*this); }
+    /// Forwarders rebroadcast a copy.
+    std::unique_ptr<radio::V2xMessage> clone() const override { return std::make_unique<Denm>(*this); }
 
 private:
     DenmContent content_;

@@ -1,18 +1,11 @@
 #pragma once
 
-#include <Eigen/Core>
-
-#include "sbsim/kernel/Export.h"
+#include "sbsim/radio/geonet/GeoArea.h"
 
 namespace sbsim::facilities {
 
-/// A geo-broadcast destination area (GeoNetworking's circle), in SUMO's network frame (m).
-struct SBSIM_API GeoCircle {
-    Eigen::Vector2d center = Eigen::Vector2d::Zero();
-    double radius = 0;  ///< m
-
-    /// Whether `point` lies inside or on the circle.
-    bool contains(const Eigen::Vector2d& point) const;
-};
+/// A geo-broadcast destination area (GeoNetworking's circle), in SUMO's network frame (m): the
+/// area a DENM's GeoNetworking header carries.
+using GeoCircle = radio::geonet::GeoArea;
 
 }  // namespace sbsim::facilities

@@ -71,7 +71,8 @@ void Medium::stamp(V2xMessage& message, const std::string& sender) {
     const SecurityProfile profile = message.securityProfile();
     message.frameBytes_ = radio::frameBytes(message.byteSize(), message.gnTransport(), profile,
                                             certificates_.sign(sender, profile, simTime()));
-    ++counts_[std::string(message.typeName())].sent;
+    Counts& c = counts_[std::string(message.typeName())];
+    ++(message.geonet().hops() > 1 ? c.forwarded : c.sent);
 }
 
 Medium::Counts* Medium::countsOf(const V2xMessage& message) {

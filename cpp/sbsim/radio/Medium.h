@@ -28,6 +28,8 @@ class SBSIM_API Medium : public kernel::Module {
 public:
     struct Counts {
         std::uint64_t sent = 0;
+        /// Frames that carried another station's packet on (GeoNetworking forwarding): not in `sent`.
+        std::uint64_t forwarded = 0;
         std::uint64_t delivered = 0;
         /// Per 50 m of sender–receiver distance (bin k: [50k, 50k + 50) m): the stations the
         /// medium considered, and those that received the message.

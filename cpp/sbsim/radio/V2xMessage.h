@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -11,10 +12,14 @@
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/FrameSize.h"
 #include "sbsim/radio/TraceField.h"
+#include "sbsim/radio/geonet/PacketHeader.h"
 
 namespace sbsim::radio {
 
 class Medium;
+namespace geonet {
+class Router;
+}
 
 /// A message one station broadcasts to the stations around it. Subclass it with the content of
 /// your application; give it a name (per-type counts in the summary) and a byte size (what it
@@ -24,9 +29,12 @@ public:
     /// A short type name for statistics, e.g. "ClearLane".
     virtual std::string_view typeName() const = 0;
     virtual std::size_t byteSize() const = 0;
-    /// How GeoNetworking carries it: single-hop broadcast unless the message says otherwise (a
-    /// DENM: geo-broadcast). Sets the extended header's size in frameBytes().
-    virtual GnTransport gnTransport() const { return GnTransport::SingleHopBroadcast; }
+    /// How GeoNetworking carries it, from its GN header (geonet()): single-hop broadcast unless the
+    /// message asked for a geo-broadcast (geoBroadcastTo: a DENM). Sets the extended header's size
+    /// in frameBytes().
+    GnTransport gnTransport() const {
+        return geonet_.geoBroadcast() ? GnTransport::GeoBroadcast : GnTransport::SingleHopBroadcast;
+    }
     /// Which header its security envelope gets (FrameSize.h): the full certificate every time
     /// unless the message says otherwise (a CAM: digest between certificates).
     virtual SecurityProfile securityProfile() const { return SecurityProfile::Other; }
@@ -42,8 +50,24 @@ public:
     /// security envelope around byteSize(); FrameSize.h), as signed when it was sent.
     std::size_t frameBytes() const { return frameBytes_; }
 
+    /// Its GeoNetworking header: a single-hop broadcast unless the message made itself a
+    /// geo-broadcast; the sending station's router fills in the rest.
+    const geonet::PacketHeader& geonet() const { return geonet_; }
+    /// A copy of this message, for a station that forwards it (GeoNetworking); none (the
+    /// default): the message is received, never forwarded.
+    virtual std::unique_ptr<V2xMessage> clone() const { return nullptr; }
+
+protected:
+    /// Makes this message a geo-broadcast (GBC) to the stations in `area`.
+    void geoBroadcastTo(const geonet::GeoArea& area) {
+        geonet_.transport = geonet::Transport::GeoBroadcast;
+        geonet_.area = area;
+    }
+
 private:
     friend class Medium;
+    friend class geonet::Router;
+    geonet::PacketHeader geonet_;
     std::string sender_;
     kernel::SimTime sentAt_;
     std::uint64_t sequence_ = 0;

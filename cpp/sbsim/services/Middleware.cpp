@@ -15,7 +15,8 @@ Middleware::Middleware(ServiceManager& manager, std::string vehicleId)
     : kernel::Module(vehicleId + ".middleware"),
       manager_(manager),
       vehicleId_(std::move(vehicleId)),
-      vehicle_(manager.registry().of(vehicleId_)) {}
+      vehicle_(manager.registry().of(vehicleId_)),
+      router_(vehicleId_, manager.geoNetworking()) {}
 
 void Middleware::host(Service& service, const ServiceSpec& spec) {
     service.middleware_ = this;
@@ -55,12 +56,6 @@ void Middleware::initialize() {
     scheduleAfter(clockPhase(simulation().seed(), vehicleId_, manager_.interval()), triggerTimer_);
 }
 
-void Middleware::handleMessage(kernel::Message& msg) {
-    if (&msg != &triggerTimer_) return kernel::Module::handleMessage(msg);
-    scheduleAfter(manager_.interval(), triggerTimer_);
-    trigger();
-}
-
 facilities::StationFacilities& Middleware::facilities() const { return manager_.stations().of(vehicleId_); }
 
 void Middleware::trigger() {
@@ -85,7 +80,46 @@ const facilities::ItsMessage* Middleware::itsPart(const radio::V2xMessage& messa
     return its;
 }
 
+std::vector<radio::geonet::Neighbour> Middleware::neighbours() const {
+    std::vector<radio::geonet::Neighbour> out;
+    const kernel::SimTime now = simTime();
+    for (const auto& [station, entry] : facilities().ldm.entries()) {
+        if (entry.expiry() >= now) out.push_back({station, entry.cam.position});
+    }
+    return out;
+}
+
+void Middleware::send(std::unique_ptr<radio::V2xMessage> message) {
+    if (!message) throw std::invalid_argument("cannot send a null V2X message");
+    if (message->geonet().geoBroadcast()) router_.originate(*message, position(), [this] { return neighbours(); });
+    manager_.medium().broadcast(vehicleId_, std::move(message));
+}
+
+void Middleware::scheduleForwarding() {
+    const std::optional<kernel::SimTime> due = router_.nextTimeout();
+    if (forwardTimer_.isScheduled() && (!due || forwardTimer_.arrivalTime() != *due)) cancelEvent(forwardTimer_);
+    if (due && !forwardTimer_.isScheduled()) scheduleAt(*due, forwardTimer_);
+}
+
+void Middleware::handleMessage(kernel::Message& msg) {
+    if (&msg == &triggerTimer_) {
+        scheduleAfter(manager_.interval(), triggerTimer_);
+        return trigger();
+    }
+    if (&msg != &forwardTimer_) return kernel::Module::handleMessage(msg);
+    for (auto& packet : router_.takeExpired(simTime(), position()))
+        manager_.medium().broadcast(vehicleId_, std::move(packet));
+    scheduleForwarding();
+}
+
 void Middleware::receive(const radio::V2xMessage& message) {
+    if (message.geonet().geoBroadcast()) {
+        radio::geonet::Router::Reception r =
+            router_.receive(message, position(), simTime(), [this] { return neighbours(); });
+        if (r.forwardNow) manager_.medium().broadcast(vehicleId_, std::move(r.forwardNow));
+        if (r.timersChanged) scheduleForwarding();
+        if (!r.passUp) return;
+    }
     // A cast to the facilities' interface, not a switch on concrete types: the message itself
     // says where it goes and what is kept of it.
     const facilities::ItsMessage* its = itsPart(message);

@@ -13,6 +13,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/radio/Receiver.h"
+#include "sbsim/radio/geonet/Router.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceVehicle.h"
 #include "sbsim/traffic/VehicleRegistry.h"
@@ -30,10 +31,13 @@ class ServiceManager;
 /// (which the simulation owns, as modules) and hands them triggers, storyboard signals and incoming
 /// V2X messages. Each station runs on its own clock, as Artery's middleware does "to avoid
 /// unrealistic node synchronization": its first trigger comes a uniform phase in (0, interval]
-/// after it departed (clockPhase()), then one every interval. Removed, services first, when the vehicle arrives. It is
-/// the station's network and facilities layers too: a geo-broadcast message whose destination area does not hold the
-/// station goes no further, and CAMs and DENMs go into the station's LDM and DENM memory before its services see them;
-/// expired entries are dropped before every trigger.
+/// after it departed (clockPhase()), then one every interval. Removed, services first, when the
+/// vehicle arrives. It is the station's network and facilities layers too: a geo-broadcast message
+/// whose destination area does not hold the station goes no further, and CAMs and DENMs go into the
+/// station's LDM and DENM memory before its services see them; expired entries are dropped before
+/// every trigger. Its GeoNetworking router (radio::geonet::Router) forwards geo-broadcasts: the
+/// contention timers are this module's self-messages, the neighbours for greedy forwarding those
+/// of its LDM.
 class SBSIM_API Middleware : public kernel::Module, public radio::Receiver {
 public:
     Middleware(ServiceManager& manager, std::string vehicleId);
@@ -62,15 +66,23 @@ public:
     void signal(const traffic::StoryboardSignal& signal);
 
     void initialize() override;
-    void handleMessage(kernel::Message& msg) override;
-    /// A V2X message reached the station: through the facilities to the services.
+    /// A V2X message reached the station: through its router and the facilities to the services.
     void receive(const radio::V2xMessage& message) override;
+    /// Sends `message` from this station: through its router to the medium.
+    void send(std::unique_ptr<radio::V2xMessage> message);
+    /// The contention-based forwarding timer.
+    void handleMessage(kernel::Message& msg) override;
+    const radio::geonet::Router& router() const { return router_; }
 
 private:
     /// `message` as an ITS message, or null. A dynamic_cast that fails walks the hierarchy
     /// comparing type names (an eighth of the disc model's time at 23 M receptions): the answer
     /// depends only on the message's dynamic type, so it is remembered per type.
     const facilities::ItsMessage* itsPart(const radio::V2xMessage& message);
+    /// The stations of its LDM, alive now, at their last CAM's position.
+    std::vector<radio::geonet::Neighbour> neighbours() const;
+    /// The forwarding timer at the router's next timeout (or off).
+    void scheduleForwarding();
 
     ServiceManager& manager_;
     std::string vehicleId_;
@@ -82,6 +94,8 @@ private:
     const std::type_info* otherType_ = nullptr;              // the last type found not to be
     kernel::Message triggerTimer_{"middleware trigger"};
     std::optional<Eigen::Vector2d> fixedPosition_;
+    radio::geonet::Router router_;
+    kernel::Message forwardTimer_{"geonet forwarding"};
 };
 
 }  // namespace sbsim::services

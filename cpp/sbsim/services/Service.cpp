@@ -29,9 +29,7 @@ const facilities::StationFacilities& Service::facilities() const { return hostOf
 facilities::StationRegistry& Service::stations() const { return hostOf(middleware_).manager().stations(); }
 radio::Medium& Service::medium() const { return hostOf(middleware_).manager().medium(); }
 
-void Service::send(std::unique_ptr<radio::V2xMessage> message) {
-    hostOf(middleware_).manager().medium().broadcast(vehicleId(), std::move(message));
-}
+void Service::send(std::unique_ptr<radio::V2xMessage> message) { hostOf(middleware_).send(std::move(message)); }
 
 void Service::failed() {
     const std::string where =

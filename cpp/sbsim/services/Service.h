@@ -79,7 +79,8 @@ protected:
     /// The radio medium the station sends on (its DCC interval, if it models DCC).
     radio::Medium& medium() const;
 
-    /// Broadcasts `message` to the services of every other vehicle in range.
+    /// Broadcasts `message` to the services of every other vehicle in range (a geo-broadcast, such
+    /// as a DENM, through the station's GeoNetworking router: forwarded through its area).
     void send(std::unique_ptr<radio::V2xMessage> message);
     /// From now on, also receive storyboard signals meant for other vehicles.
     void listenToAllSignals();

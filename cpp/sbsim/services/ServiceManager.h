@@ -13,6 +13,7 @@
 #include "sbsim/kernel/Module.h"
 #include "sbsim/kernel/Statistics.h"
 #include "sbsim/radio/Medium.h"
+#include "sbsim/radio/geonet/Router.h"
 #include "sbsim/services/Middleware.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/traffic/Penetration.h"
@@ -44,6 +45,10 @@ public:
     static traffic::SnapshotColumns columns() { return traffic::SnapshotColumns::all(); }
     traffic::VehicleRegistry& registry() const { return *registry_; }
     void setMedium(radio::Medium& medium) { medium_ = &medium; }
+    /// How the stations' GeoNetworking routers forward geo-broadcasts (default: CBF and greedy
+    /// forwarding, hop limit 10), for the middlewares made from now on.
+    void setGeoNetworking(const radio::geonet::RouterSettings& settings) { geonet_ = settings; }
+    const radio::geonet::RouterSettings& geoNetworking() const { return geonet_; }
     /// The stations' facilities (LDM, DENM memory), shared with the storyboard's V2X conditions
     /// (default: a registry of the manager's own). A station's entry goes when it leaves.
     void useStations(std::shared_ptr<facilities::StationRegistry> stations) { stations_ = std::move(stations); }
@@ -87,6 +92,7 @@ private:
     kernel::SimTime interval_;
     const traffic::VehicleSnapshot& snapshot_;
     radio::Medium* medium_ = nullptr;
+    radio::geonet::RouterSettings geonet_;
     kernel::Statistics* statistics_ = nullptr;
     traffic::Penetration penetration_;
     std::unordered_map<std::string, Middleware*> middlewares_;

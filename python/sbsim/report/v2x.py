@@ -1,12 +1,13 @@
 """What the radio did, from a run's message trace (``sbsim --messages``): the tables behind the V2X panels.
 
-- :func:`messages_per_type`: transmissions per message type in each time bin;
+- :func:`messages_per_type`: transmissions per message type in each time bin (frames: a DENM's
+  GeoNetworking forwards count);
 - :func:`delivery_by_distance`: packet delivery ratio per message type and 50 m distance bin, from the
   trace's receptions (``rx``) and lost receptions (``lost``; only those the trace keeps, within
   ``--messages-range``, so bins beyond it count receptions only and are left out);
 - :func:`busy_ratio_over_time`: the channel busy ratio the senders measured (``cbr`` of ``tx`` lines, the
   802.11p channel model's ``--radio``; the disc model has none), mean and max per time bin;
-- :func:`speeds_by_denm`: mean speed per FCD step of the vehicles that had received a DENM by then
+- :func:`speeds_by_denm`: mean speed per FCD step of the vehicles that had taken a DENM in by then
   against the others.
 """
 
@@ -90,14 +91,23 @@ def busy_ratio_over_time(messages: Messages, bin_seconds: float = 1.0) -> pd.Dat
 
 
 def first_denm(messages: Messages) -> pd.Series:
-    """When each station first received a DENM (indexed by station)."""
+    """When each station first took a DENM in (its DENM memory's first ``denm`` line of phase ``new``;
+    a radio reception alone may be one outside the DENM's area, or, with GeoNetworking, a forwarder's
+    frame heard beyond it), indexed by station, events a station announced itself left out; a trace
+    without ``denm`` lines: its first reception."""
     frame = messages_frame(messages)
-    got = frame[(frame["event"] == "rx") & (frame["type"] == "DENM")]
+    taken = frame[frame["event"] == "denm"]
+    if not taken.empty and "phase" in frame and "action" in frame:
+        got = taken[taken["phase"] == "new"]
+        origin = got["action"].astype(str).str.rsplit(":", n=1).str[0]  # action: "<station>:<sequence>"
+        got = got[origin != got["station"]]
+    else:
+        got = frame[(frame["event"] == "rx") & (frame["type"] == "DENM")]
     return got.groupby("station")["t"].min()
 
 
 def speeds_by_denm(messages: Messages, fcd: pd.DataFrame) -> pd.DataFrame:
-    """Mean speed per FCD step of the running vehicles that had received a DENM at or before that step
+    """Mean speed per FCD step of the running vehicles that had taken a DENM in at or before that step
     (``warned``) and of the others (``others``), indexed by time (NaN where a group is empty); ``warned_n``
     and ``others_n`` count them."""
     first = first_denm(messages)

@@ -186,6 +186,22 @@ void CommandLine::declareOptions(CLI::App& app) {
                    "to 0 at the range, at most --v2x-range (default: no packet errors)")
         ->type_name("METRES")
         ->check(metres(true));
+    app.add_option("--gn-forwarding", gnForwarding,
+                   "GeoNetworking forwards geo-broadcasts (DENMs) through their\n"
+                   "area (contention-based) and towards it (greedy); off: one hop")
+        ->type_name("on|off")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                for (const char* word : {"on", "off", "true", "false", "1", "0"})
+                    if (text == word) return {};
+                return fmt::format("expects on or off, got '{}'", text);
+            },
+            ""))
+        ->default_str("on");
+    app.add_option("--gn-hop-limit", gnHopLimit, "hops a geo-broadcast may make (its first transmission counts)")
+        ->type_name("N")
+        ->check(numberWhere<unsigned>("1 to 255", [](unsigned n) { return n >= 1 && n <= 255; }))
+        ->capture_default_str();
     app.add_option("--penetration", penetration,
                    "share of vehicles with V2X equipment, drawn per vehicle id from\n"
                    "the seed (the same vehicles in every run with that seed); the\n"
@@ -354,6 +370,8 @@ bool CommandLine::messagesParquet() const {
 
 const std::map<std::string, std::string, std::less<>>& CommandLine::optionParameters() {
     static const std::map<std::string, std::string, std::less<>> names{
+        {"gn_forwarding", "--gn-forwarding"},
+        {"gn_hop_limit", "--gn-hop-limit"},
         {"middleware_interval", "--middleware-interval"},
         {"penetration", "--penetration"},
         {"v2x_fade_start", "--v2x-fade-start"},

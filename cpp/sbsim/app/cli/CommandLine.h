@@ -44,6 +44,8 @@ struct CommandLine {
     double v2xRange = 500;                          ///< m
     double v2xLatency = 0.001;                      ///< s
     std::optional<double> v2xFadeStart;             ///< m; none: no packet errors
+    bool gnForwarding = true;                       ///< GeoNetworking forwards geo-broadcasts (CBF, greedy)
+    unsigned gnHopLimit = 10;                       ///< a geo-broadcast's hop limit
     double penetration = 1.0;                       ///< share of vehicles with V2X equipment
     std::optional<std::filesystem::path> radio;     ///< 802.11p channel model settings (TOML); none: the disc
     std::optional<std::filesystem::path> messages;  ///< the message trace (JSON Lines; Parquet for *.parquet)

@@ -37,6 +37,12 @@ std::string JsonLinesTrace::format(const TraceRecord& l) {
         case Event::Denm:
             break;
     }
+    // A geo-broadcast's lines name its source and its hops (`sender` is the station that sent this
+    // frame: the source, or the forwarder).
+    if (l.geoBroadcast) {
+        s += fmt::format(R"(,"source":{},"hops":{})", jsonText(l.source), l.hops);
+        if (!l.nextHop.empty()) s += fmt::format(R"(,"next_hop":{})", jsonText(l.nextHop));
+    }
     for (const radio::TraceField& field : l.fields) {
         s += fmt::format(",{}:", jsonText(field.name));
         std::visit(

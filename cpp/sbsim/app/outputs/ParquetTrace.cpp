@@ -31,6 +31,9 @@ enum Fixed : std::size_t {
     kAction,
     kCause,
     kSubcause,
+    kSource,
+    kHops,
+    kNextHop,
     kMore,
     kFixed
 };
@@ -47,7 +50,8 @@ ParquetTrace::ParquetTrace(std::unique_ptr<storyboard::ParquetStream> stream, st
         {"y", Type::Float64},      {"cbr", Type::Float64},       {"distance", Type::Float64},
         {"delay", Type::Float64},  {"power_dbm", Type::Float64}, {"sinr_db", Type::Float64},
         {"reason", Type::String},  {"phase", Type::String},      {"action", Type::String},
-        {"cause", Type::Int64},    {"subcause", Type::Int64},    {"more", Type::String}};
+        {"cause", Type::Int64},    {"subcause", Type::Int64},    {"source", Type::String},
+        {"hops", Type::Int64},     {"next_hop", Type::String},   {"more", Type::String}};
     for (const auto& [name, type] : fixed) column(name, type);
 }
 
@@ -100,6 +104,11 @@ void ParquetTrace::append(const TraceRecord& l) {
             break;
         case Event::Denm:
             break;
+    }
+    if (l.geoBroadcast) {
+        put(kSource, std::string_view(l.source));
+        put(kHops, static_cast<std::int64_t>(l.hops));
+        if (!l.nextHop.empty()) put(kNextHop, std::string_view(l.nextHop));
     }
     nlohmann::json more;
     for (const radio::TraceField& field : l.fields) {

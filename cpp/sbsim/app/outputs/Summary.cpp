@@ -25,7 +25,8 @@ const char* endReasonText(traffic::SumoBridge::EndReason r) {
 }
 
 double meanReceivers(const radio::Medium::Counts& c) {
-    return c.sent == 0 ? 0.0 : static_cast<double>(c.delivered) / static_cast<double>(c.sent);
+    const std::uint64_t frames = c.sent + c.forwarded;
+    return frames == 0 ? 0.0 : static_cast<double>(c.delivered) / static_cast<double>(frames);
 }
 
 /// Distance bins (of 50 m) the text summary shows; the JSON has them all.
@@ -57,7 +58,12 @@ void printSummary(const RunFigures& f) {
         if (f.services->signalsWithoutServices() > 0)
             fmt::print("signals without services: {}\n", f.services->signalsWithoutServices());
         for (const auto& [type, counts] : f.medium->counts()) {
-            fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
+            if (counts.forwarded > 0) {
+                fmt::print("messages {}: sent {}, forwarded {}, delivered {}\n", type, counts.sent, counts.forwarded,
+                           counts.delivered);
+            } else {
+                fmt::print("messages {}: sent {}, delivered {}\n", type, counts.sent, counts.delivered);
+            }
             fmt::print("mean receivers {}: {:.2f}\n", type, meanReceivers(counts));
             if (!counts.linkStations.empty()) {
                 std::string ratios;
@@ -151,6 +157,7 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
                               {"delivered", counts.delivered},
                               {"mean_receivers", meanReceivers(counts)},
                               {"delivery_ratio", std::move(bins)}};
+            if (counts.forwarded > 0) messages[type]["forwarded"] = counts.forwarded;
         }
         if (const auto load = f.medium->loadFigures())
             out["channel_busy_ratio"] = {{"mean", load->meanCbr}, {"max", load->maxCbr}, {"samples", load->samples}};

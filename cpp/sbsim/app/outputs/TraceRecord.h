@@ -38,6 +38,11 @@ struct TraceRecord {
     std::string action;                                         ///< denm
     std::int64_t cause = 0;                                     ///< denm
     std::vector<radio::TraceField> fields;                      ///< the message's own (radio lines)
+    /// A geo-broadcast's GeoNetworking: its source, the transmissions so far including this frame's,
+    /// and the station a greedy forward addressed (radio lines of a GBC message only).
+    bool geoBroadcast = false;
+    std::string source, nextHop;
+    std::uint64_t hops = 0;
 
     static Event eventOf(radio::TraceLine::Event e) {
         return e == radio::TraceLine::Event::Tx   ? Event::Tx
@@ -63,6 +68,12 @@ struct TraceRecord {
         r.sinrDb = line.sinrDb;
         r.reason = line.reason;
         r.fields = line.message->traceFields();
+        if (const auto& gn = line.message->geonet(); gn.geoBroadcast()) {
+            r.geoBroadcast = true;
+            r.source = gn.source;
+            r.hops = gn.hops();
+            r.nextHop = gn.nextHop;
+        }
         return r;
     }
     static TraceRecord of(const facilities::DenmPhaseEvent& e) {

@@ -71,6 +71,8 @@ void Scenario::addServices(services::ServicesConfig config, kernel::SimTime inte
     if (trace != nullptr) medium_->setTrace(trace);
     services_->useStations(stations_);
     services_->setMedium(*medium_);
+    services_->setGeoNetworking(
+        {.forwarding = options_.gnForwarding, .hopLimit = static_cast<std::uint8_t>(options_.gnHopLimit), .cbf = {}});
     services_->setPenetration(penetration);
     services_->attach(sumo_);
     sumo_.demandColumns(services::ServiceManager::columns());
