@@ -355,3 +355,26 @@ def test_the_3gpp_path_loss_laws_are_radio_file_choices(tmp_path: Path, law: str
         assert all(-75 < line["power_dbm"] < -60 for line in rx)
     else:
         assert {line["reason"] for line in lines if line["event"] == "lost"} == {"sensing"}
+
+
+def test_dcc_state_changes_enter_the_trace(tmp_path: Path, radio_file: Path) -> None:
+    # 60 vehicles 5 m apart beaconing 500 bytes every 20 ms load the channel far past 0.19: their DCC
+    # leaves Relaxed, and each change is one dcc line naming the station, its new state, the busy
+    # ratio that moved it and the interval the state allows.
+    cfg = highway(tmp_path / "road", [5.0 * k for k in range(60)], 1.0, building=False, length=400.0)
+    (cfg.parent / "h.services.xml").write_text(
+        '<services><service type="Beacon" interval="0.02" bytes="500"/></services>'
+    )
+    messages = tmp_path / "messages.jsonl"
+    beacon_run(cfg, tmp_path, "--messages", str(messages), "--messages-events", "dcc", end=4.0)
+    lines = read_message_lines(messages)
+    assert lines and {line["event"] for line in lines} == {"dcc"}
+    intervals = {"relaxed": 0.06, "active1": 0.1, "active2": 0.18, "active3": 0.26, "active4": 0.34, "active5": 0.42}
+    last: dict[str, str] = {}
+    for line in lines:
+        assert line["state"] in (*intervals, "restrictive")
+        assert line["interval"] == pytest.approx(intervals.get(line["state"], 0.46))
+        assert line["state"] != last.get(line["station"], "relaxed"), "only changes are traced"
+        assert round(line["t"] * 10, 6) % 1 == 0, "at the 100 ms samples"
+        last[line["station"]] = line["state"]
+    assert len(last) > 30 and any(state != "relaxed" for state in last.values())

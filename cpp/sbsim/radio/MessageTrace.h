@@ -39,12 +39,23 @@ struct TraceLine {
     LossReason reason = LossReason::Propagation;  ///< lost
 };
 
+/// A station's DCC state changed (the channel model's congestion control, every 100 ms sample).
+struct DccChange {
+    kernel::SimTime t;
+    std::string_view station;
+    std::string_view state;    ///< DccStateMachine::name()
+    double cbr = 0;            ///< the sample that changed it
+    kernel::SimTime interval;  ///< the least time between two transmissions the new state allows
+};
+
 /// Where a medium reports what happened to each message. Lines may come with a time later than
 /// `now` (a disc-model reception after its latency); a trace writes them in time order.
 class SBSIM_API MessageTrace {
 public:
     virtual ~MessageTrace() = default;
     virtual void record(const TraceLine& line, kernel::SimTime now) = 0;
+    /// A station's DCC state changed at `change.t` = now (media without DCC never call it).
+    virtual void dccChanged(const DccChange& /*change*/) {}
 };
 
 }  // namespace sbsim::radio

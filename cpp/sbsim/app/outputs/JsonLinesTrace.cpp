@@ -13,6 +13,10 @@ std::string jsonText(std::string_view s) { return nlohmann::json(std::string(s))
 
 std::string JsonLinesTrace::format(const TraceRecord& l) {
     using Event = TraceRecord::Event;
+    if (l.event == Event::Dcc) {
+        return fmt::format(R"({{"t":{},"event":"dcc","station":{},"state":"{}","cbr":{:.4f},"interval":{}}})",
+                           l.t.str(), jsonText(l.station), l.phase, l.cbr.value_or(0), l.delay);
+    }
     if (l.event == Event::Denm) {
         return fmt::format(R"({{"t":{},"event":"denm","phase":"{}","station":{},"action":{},"cause":{}}})", l.t.str(),
                            l.phase, jsonText(l.station), jsonText(l.action), l.cause);
@@ -35,6 +39,7 @@ std::string JsonLinesTrace::format(const TraceRecord& l) {
             s += fmt::format(R"(,"distance":{:.2f},"reason":"{}")", l.distance, radio::lossReasonName(l.reason));
             break;
         case Event::Denm:
+        case Event::Dcc:
             break;
     }
     // A geo-broadcast's lines name its source and its hops (`sender` is the station that sent this

@@ -50,6 +50,12 @@ void MessageTraceFile::denmPhase(const facilities::DenmPhaseEvent& event) {
     emit(TraceRecord::of(event));
 }
 
+void MessageTraceFile::dccChanged(const radio::DccChange& change) {
+    if (truncatedAt_ || !filter_.keeps(MessageTraceFilter::Event::Dcc)) return;
+    writeUpTo(change.t);
+    emit(TraceRecord::of(change));
+}
+
 void MessageTraceFile::finish(kernel::SimTime end) {
     writeUpTo(end);
     pending_ = {};

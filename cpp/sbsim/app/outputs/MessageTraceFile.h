@@ -40,6 +40,9 @@ public:
     /// {"t":…,"event":"denm","phase":"new"|"update"|"terminate"|"expired","station":…,
     /// "action":"<station>:<sequence>","cause":…}, at the event's time (now).
     void denmPhase(const facilities::DenmPhaseEvent& event) override;
+    /// {"t":…,"event":"dcc","station":…,"state":"relaxed"|"active1"…"active5"|"restrictive",
+    /// "cbr":…,"interval":…}: a station's DCC state changed (channel model), at now.
+    void dccChanged(const radio::DccChange& change) override;
     /// At the end of the run (at `end`): writes the lines still waiting up to `end`, drops those
     /// after it (receptions the run ended before) and closes the format.
     void finish(kernel::SimTime end);

@@ -4,10 +4,9 @@ namespace sbsim::app {
 
 namespace {
 constexpr std::pair<std::string_view, MessageTraceFilter::Event> kEvents[] = {
-    {"tx", MessageTraceFilter::Event::Tx},
-    {"rx", MessageTraceFilter::Event::Rx},
-    {"lost", MessageTraceFilter::Event::Lost},
-    {"denm", MessageTraceFilter::Event::Denm},
+    {"tx", MessageTraceFilter::Event::Tx},     {"rx", MessageTraceFilter::Event::Rx},
+    {"lost", MessageTraceFilter::Event::Lost}, {"denm", MessageTraceFilter::Event::Denm},
+    {"dcc", MessageTraceFilter::Event::Dcc},
 };
 }  // namespace
 

@@ -13,7 +13,7 @@ namespace sbsim::app {
 /// written only when asked for.
 class MessageTraceFilter {
 public:
-    enum class Event { Tx, Rx, Lost, Denm };
+    enum class Event { Tx, Rx, Lost, Denm, Dcc };
 
     static std::optional<Event> eventNamed(std::string_view name);
     static std::string_view eventName(Event event);
@@ -34,7 +34,7 @@ public:
     const std::set<std::string, std::less<>>& types() const { return types_; }
 
 private:
-    std::set<Event> events_{Event::Tx, Event::Rx, Event::Denm};
+    std::set<Event> events_{Event::Tx, Event::Rx, Event::Denm, Event::Dcc};
     std::set<std::string, std::less<>> types_;
 };
 

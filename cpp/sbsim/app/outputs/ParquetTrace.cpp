@@ -31,6 +31,8 @@ enum Fixed : std::size_t {
     kAction,
     kCause,
     kSubcause,
+    kState,
+    kInterval,
     kSource,
     kHops,
     kNextHop,
@@ -44,14 +46,15 @@ constexpr std::size_t kBudgetEvery = 256;
 ParquetTrace::ParquetTrace(std::unique_ptr<storyboard::ParquetStream> stream, std::string what)
     : stream_(std::move(stream)), what_(std::move(what)) {
     const std::pair<const char*, Type> fixed[] = {
-        {"t", Type::Float64},      {"event", Type::String},      {"type", Type::String},
-        {"station", Type::String}, {"sender", Type::String},     {"seq", Type::Int64},
-        {"bytes", Type::Int64},    {"frame_bytes", Type::Int64}, {"x", Type::Float64},
-        {"y", Type::Float64},      {"cbr", Type::Float64},       {"distance", Type::Float64},
-        {"delay", Type::Float64},  {"power_dbm", Type::Float64}, {"sinr_db", Type::Float64},
-        {"reason", Type::String},  {"phase", Type::String},      {"action", Type::String},
-        {"cause", Type::Int64},    {"subcause", Type::Int64},    {"source", Type::String},
-        {"hops", Type::Int64},     {"next_hop", Type::String},   {"more", Type::String}};
+        {"t", Type::Float64},        {"event", Type::String},      {"type", Type::String},
+        {"station", Type::String},   {"sender", Type::String},     {"seq", Type::Int64},
+        {"bytes", Type::Int64},      {"frame_bytes", Type::Int64}, {"x", Type::Float64},
+        {"y", Type::Float64},        {"cbr", Type::Float64},       {"distance", Type::Float64},
+        {"delay", Type::Float64},    {"power_dbm", Type::Float64}, {"sinr_db", Type::Float64},
+        {"reason", Type::String},    {"phase", Type::String},      {"action", Type::String},
+        {"cause", Type::Int64},      {"subcause", Type::Int64},    {"state", Type::String},
+        {"interval", Type::Float64}, {"source", Type::String},     {"hops", Type::Int64},
+        {"next_hop", Type::String},  {"more", Type::String}};
     for (const auto& [name, type] : fixed) column(name, type);
 }
 
@@ -74,7 +77,11 @@ void ParquetTrace::append(const TraceRecord& l) {
     put(kT, l.t.seconds());
     put(kEvent, MessageTraceFilter::eventName(l.event));
     put(kStation, std::string_view(l.station));
-    if (l.event == Event::Denm) {
+    if (l.event == Event::Dcc) {
+        put(kState, l.phase);
+        put(kCbr, l.cbr.value_or(0));
+        put(kInterval, l.delay);
+    } else if (l.event == Event::Denm) {
         put(kPhase, l.phase);
         put(kAction, std::string_view(l.action));
         put(kCause, std::int64_t{l.cause});
@@ -103,6 +110,7 @@ void ParquetTrace::append(const TraceRecord& l) {
             put(kReason, radio::lossReasonName(l.reason));
             break;
         case Event::Denm:
+        case Event::Dcc:
             break;
     }
     if (l.geoBroadcast) {

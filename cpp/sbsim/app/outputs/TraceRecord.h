@@ -76,6 +76,16 @@ struct TraceRecord {
         }
         return r;
     }
+    static TraceRecord of(const radio::DccChange& c) {
+        TraceRecord r;
+        r.event = Event::Dcc;
+        r.t = c.t;
+        r.station = c.station;
+        r.phase = c.state;  // a static name, as a DENM's phase
+        r.cbr = c.cbr;
+        r.delay = c.interval.seconds();
+        return r;
+    }
     static TraceRecord of(const facilities::DenmPhaseEvent& e) {
         TraceRecord r;
         r.event = Event::Denm;

@@ -56,7 +56,14 @@ void ChannelMedium::handleMessage(kernel::Message& msg) {
         case kEnd:
             return endTransmission(static_cast<EndTimer&>(msg).tx);
         case kLoad:
-            load_.sample(simTime(), stations_.present);
+            load_.sample(simTime(), stations_.present, dccChanged_);
+            if (trace() != nullptr) {
+                for (const Slot s : dccChanged_) {
+                    const DccStateMachine& dcc = load_.dcc(s);
+                    trace()->dccChanged(
+                        {simTime(), stations_.ids[s], dcc.name(), load_.busyRatio(s), dcc.transmissionInterval()});
+                }
+            }
             budget_.forget(simTime());
             return scheduleAfter(DccStateMachine::kSampling, msg);
         default:

@@ -88,6 +88,7 @@ private:
     ChannelStations stations_;
     Reception reception_;  // before the budget: the settings are checked as it is built
     LinkBudget budget_;
+    std::vector<Slot> dccChanged_;  // the last load sample's
 
     std::unordered_map<std::uint64_t, std::unique_ptr<Transmission>> active_;
     /// Ended transmissions kept for reuse: their link vectors stay allocated and warm in the cache

@@ -79,4 +79,17 @@ kernel::SimTime DccStateMachine::transmissionInterval() const {
     return kernel::SimTime::fromMilliseconds(kActiveIntervalMs[substate_]);
 }
 
+std::string_view DccStateMachine::name() const {
+    static constexpr std::string_view kActive[] = {"active1", "active2", "active3", "active4", "active5"};
+    switch (state_) {
+        case State::Relaxed:
+            return "relaxed";
+        case State::Active:
+            return kActive[substate_];
+        case State::Restrictive:
+            break;
+    }
+    return "restrictive";
+}
+
 }  // namespace sbsim::radio

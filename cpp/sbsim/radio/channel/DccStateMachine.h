@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string_view>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
@@ -25,6 +26,8 @@ public:
     State state() const { return state_; }
     /// 0 to 4 within Active (Active 1 to 5).
     std::size_t activeSubstate() const { return substate_; }
+    /// "relaxed", "active1" … "active5" or "restrictive" (the message trace's dcc lines).
+    std::string_view name() const;
     /// The least time between two transmissions the state allows.
     kernel::SimTime transmissionInterval() const;
     double smoothedLoad() const { return smoothed_; }

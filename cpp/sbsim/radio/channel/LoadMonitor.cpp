@@ -20,7 +20,8 @@ void LoadMonitor::setBusy(Slot s, bool busy, kernel::SimTime now) {
     busySince_[s] = now;
 }
 
-void LoadMonitor::sample(kernel::SimTime now, const std::vector<std::uint8_t>& present) {
+void LoadMonitor::sample(kernel::SimTime now, const std::vector<std::uint8_t>& present, std::vector<Slot>& changed) {
+    changed.clear();
     for (Slot s = 0; s < size(); ++s) {
         if (busy_[s]) {
             busyNs_[s] += (now - busySince_[s]).raw();
@@ -29,7 +30,9 @@ void LoadMonitor::sample(kernel::SimTime now, const std::vector<std::uint8_t>& p
         const kernel::SimTime window = now - windowStart_[s];
         if (present[s] && window > kernel::SimTime::zero()) {
             cbr_[s] = static_cast<double>(busyNs_[s]) / static_cast<double>(window.raw());
+            const std::string_view before = dcc_[s].name();
             dcc_[s].update(cbr_[s]);
+            if (dcc_[s].name() != before) changed.push_back(s);
             if (!figures_) figures_.emplace();
             ++figures_->samples;
             cbrSum_ += cbr_[s];

@@ -23,8 +23,9 @@ public:
     /// The station's channel counts busy (or idle) from `now` on.
     void setBusy(Slot s, bool busy, kernel::SimTime now);
     /// Closes every station's window at `now` (every DccStateMachine::kSampling): stations present
-    /// in the last snapshot get a ratio, feed their DCC and count in the figures.
-    void sample(kernel::SimTime now, const std::vector<std::uint8_t>& present);
+    /// in the last snapshot get a ratio, feed their DCC and count in the figures. The stations
+    /// whose DCC state changed go into `changed` (cleared first), in slot order.
+    void sample(kernel::SimTime now, const std::vector<std::uint8_t>& present, std::vector<Slot>& changed);
 
     double busyRatio(Slot s) const { return cbr_[s]; }
     const DccStateMachine& dcc(Slot s) const { return dcc_[s]; }
