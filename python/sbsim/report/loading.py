@@ -113,7 +113,7 @@ def load_fcd(path: str | os.PathLike[str], fallback_step: float = 1.0) -> pd.Dat
 
 
 #: The trace's columns the V2X panels read (:mod:`sbsim.report.v2x`).
-MESSAGE_COLUMNS = ("t", "event", "type", "station", "sender", "distance", "cbr")
+MESSAGE_COLUMNS = ("t", "event", "type", "station", "sender", "distance", "cbr", "phase", "action")
 
 
 def load_messages(path: str | os.PathLike[str]) -> pd.DataFrame:
