@@ -25,6 +25,17 @@ def read_denm(path: Path) -> list[dict]:
     return [line for line in read_message_lines(path) if line["event"] == "denm"]
 
 
+def fcd_heard(denm: list[dict], fcd: FcdTrace) -> list[tuple[str, float]]:
+    """(station, FCD step) of each vehicle's first DENM memory entry, where the FCD has it."""
+    out = []
+    for d in denm:
+        if d["phase"] == "new" and d["station"] != "crash":
+            step = round(math.ceil(d["t"] / STEP) * STEP, 3)
+            if step in fcd.pos.get(d["station"], {}):
+                out.append((d["station"], step))
+    return out
+
+
 def run_motorway(
     tmp_path: Path, story: Path, services: Path, *extra: str
 ) -> tuple[RunResult, list[dict], FcdTrace, list[dict]]:
@@ -219,7 +230,11 @@ def test_denm_condition_ahead_caps_only_the_vehicles_driving_towards_the_event(t
     heard = {d["station"] for d in denm if d["phase"] == "new" and d["station"] != "crash"}
     activations = [(e["vehicle"], e["t"]) for e in events if e["story"] == "warned" and e["type"] == "activate"]
     assert activations and {v for v, _ in activations} < heard
-    crash_x = fcd.pos["crash"][45.0][0]
+    # The event is where the crash car was when its DENM went out (~40 s; it stops some 50 m on):
+    # forwarded through the 1,000 m area, the DENM reaches vehicles beyond 800 m too, which the
+    # condition leaves out (one step's travel, 18 m, of slack for the positions' times).
+    event = fcd.pos["crash"][40.0]
     for vehicle, t in activations:
         x = fcd.pos[vehicle][t][0]
-        assert crash_x - 805 <= x < crash_x, (vehicle, t, x, crash_x)
+        assert x < event[0] and math.dist(fcd.pos[vehicle][t], event) <= 800 + 18, (vehicle, t, x, event)
+    assert any(math.dist(fcd.pos[v][t], event) > 820 for v, t in fcd_heard(denm, fcd)), "heard beyond 800 m too"
