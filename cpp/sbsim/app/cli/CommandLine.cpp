@@ -234,8 +234,8 @@ void CommandLine::declareOptions(CLI::App& app) {
             },
             ""));
     app.add_option("--messages-events", messagesEvents,
-                   "the trace keeps only these events: tx, rx, lost, denm\n"
-                   "(default: tx,rx,denm; lost receptions only when named here,\n"
+                   "the trace keeps only these events: tx, rx, lost, denm, dcc\n"
+                   "(default: tx,rx,denm,dcc; lost receptions only when named here,\n"
                    "or with --messages-range)")
         ->type_name("EVENT,...")
         ->delimiter(',')

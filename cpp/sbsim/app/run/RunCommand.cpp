@@ -71,7 +71,7 @@ MessageTraceFilter traceFilter(const CommandLine& cl) {
         filter.setEvents(events);
     } else if (cl.messagesLost()) {
         filter.setEvents({MessageTraceFilter::Event::Tx, MessageTraceFilter::Event::Rx, MessageTraceFilter::Event::Lost,
-                          MessageTraceFilter::Event::Denm});
+                          MessageTraceFilter::Event::Denm, MessageTraceFilter::Event::Dcc});
     }
     filter.setTypes({cl.messagesTypes.begin(), cl.messagesTypes.end()});
     return filter;
