@@ -20,7 +20,7 @@ from pathlib import Path
 
 from benchlib import ROOT, sbsim, timed
 from sbsim.fcd import read_timesteps
-from sbsim.messages import read_messages
+from sbsim.messages import read_message_lines
 
 SCENARIO = ROOT / "stories" / "motorway-accident"
 AREA = 1000.0  # den-use-cases.xml: area="1000"
@@ -50,7 +50,7 @@ def measure(out: Path, forwarding: str, end: float, radio: Path | None) -> dict[
     if radio is not None:
         cmd += ["--radio", str(radio)]
     run = timed(cmd)
-    lines = read_messages(messages)
+    lines = read_message_lines(messages)
     positions = {s.t: {v.vehicle: (v.x, v.y) for v in s.vehicles} for s in read_timesteps(fcd, STEP)}
     times = sorted(positions)
 

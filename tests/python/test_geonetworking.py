@@ -13,7 +13,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from sbsim.runner import read_messages, run
+from sbsim.runner import read_message_lines, run
 from sbsim.sumo import sumo_binary
 from sbsim_helpers import assert_bad_input, assert_no_crash, message_counts, write_story
 
@@ -59,7 +59,7 @@ def denm_run(cfg: Path, out: Path, *extra: str, story: Path | None = None) -> tu
     )
     assert_no_crash(result)
     assert result.returncode == 0, result.stderr
-    return read_messages(messages), result.stdout
+    return read_message_lines(messages), result.stdout
 
 
 def warned(lines: list[dict]) -> set[str]:

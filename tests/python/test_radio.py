@@ -178,7 +178,7 @@ def test_bad_radio_files_are_one_line_errors(tmp_path: Path) -> None:
     cases = {
         "[phy]\npower = 23\n": "[phy] power: is not a radio setting",
         "[phy]\nrate_mbps = 7\n": "rate_mbps must be one of",
-        '[propagation]\npath_loss = "moon"\n': "path_loss: must be free-space",
+        '[propagation]\npath_loss = "moon"\n': "path_loss: must be 3gpp-highway, 3gpp-urban, 3gpp-urban-nlos, free-space",
         '[frame]\nsecurity = "maybe"\n': "[frame] security: must be signed or none",
         "[phy\n": "radio.toml:1",
     }
@@ -282,7 +282,7 @@ def test_frames_carry_their_headers_and_a_signature_with_the_certificate_once_a_
     cfg = highway(tmp_path / "road", [50.0, 200.0], 1.0, building=False)
     messages = tmp_path / "messages.jsonl"
     beacon_run(cfg, tmp_path, "--messages", str(messages), end=4.0)
-    tx = [line for line in read_messages(messages) if line["event"] == "tx"]
+    tx = [line for line in read_message_lines(messages) if line["event"] == "tx"]
     assert {line["bytes"] for line in tx} == {190}
     assert {line["frame_bytes"] for line in tx} == {366, 508}
     for station in ("v0000", "v0001"):
@@ -298,7 +298,7 @@ def test_frames_carry_their_headers_and_a_signature_with_the_certificate_once_a_
     # Unsecured: the headers alone.
     (tmp_path / "radio.toml").write_text('[frame]\nsecurity = "none"\n')
     beacon_run(cfg, tmp_path, "--messages", str(messages), end=1.0)
-    tx = [line for line in read_messages(messages) if line["event"] == "tx"]
+    tx = [line for line in read_message_lines(messages) if line["event"] == "tx"]
     assert tx and {line["frame_bytes"] for line in tx} == {190 + 82}
 
 
@@ -314,11 +314,13 @@ def test_losses_come_in_bursts_with_correlated_shadowing(tmp_path: Path, radio_f
         tmp_path,
         "--messages",
         str(messages),
+        "--messages-events",
+        "tx,rx,lost",
         "--param",
         f"radio_shadowing_correlation_m={correlation}",
         end=80.0,
     )
-    lines = read_messages(messages)
+    lines = read_message_lines(messages)
     outcome: dict[int, bool] = {}  # v0000's frames at v0001: lost?
     for line in lines:
         if line["event"] in ("rx", "lost") and line["sender"] == "v0000" and line["station"] == "v0001":
@@ -347,8 +349,8 @@ def test_the_3gpp_path_loss_laws_are_radio_file_choices(tmp_path: Path, law: str
     (tmp_path / "radio.toml").write_text(f'[propagation]\npath_loss = "{law}"\nshadowing_sigma_db = 0\n')
     cfg = highway(tmp_path / "road", [50.0, 200.0], 1.0, building=False)
     messages = tmp_path / "messages.jsonl"
-    beacon_run(cfg, tmp_path, "--messages", str(messages), end=1.0)
-    lines = read_messages(messages)
+    beacon_run(cfg, tmp_path, "--messages", str(messages), "--messages-events", "tx,rx,lost", end=1.0)
+    lines = read_message_lines(messages)
     rx = [line for line in lines if line["event"] == "rx"]
     assert bool(rx) == reaches
     if reaches:

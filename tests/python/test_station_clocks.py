@@ -63,7 +63,10 @@ def traced_run(cfg: Path, services: Path, out: Path, *sumo_options: str) -> list
 
 
 def per_station(sent: list[dict], kind: str, t0: float, t1: float) -> Counter[str]:
-    return Counter(line["station"] for line in sent if line["type"] == kind and t0 <= line["t"] < t1)
+    """Each station's own messages of `kind` sent in [t0, t1) (GeoNetworking's forwards left out)."""
+    return Counter(
+        line["station"] for line in sent if line["type"] == kind and t0 <= line["t"] < t1 and line.get("hops", 1) == 1
+    )
 
 
 @pytest.fixture(scope="module")
