@@ -62,7 +62,7 @@ RADIO = {
     "[phy]\npower = 23\n": "[phy] power: is not a radio setting",
     "[phy]\nrate_mbps = 7\n": "rate_mbps must be one of",
     '[phy]\npower_dbm = "high"\n': "power_dbm: must be a number",
-    '[propagation]\npath_loss = "moon"\n': "path_loss: must be 3gpp-highway, 3gpp-urban, 3gpp-urban-nlos, free-space",
+    '[propagation]\npath_loss = "moon"\n': "path_loss: must be 3gpp-highway, 3gpp-urban, 3gpp-urban-nlos, free-",
     "[phy\n": "radio.toml:1",
     # A misspelt type used to take every building away in silence.
     '[obstacles]\npolygon_type = "buildings"\n': "polygon_type 'buildings' matches no polygon",

@@ -3,9 +3,8 @@ in the summary (text and JSON), --junit (read with an XML parser), exit code 3, 
 
 from __future__ import annotations
 
-import re
-
 import json
+import re
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 from pathlib import Path
