@@ -15,7 +15,7 @@ std::string JsonLinesTrace::format(const TraceRecord& l) {
     using Event = TraceRecord::Event;
     if (l.event == Event::Dcc) {
         return fmt::format(R"({{"t":{},"event":"dcc","station":{},"state":"{}","cbr":{:.4f},"interval":{}}})",
-                           l.t.str(), jsonText(l.station), l.phase, l.cbr.value_or(0), l.delay);
+                           l.t.str(), jsonText(l.station), l.dccState, l.cbr.value_or(0), l.dccInterval);
     }
     if (l.event == Event::Denm) {
         return fmt::format(R"({{"t":{},"event":"denm","phase":"{}","station":{},"action":{},"cause":{}}})", l.t.str(),

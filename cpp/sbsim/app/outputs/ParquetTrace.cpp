@@ -78,9 +78,9 @@ void ParquetTrace::append(const TraceRecord& l) {
     put(kEvent, MessageTraceFilter::eventName(l.event));
     put(kStation, std::string_view(l.station));
     if (l.event == Event::Dcc) {
-        put(kState, l.phase);
+        put(kState, l.dccState);
         put(kCbr, l.cbr.value_or(0));
-        put(kInterval, l.delay);
+        put(kInterval, l.dccInterval);
     } else if (l.event == Event::Denm) {
         put(kPhase, l.phase);
         put(kAction, std::string_view(l.action));

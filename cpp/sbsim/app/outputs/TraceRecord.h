@@ -35,6 +35,8 @@ struct TraceRecord {
     std::optional<double> powerDbm, sinrDb;                     ///< rx, channel model only
     radio::LossReason reason = radio::LossReason::Propagation;  ///< lost
     std::string_view phase;                                     ///< denm (a static name)
+    std::string_view dccState;                                  ///< dcc (a static name)
+    double dccInterval = 0;                                     ///< dcc, s
     std::string action;                                         ///< denm
     std::int64_t cause = 0;                                     ///< denm
     std::vector<radio::TraceField> fields;                      ///< the message's own (radio lines)
@@ -81,9 +83,9 @@ struct TraceRecord {
         r.event = Event::Dcc;
         r.t = c.t;
         r.station = c.station;
-        r.phase = c.state;  // a static name, as a DENM's phase
+        r.dccState = c.state;
         r.cbr = c.cbr;
-        r.delay = c.interval.seconds();
+        r.dccInterval = c.interval.seconds();
         return r;
     }
     static TraceRecord of(const facilities::DenmPhaseEvent& e) {

@@ -30,9 +30,10 @@ void LoadMonitor::sample(kernel::SimTime now, const std::vector<std::uint8_t>& p
         const kernel::SimTime window = now - windowStart_[s];
         if (present[s] && window > kernel::SimTime::zero()) {
             cbr_[s] = static_cast<double>(busyNs_[s]) / static_cast<double>(window.raw());
-            const std::string_view before = dcc_[s].name();
+            const auto state = dcc_[s].state();
+            const std::size_t substate = dcc_[s].activeSubstate();
             dcc_[s].update(cbr_[s]);
-            if (dcc_[s].name() != before) changed.push_back(s);
+            if (dcc_[s].state() != state || dcc_[s].activeSubstate() != substate) changed.push_back(s);
             if (!figures_) figures_.emplace();
             ++figures_->samples;
             cbrSum_ += cbr_[s];
