@@ -77,6 +77,10 @@ void printSummary(const RunFigures& f) {
         }
         if (const auto load = f.medium->loadFigures())
             fmt::print("channel busy ratio: mean {:.4f}, max {:.4f}\n", load->meanCbr, load->maxCbr);
+        if (const auto links = f.medium->linkFigures()) {
+            fmt::print("links: {} drawn in full, {} interference only, {} skipped below the floor\n", links->full,
+                       links->interference, links->skipped);
+        }
     }
     if (f.messageTrace && f.messageTrace->truncatedAt) {
         fmt::print("message trace: truncated at t={} s (--messages-max-bytes {})\n", f.messageTrace->truncatedAt->str(),
@@ -161,6 +165,10 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         }
         if (const auto load = f.medium->loadFigures())
             out["channel_busy_ratio"] = {{"mean", load->meanCbr}, {"max", load->maxCbr}, {"samples", load->samples}};
+        if (const auto links = f.medium->linkFigures()) {
+            out["links"] = {
+                {"full", links->full}, {"interference", links->interference}, {"skipped", links->skipped}};
+        }
     }
     out["messages"] = std::move(messages);
     if (f.messageTrace) {

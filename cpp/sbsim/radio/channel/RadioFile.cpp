@@ -52,6 +52,7 @@ std::map<std::string, NumberKey, std::less<>> makeNumberKeys() {
         {"delay_min_s", {"latency", [](Settings& s, double v) { s.delayMin = v; }}},
         {"delay_max_s", {"latency", [](Settings& s, double v) { s.delayMax = v; }}},
         {"delay_shape", {"latency", [](Settings& s, double v) { s.delayShape = v; }}},
+        {"tier_margin_db", {"performance", [](Settings& s, double v) { s.tierMarginDb = v; }}},
         {"links_per_chunk",
          {"performance", [](Settings& s, double v) { s.linksPerChunk = static_cast<std::size_t>(std::max(v, 0.0)); }}},
     };
@@ -100,6 +101,12 @@ const std::map<std::string, TextKey, std::less<>>& textKeys() {
               const auto it = models.find(v);
               if (it == models.end()) throw std::invalid_argument("must be none, constant, uniform or gamma");
               s.extraDelay = it->second;
+          }}},
+        {"link_budget",
+         {"performance",
+          [](Settings& s, const std::string& v) {
+              if (v != "tiers" && v != "exact") throw std::invalid_argument("must be tiers or exact");
+              s.linkTiers = v == "tiers";
           }}},
         {"security",
          {"frame",
