@@ -70,8 +70,10 @@ def main() -> None:
                 curves[mode].append(run(c, args.seconds, Path(tmp), args.threads, seed, extra))
                 seconds[mode] += time.perf_counter() - began
     exact, tiers = pooled(curves["exact"]), pooled(curves["tiers"])
-    print(f"β = {c.density} veh/m, {c.hz:g} Hz, {args.seconds:g} s x {args.seeds} seeds; mean CBR exact "
-          f"{exact['cbr']:.3f}, tiers {tiers['cbr']:.3f}")
+    print(
+        f"β = {c.density} veh/m, {c.hz:g} Hz, {args.seconds:g} s x {args.seeds} seeds; mean CBR exact "
+        f"{exact['cbr']:.3f}, tiers {tiers['cbr']:.3f}"
+    )
     print(f"\n{'metres':>6} {'exact':>7} {'tiers':>7} {'diff':>7} {'links':>9}")
     worst = 0.0
     for k, d in enumerate(DISTANCES):
@@ -82,8 +84,10 @@ def main() -> None:
         print(f"{d:6.0f} {a:7.4f} {b:7.4f} {b - a:+7.4f} {exact['links'][k]:9d}")
     print(f"\nlargest difference per 25 m bin: {worst:.4f} (bound 0.01): {'within' if worst <= 0.01 else 'OUTSIDE'}")
     neglected = neglected_dbm(c.density, c.hz)
-    print(f"cutoff {cutoff_m():.0f} m; neglected interference beyond it: {neglected:.1f} dBm, "
-          f"{NOISE - neglected:.1f} dB below the noise ({NOISE:g} dBm; bound: more than 10 dB)")
+    print(
+        f"cutoff {cutoff_m():.0f} m; neglected interference beyond it: {neglected:.1f} dBm, "
+        f"{NOISE - neglected:.1f} dB below the noise ({NOISE:g} dBm; bound: more than 10 dB)"
+    )
     print(f"wall seconds of all runs: exact {seconds['exact']:.1f}, tiers {seconds['tiers']:.1f}")
 
 

@@ -29,13 +29,10 @@ LinkBudget::LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Ob
     fading_.veinsDistanceRule = settings_.fading == ChannelSettings::Fading::NakagamiVeins;
     // The cutoff: where the mean power plus a margin for shadowing (2 σ) and fading falls below
     // the floor. Path loss grows with distance, so double, then bisect.
-    floorMarginDb_ =
-        2 * settings_.shadowingSigmaDb + (settings_.fading == ChannelSettings::Fading::None ? 0.0 : 5.0);
+    floorMarginDb_ = 2 * settings_.shadowingSigmaDb + (settings_.fading == ChannelSettings::Fading::None ? 0.0 : 5.0);
     // E[10^(σZ/10)] = exp((σ ln10 / 10)² / 2): an interference-only link adds its mean in mW.
     meanGainDb_ = settings_.shadowingSigmaDb * settings_.shadowingSigmaDb * std::log(10.0) / 20;
-    const auto above = [&](double d) {
-        return meanPowerDbm(d) + floorMarginDb_ >= settings_.interferenceFloorDbm;
-    };
+    const auto above = [&](double d) { return meanPowerDbm(d) + floorMarginDb_ >= settings_.interferenceFloorDbm; };
     double lo = 1;
     double hi = 2;
     while (above(hi) && hi < 1e5) {

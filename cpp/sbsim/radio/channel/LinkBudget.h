@@ -67,12 +67,12 @@ private:
         std::optional<kernel::SimTime> at;  // the snapshot they were computed for
         std::vector<Slot> receivers;
         std::vector<double> distance, meanDbm;
-        std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
-        std::vector<std::uint32_t> bin;  // distance / kDistanceBin
-        std::vector<double> dbm, mw;     // per link, the power of an interference-only link
-        std::vector<std::uint32_t> full;      // the links drawn per frame (every one without tiers)
-        std::vector<std::uint64_t> fullKey;   // their receivers' keys, contiguous
-        std::uint64_t skipped = 0;            // within the cutoff but below the floor (obstacles)
+        std::vector<std::uint64_t> key;      // the receivers' CounterRandom keys, contiguous
+        std::vector<std::uint32_t> bin;      // distance / kDistanceBin
+        std::vector<double> dbm, mw;         // per link, the power of an interference-only link
+        std::vector<std::uint32_t> full;     // the links drawn per frame (every one without tiers)
+        std::vector<std::uint64_t> fullKey;  // their receivers' keys, contiguous
+        std::uint64_t skipped = 0;           // within the cutoff but below the floor (obstacles)
         /// The full links' shadowing pairs, looked up at the step's first frame (a generation of
         /// CorrelatedShadowing: a sweep that freed pairs makes them stale).
         std::vector<CorrelatedShadowing::Index> pair;
@@ -93,8 +93,8 @@ private:
     NakagamiFading fading_;
     std::unique_ptr<CorrelatedShadowing> shadowing_;  // null: drawn per frame
     double cutoff_ = 0;
-    double floorMarginDb_ = 0;   // the cutoff's margin for shadowing and fading
-    double meanGainDb_ = 0;      // shadowing's linear mean, in dB: σ² ln10 / 20
+    double floorMarginDb_ = 0;  // the cutoff's margin for shadowing and fading
+    double meanGainDb_ = 0;     // shadowing's linear mean, in dB: σ² ln10 / 20
 
     std::vector<Neighbourhood> near_;
     std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for
