@@ -431,7 +431,7 @@ std::string readFile(const std::filesystem::path& path) {
 
 // A DenService's use cases: its `useCases` file (relative to the services file), else
 // den-use-cases.xml beside the services file, else none listed (all run).
-void attachUseCases(ServiceSpec& spec) {
+void attachUseCases(ServiceSpec& spec, std::vector<std::filesystem::path>& files) {
     const std::filesystem::path dir = std::filesystem::path(spec.source).parent_path();
     std::filesystem::path file;
     if (const auto named = spec.parameter("useCases")) {
@@ -441,6 +441,7 @@ void attachUseCases(ServiceSpec& spec) {
         if (!std::filesystem::exists(dir / "den-use-cases.xml", ec)) return;
         file = dir / "den-use-cases.xml";
     }
+    if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
     auto useCases = readSpecs(readFile(file), file.string(), "usecases", "usecase");
     for (const ServiceSpec& u : useCases) {
         if (!isUseCase(u.type)) {
@@ -460,10 +461,11 @@ void attachUseCases(ServiceSpec& spec) {
 }
 
 std::vector<ServiceSpec> readServices(std::string_view text, const std::string& source,
-                                      std::vector<RoadsideUnitSpec>& roadsideUnits) {
+                                      std::vector<RoadsideUnitSpec>& roadsideUnits,
+                                      std::vector<std::filesystem::path>& files) {
     std::vector<ServiceSpec> out = readSpecs(text, source, "services", "service", &roadsideUnits);
     for (ServiceSpec& spec : out) {
-        if (spec.type == "DenService") attachUseCases(spec);
+        if (spec.type == "DenService") attachUseCases(spec, files);
     }
     return out;
 }
@@ -532,7 +534,7 @@ bool ServiceSpec::boolean(std::string_view name, bool fallback) const {
 
 ServicesConfig ServicesConfig::parse(std::string_view text, const std::string& source) {
     ServicesConfig config;
-    config.services_ = readServices(text, source, config.roadsideUnits_);
+    config.services_ = readServices(text, source, config.roadsideUnits_, config.otherFiles_);
     return config;
 }
 

@@ -115,6 +115,7 @@ int RunCommand::run(const CommandLine& cl) {
     const std::vector<std::unique_ptr<PluginLibrary>> plugins = loadPlugins(cl.plugins, files);
     std::optional<services::ServicesConfig> servicesConfig;
     if (cl.services) servicesConfig = loadServicesConfig(*cl.services, files);
+    checkRadioInput(cl, files);
     // Opened once every input is known, so it can be none of them; before SUMO loads, so a path
     // it cannot write fails at once.
     std::optional<OutputFile> events;
@@ -126,7 +127,6 @@ int RunCommand::run(const CommandLine& cl) {
         if (!cl.services) throw UsageError("--messages: there are no messages without --services");
         messages.emplace("--messages", *cl.messages, files);
     }
-    checkRadioInput(cl, files);
     std::optional<OutputFile> statisticsFile;
     if (cl.statistics) statisticsFile.emplace("--statistics", *cl.statistics, files);
     std::optional<OutputFile> junit;
