@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "sbsim/services/ServiceAttributes.h"
 #include "sbsim/services/den/UseCaseFactory.h"
 
 namespace sbsim::services {
@@ -453,6 +454,7 @@ void attachUseCases(ServiceSpec& spec, std::vector<std::filesystem::path>& files
         }
     }
     for (const ServiceSpec& u : useCases) {
+        checkAttributes(u);
         const auto signal = u.parameter("signal");
         if (u.type == "StoryboardEvent" && (!signal || trimmed(*signal).empty()))
             fail(u.source, u.line, "the StoryboardEvent use case needs a 'signal' attribute");
@@ -464,6 +466,10 @@ std::vector<ServiceSpec> readServices(std::string_view text, const std::string& 
                                       std::vector<RoadsideUnitSpec>& roadsideUnits,
                                       std::vector<std::filesystem::path>& files) {
     std::vector<ServiceSpec> out = readSpecs(text, source, "services", "service", &roadsideUnits);
+    for (const ServiceSpec& spec : out) checkAttributes(spec);
+    for (const RoadsideUnitSpec& rsu : roadsideUnits) {
+        for (const ServiceSpec& spec : rsu.services) checkAttributes(spec);
+    }
     for (ServiceSpec& spec : out) {
         if (spec.type == "DenService") attachUseCases(spec, files);
     }
