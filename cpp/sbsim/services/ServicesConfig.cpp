@@ -314,13 +314,17 @@ ServiceSpec parseService(const XMLElement& element, const std::string& source, I
     return spec;
 }
 
-// A coordinate attribute: a finite number.
+// A coordinate attribute: a number on the map (no network is wider than 10,000 km; the units'
+// grid and the distances squared stay finite).
+constexpr double kMaxCoordinate = 1e7;
 double coordinate(const std::string& value, std::string_view name, const std::string& source, int line) {
     const std::string_view text = trimmed(value);
     double out = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(out)) {
-        fail(source, line, "attribute '" + std::string(name) + "' of <rsu> must be a number, got '" + value + "'");
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !(std::abs(out) <= kMaxCoordinate)) {
+        fail(source, line,
+             fmt::format("attribute '{}' of <rsu> must be a number from {:g} to {:g} m, got '{}'", name,
+                         -kMaxCoordinate, kMaxCoordinate, value));
     }
     return out;
 }
