@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -237,3 +238,21 @@ def test_radio_mistakes_of_the_study_file_end_it_before_the_first_run(
     with pytest.raises(study.StudyError, match=r"radio_queue_limit=2\.5: .*queue_limit: must be a whole number"):
         study.run(spec, workers=1, progress=False)
     assert not (spec.directory / "runs").exists()
+
+
+def test_the_command_refuses_a_radio_value_before_making_any_folder(
+    trips_cfg: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "s.xml").write_text('<services><service type="CaService"/></services>\n', encoding="utf-8")
+    (tmp_path / "radio.toml").write_text("[mac]\naifsn = 3\n", encoding="utf-8")
+    (tmp_path / "study.toml").write_text(
+        f'sumocfg = "{trips_cfg}"\nservices = "s.xml"\nradio = "radio.toml"\nseeds = [1, 2]\n'
+        "[parameters]\nradio_aifsn = [2, 99]\n",
+        encoding="utf-8",
+    )
+    assert study.main([str(tmp_path / "study.toml")]) == 2
+    [line] = capsys.readouterr().err.splitlines()
+    assert re.fullmatch(
+        r"study: radio_aifsn=99: --param radio_aifsn: must be a whole number from 1 to 15, got 99", line
+    )
+    assert not (tmp_path / "results").exists()
