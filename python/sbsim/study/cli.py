@@ -10,7 +10,8 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from sbsim.extras import missing_message
-from sbsim.study.execution import StudyInterrupted, run
+from sbsim.runner import executable
+from sbsim.study.execution import StudyInterrupted, check_radio, run
 from sbsim.study.spec import StudyError, StudySpec
 from sbsim.study.tables import plot, plot_column
 
@@ -55,12 +56,14 @@ def main(argv: Sequence[str] | None = None) -> int:
             raise StudyError(f"--timeout must be > 0 seconds, not {args.timeout}")
         if args.scheduler is not None and not SCHEDULER_ADDRESS.fullmatch(args.scheduler):
             raise StudyError(f"--scheduler '{args.scheduler}' is not an address like tcp://host:8786")
+        # Before anything is made: a mistake in the study file leaves no results folder behind.
+        check_radio(spec, str(executable().resolve()))
         try:
             spec.directory.mkdir(parents=True, exist_ok=True)
         except OSError as e:
             raise StudyError(f"the output folder '{spec.directory}' cannot be made: {e.strerror}") from e
         try:
-            result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout)
+            result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout, check=False)
         except OSError as e:
             if args.scheduler is None:
                 raise
