@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import re
+import textwrap
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 from pathlib import Path
@@ -257,7 +258,6 @@ def test_custom_criterion_reads_events_and_statistics(loops_cfg: Path, tmp_path:
     board.registerCriterion(FewActivations(3), name='at most three')
     board.registerCriterion(FewActivations(2))
     """
-    import textwrap
 
     result, summary, junit = run_criteria(loops_cfg, tmp_path, textwrap.indent(textwrap.dedent(body), "    "))
     assert result.returncode == 3, result.stderr
@@ -296,3 +296,23 @@ def test_a_run_without_criteria_has_no_verdict(loops_cfg: Path, tmp_path: Path) 
     assert result.returncode == 0
     assert summary["criteria"] == [] and summary["verdict"] is None
     assert junit.find("testsuite").get("tests") == "0"
+
+
+def test_junit_is_well_formed_whatever_the_names_and_values_hold(loops_cfg: Path, tmp_path: Path) -> None:
+    # XML 1.0 forbids most control characters even as references: they are written as visible escapes.
+    body = """
+    class Odd(Criterion):
+        def evaluate(self, run):
+            return (False, "bell\\x07 <b>&\\ttab", "nul\\x00 \\ufffe")
+
+    board.registerCriterion(Odd(), name="odd\\x01\\x1b name\\ttab")
+    """
+    result, summary, junit = run_criteria(loops_cfg, tmp_path, textwrap.indent(textwrap.dedent(body), "    "), end=5.0)
+    assert result.returncode == 3
+    assert summary["criteria"][0]["name"] == "odd\x01\x1b name\ttab"
+    [case] = junit.findall("testsuite/testcase")
+    # A tab stays (XML reads one in an attribute as a space; in an element's text it stays a tab).
+    assert case.get("name") == "odd\\x01\\x1b name tab"
+    failure = case.find("failure")
+    assert failure is not None
+    assert failure.text == "actual: bell\\x07 <b>&\ttab; expected: nul\\x00 \\ufffe"
