@@ -20,12 +20,16 @@ from pathlib import Path
 from typing import Any
 
 from sbsim.runner import executable
+from sbsim.study.junit import write_junit
 from sbsim.study.spec import Run, StudyError, StudySpec
 from sbsim.study.tables import COMPLETE, write_tables
 from sbsim.summary import read_summary, table_columns
 
 #: How much of a failed run's stderr its row keeps.
 STDERR_TAIL = 2000
+
+#: sbsim's exit code for a run that went to its end with a criterion failed.
+CRITERION_FAILED = 3
 
 #: sbsim's exit code for a run stopped by SIGINT or SIGTERM: the run is not finished, it is done again.
 INTERRUPTED = 130
@@ -235,6 +239,11 @@ class StudyResult:
     def failed(self) -> list[dict[str, Any]]:
         return [r for r in self.rows if r["exit_code"] not in COMPLETE]
 
+    @property
+    def failed_criteria(self) -> list[dict[str, Any]]:
+        """The complete runs of which a criterion failed (sbsim's exit code 3)."""
+        return [r for r in self.rows if r["exit_code"] == CRITERION_FAILED]
+
 
 @contextmanager
 def _local_workers_quiet() -> Iterator[None]:
@@ -300,8 +309,8 @@ def run(
     timeout: float | None = None,
     check: bool = True,
 ) -> StudyResult:
-    """Runs the study's missing runs on Dask, then writes runs.parquet and events.parquet; first, with
-    ``check``, the radio settings of the study file (:func:`check_radio`).
+    """Runs the study's missing runs on Dask, then writes runs.parquet, events.parquet and junit.xml;
+    first, with ``check``, the radio settings of the study file (:func:`check_radio`).
 
     KeyboardInterrupt (SIGINT) stops the runs under way (see stop_runs) and raises StudyInterrupted."""
     from distributed import as_completed
@@ -354,6 +363,7 @@ def run(
         raise StudyInterrupted(finished, len(runs)) from None
     ordered = [rows[r.id] for r in runs]
     write_tables(spec, runs, ordered)
+    write_junit(spec, runs, ordered)
     return StudyResult(spec.directory, ordered, len(todo))
 
 

@@ -31,6 +31,20 @@ double meanReceivers(const radio::Medium::Counts& c) {
 
 /// Distance bins (of 50 m) the text summary shows; the JSON has them all.
 constexpr std::size_t kSummaryBins = 20;
+/// Equipped vehicles the text summary names; the JSON names them all.
+constexpr std::size_t kSummaryEquipped = 10;
+
+/// "12 of 40 (penetration 0.3): a at t=0 s, b at t=1.5 s and 10 more".
+std::string equippedLine(const traffic::EquippedVehicles& e) {
+    const auto& list = e.equipped();
+    std::string out = fmt::format("{} of {} (penetration {:g})", list.size(), e.seen(), e.penetration().share());
+    for (std::size_t k = 0; k < list.size() && k < kSummaryEquipped; ++k) {
+        out += fmt::format("{}{} at t={} s", k == 0 ? ": " : ", ", kernel::escapeControls(list[k].vehicle),
+                           list[k].since.str());
+    }
+    if (list.size() > kSummaryEquipped) out += fmt::format(" and {} more", list.size() - kSummaryEquipped);
+    return out;
+}
 
 }  // namespace
 
@@ -52,6 +66,7 @@ void printSummary(const RunFigures& f) {
     }
     if (f.services != nullptr) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
+        if (f.equipped != nullptr) fmt::print("equipped vehicles: {}\n", equippedLine(*f.equipped));
         if (f.services->roadsideUnits() > 0) fmt::print("roadside units: {}\n", f.services->roadsideUnits());
         if (f.obstacles != nullptr)
             fmt::print("obstacles: {} (polygon type '{}')\n", f.obstacles->count, f.obstacles->polygonType);
@@ -144,6 +159,15 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
     ordered_json messages = ordered_json::object();
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();
+        if (f.equipped != nullptr) {
+            ordered_json vehicles = ordered_json::array();
+            for (const auto& entry : f.equipped->equipped())
+                vehicles.push_back({{"vehicle", entry.vehicle}, {"since", entry.since.seconds()}});
+            out["equipped"] = {{"penetration", f.equipped->penetration().share()},
+                               {"count", f.equipped->equipped().size()},
+                               {"of", f.equipped->seen()},
+                               {"vehicles", std::move(vehicles)}};
+        }
         if (f.services->roadsideUnits() > 0) out["roadside_units"] = f.services->roadsideUnits();
         if (f.obstacles != nullptr)
             out["obstacles"] = {{"polygon_type", f.obstacles->polygonType}, {"count", f.obstacles->count}};

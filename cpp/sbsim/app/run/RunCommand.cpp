@@ -155,7 +155,7 @@ int RunCommand::run(const CommandLine& cl) {
     // After the scenario: its Python finds the interpreter a Parquet trace is written with.
     std::optional<MessageTraceFile> messageTrace;
     if (messages) messageTrace.emplace(traceWriter(cl, *messages, scenario), traceFilter(cl), cl.messagesMaxBytes);
-    const traffic::Penetration penetration(cl.penetration, sim.seed());
+    const traffic::Penetration& penetration = scenario.equipment().penetration();
     if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
     scenario.loadSumo();
     Interruption::checkpoint("while SUMO was loading");
@@ -166,6 +166,11 @@ int RunCommand::run(const CommandLine& cl) {
 
     std::optional<storyboard::EventLog> log;
     if (events) log.emplace(events->stream());
+    // Equipment matters where V2X runs: the logs of runs without services stay as they were.
+    if (log && servicesConfig) {
+        scenario.equipment().onEquipped(
+            [&log](kernel::SimTime t, const std::string& vehicle) { log->equipped(t, vehicle); });
+    }
     if (messageTrace) scenario.stations().setPhaseSink(&*messageTrace);
     if (story) {
         storyboard::StoryScript& script = scenario.addStoryboard(
@@ -287,7 +292,8 @@ int RunCommand::run(const CommandLine& cl) {
                              std::chrono::duration<double>(Clock::now() - started).count(),
                              cl.arguments,
                              messageTrace ? std::optional(messageTrace->figures()) : std::nullopt,
-                             scenario.obstacles() ? &*scenario.obstacles() : nullptr};
+                             scenario.obstacles() ? &*scenario.obstacles() : nullptr,
+                             scenario.services() != nullptr ? &scenario.equipment() : nullptr};
     if (summary) summary->stream() << summaryJson(figures).dump(2) << '\n';
     // Only a run that ended as it should gives outputs their names; others stay .incomplete.
     const auto present = [](std::optional<OutputFile>& f) { return f ? &*f : nullptr; };
