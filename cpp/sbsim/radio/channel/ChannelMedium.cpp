@@ -24,7 +24,9 @@ struct ChannelMedium::Transmission {
     Slot sender = -1;
     std::shared_ptr<const V2xMessage> message;
     kernel::SimTime start;
-    std::vector<Link> links;  // ascending receiver slot
+    std::shared_ptr<const StepLinks> step;   // every link, shared with the sender's step
+    std::vector<Link> links;                 // the drawn ones, in the step's order
+    std::vector<std::uint32_t> halfAtStart;  // traced only: interference-only links whose receiver sent
     EndTimer end;
 };
 
@@ -181,6 +183,7 @@ void ChannelMedium::startTransmission(Slot s) {
         tx->id = nextTx_;
         tx->end.tx = nextTx_;
         tx->links.clear();
+        tx->halfAtStart.clear();
     }
     ++nextTx_;
     tx->sender = s;
@@ -201,13 +204,16 @@ void ChannelMedium::startTransmission(Slot s) {
     }
     if (stations_.present[s]) {
         const std::uint64_t frameKey = CounterRandom::frameKey(seed_, stations_.keys[s], tx->message->sequence());
-        budget_.computeLinks(s, frameKey, simTime(), tx->links, simulation().parallel());
+        tx->step = budget_.computeLinks(s, frameKey, simTime(), tx->links, simulation().parallel());
+    } else {
+        static const auto nobody = std::make_shared<const StepLinks>();
+        tx->step = nobody;
     }
 
     // The sender stops receiving: whatever it was receiving is lost to half-duplex.
     reception_.startSending(s, tx->id, simTime());
     setCbrBusy(s);
-    reception_.frameStarts(tx->id, tx->links);
+    reception_.frameStarts(tx->id, *tx->step, tx->links, trace() != nullptr ? &tx->halfAtStart : nullptr);
     scheduleAt(simTime() + settings_.airtime(tx->message->frameBytes()), tx->end);
     active_.emplace(tx->id, std::move(tx));
 }
@@ -237,7 +243,34 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         stations.clear();
     };
 
-    for (Link& link : tx->links) {
+    const StepLinks& step = *tx->step;
+    std::size_t drawn = 0;
+    for (std::size_t k = 0; k < step.size(); ++k) {
+        if (!step.drawn[k]) {
+            // Interference only: it leaves the power its receiver hears, and is lost below the
+            // sensing threshold (or to half-duplex).
+            const Slot r = step.receivers[k];
+            const bool counted = reception_.counts(step.mw[k]);
+            if (counted) {
+                const double total = reception_.quietEnds(r, step.units[k]);
+                if (access_.contending(r) && reception_.changesSense(r, total)) flush();
+                reception_.setSensedPower(r, total);
+            }
+            if (counts != nullptr) {
+                if (counts->linkStations.size() <= step.bin[k]) {
+                    counts->linkStations.resize(step.bin[k] + 1);
+                    counts->linkReceptions.resize(step.bin[k] + 1);
+                }
+                ++counts->linkStations[step.bin[k]];
+            }
+            if (trace() != nullptr && stations_.receiver[r] != nullptr && step.distance[k] <= settings_.traceRange) {
+                const bool half = (counted && reception_.sentSince(r, tx->start)) ||
+                                  std::find(tx->halfAtStart.begin(), tx->halfAtStart.end(), k) != tx->halfAtStart.end();
+                traceLost(*tx, r, step.distance[k], half ? LossReason::HalfDuplex : LossReason::Sensing);
+            }
+            continue;
+        }
+        Link& link = tx->links[drawn++];
         const Slot r = link.receiver;
         const double total = reception_.frameEnds(id, tx->start, link);
         if (link.counted) {
@@ -306,6 +339,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     // A few spares cover the frames on the air at once (airtimes are a fraction of a millisecond).
     if (spare_.size() < 64) {
         tx->message.reset();
+        tx->step.reset();  // the sender's next step may then reuse its links in place
         spare_.push_back(std::move(tx));
     }
 }

@@ -7,6 +7,7 @@
 #include "sbsim/radio/CounterRandom.h"
 #include "sbsim/radio/Decibels.h"
 #include "sbsim/radio/Medium.h"
+#include "sbsim/radio/channel/Reception.h"
 
 namespace sbsim::radio {
 
@@ -74,8 +75,8 @@ void LinkBudget::forget(kernel::SimTime now) {
     if (shadowing_) shadowing_->forget(now);
 }
 
-void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime now, std::vector<Link>& links,
-                              kernel::ParallelFor& pool) {
+std::shared_ptr<const StepLinks> LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime now,
+                                                          std::vector<Link>& links, kernel::ParallelFor& pool) {
     // Who is in range, how far, and the mean power (path loss and obstacles) stay the same for
     // all of a sender's frames within one SUMO step: computed once per step, for the likely
     // senders of the step together at its first frame (prepareStep), else at the sender's first.
@@ -86,24 +87,9 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime no
         sentInStep_[s] = step_;
         sentThisStep_.push_back(s);
     }
-    const std::size_t n = near.receivers.size();
+    const StepLinks& step = *near.links;
+    const std::size_t n = near.full.size();
     links.resize(n);
-    // Every link with its tier's power first (an interference-only link keeps it), then the draws
-    // of the links drawn in full.
-    for (std::size_t k = 0; k < n; ++k) {
-        // Field by field: `link = Link{}` went through a stack temporary whose overlapping stores
-        // stalled store-to-load forwarding (a quarter of this loop's time).
-        Link& link = links[k];
-        link.receiver = near.receivers[k];
-        link.distance = near.distance[k];
-        link.bin = near.bin[k];
-        link.powerDbm = near.dbm[k];
-        link.powerMw = near.mw[k];
-        link.maxInterferenceMw = 0;
-        link.counted = false;
-        link.halfDuplex = false;
-        link.locked = false;
-    }
     const bool fading = settings_.fading != ChannelSettings::Fading::None;
     const bool shadowing = settings_.shadowingSigmaDb > 0;
     // The pairs are looked up (and made) here, serially, once a step: a frame's links then only
@@ -115,13 +101,22 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime no
     }
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     pool.run(
-        near.full.size(),
+        n,
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t j = begin; j < end; ++j) {
                 const std::size_t k = near.full[j];
-                Link& link = links[k];
-                const Slot r = link.receiver;
-                double dbm = near.meanDbm[k];
+                // Field by field: `link = Link{}` went through a stack temporary whose overlapping
+                // stores stalled store-to-load forwarding (a quarter of this loop's time).
+                Link& link = links[j];
+                const Slot r = step.receivers[k];
+                link.receiver = r;
+                link.distance = step.distance[k];
+                link.bin = step.bin[k];
+                link.maxInterferenceMw = 0;
+                link.counted = false;
+                link.halfDuplex = false;
+                link.locked = false;
+                double dbm = near.fullMeanDbm[j];
                 if (shadowing_) {
                     if (j + 4 < end) shadowing_->prefetch(near.pair[j + 4]);
                     shadowing_->touch(near.pair[j], now);
@@ -140,9 +135,10 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime no
             }
         },
         settings_.linksPerChunk);
-    tiers_.full += near.full.size();
-    tiers_.interference += n - near.full.size();
+    tiers_.full += n;
+    tiers_.interference += step.size() - n;
     tiers_.skipped += near.skipped;
+    return near.links;
 }
 
 void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {
@@ -169,12 +165,13 @@ void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {
 void LinkBudget::computeNeighbourhood(Slot s) {
     Neighbourhood& near = near_[s];
     near.at = stations_.refreshedAt;
-    near.receivers.clear();
+    std::vector<Slot>& candidates = near.candidates;
+    candidates.clear();
     const auto index = snapshot_.indexOf(stations_.ids[s]);
     // The grid's order (by cell, then vehicle index) is the same whatever the thread count,
     // so the receivers need no sorting; the stationary stations follow in their own order.
     const auto take = [&](traffic::VehicleSnapshot::Index j) {
-        if (const Slot r = stations_.slotOfIndex[j]; r >= 0 && r != s) near.receivers.push_back(r);
+        if (const Slot r = stations_.slotOfIndex[j]; r >= 0 && r != s) candidates.push_back(r);
     };
     const FixedStations& fixed = fixed_;
     const auto fixedSelf = index ? std::nullopt : fixed.indexOf(stations_.ids[s]);
@@ -186,26 +183,26 @@ void LinkBudget::computeNeighbourhood(Slot s) {
     if ((index || fixedSelf) && !fixed.empty()) {
         fixed.forEachWithin({stations_.x[s], stations_.y[s]}, cutoff_, fixedSelf, [&](FixedStations::Index k, double) {
             const auto it = stations_.slotOf.find(fixed.ids()[k]);
-            if (it != stations_.slotOf.end() && stations_.present[it->second]) near.receivers.push_back(it->second);
+            if (it != stations_.slotOf.end() && stations_.present[it->second]) candidates.push_back(it->second);
         });
     }
+    // A frame still on the air keeps the last step's links: a fresh set then, else this one anew.
+    if (!near.links || near.links.use_count() > 1) near.links = std::make_shared<StepLinks>();
+    StepLinks& step = *near.links;
+    step.clear();
+    near.full.clear();
+    near.fullKey.clear();
+    near.fullMeanDbm.clear();
+    near.skipped = 0;
     const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
     const bool obstacles = obstacles_ && obstacles_->size() > 0;
     const bool tiers = settings_.linkTiers;
     // Tiers: below the floor by the cutoff's margin (buildings can put a link there), or below
-    // the sensing threshold by the tier margin.
+    // the sensing threshold by the tier margin with its mean power below it too (so it can never
+    // be detected).
     const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
-    const double fullFrom = settings_.sensingDbm - settings_.tierMarginDb;
-    const std::size_t within = near.receivers.size();
-    for (auto* v : {&near.distance, &near.meanDbm, &near.dbm, &near.mw}) v->resize(within);
-    near.key.resize(within);
-    near.bin.resize(within);
-    std::size_t n = 0;
-    near.full.clear();
-    near.fullKey.clear();
-    near.skipped = 0;
-    for (std::size_t k = 0; k < near.receivers.size(); ++k) {
-        const Slot r = near.receivers[k];
+    const double fullFrom = std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
+    for (const Slot r : candidates) {
         const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
         const double distance = (to - from).norm();
         double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
@@ -214,26 +211,24 @@ void LinkBudget::computeNeighbourhood(Slot s) {
             ++near.skipped;
             continue;
         }
-        near.receivers[n] = r;
-        near.distance[n] = distance;
-        near.meanDbm[n] = mean;
-        near.key[n] = stations_.keys[r];
-        near.bin[n] = static_cast<std::uint32_t>(distance / kDistanceBin);
+        step.receivers.push_back(r);
+        step.distance.push_back(distance);
+        step.bin.push_back(static_cast<std::uint32_t>(distance / kDistanceBin));
         if (tiers && mean < fullFrom) {
-            near.dbm[n] = mean + meanGainDb_;
-            near.mw[n] = dbToLinear(near.dbm[n]);
+            const double mw = dbToLinear(mean + meanGainDb_);
+            step.drawn.push_back(0);
+            step.mw.push_back(mw);
+            step.units.push_back(Reception::unitsOf(mw));
         } else {
-            near.dbm[n] = mean;
-            near.mw[n] = 0;
-            near.full.push_back(static_cast<std::uint32_t>(n));
-            near.fullKey.push_back(near.key[n]);
+            step.drawn.push_back(1);
+            step.mw.push_back(0);
+            step.units.push_back(0);
+            near.full.push_back(static_cast<std::uint32_t>(step.receivers.size() - 1));
+            near.fullKey.push_back(stations_.keys[r]);
+            near.fullMeanDbm.push_back(mean);
         }
-        ++n;
     }
-    near.receivers.resize(n);
-    for (auto* v : {&near.distance, &near.meanDbm, &near.dbm, &near.mw}) v->resize(n);
-    near.key.resize(n);
-    near.bin.resize(n);
+    step.drawnCount = near.full.size();
 }
 
 }  // namespace sbsim::radio

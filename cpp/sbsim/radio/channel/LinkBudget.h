@@ -11,6 +11,7 @@
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/ChannelStations.h"
 #include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/channel/StepLinks.h"
 #include "sbsim/radio/propagation/CorrelatedShadowing.h"
 #include "sbsim/radio/propagation/NakagamiFading.h"
 #include "sbsim/radio/propagation/Obstacles.h"
@@ -50,10 +51,11 @@ public:
     /// The stations were refreshed for a new snapshot: neighbourhoods of stations that left are
     /// dropped (a long run sees tens of thousands of vehicles), the grid is built anew.
     void newStep();
-    /// Fills `links` (ascending receiver slot) for the frame of `sender` keyed `frameKey`
-    /// (CounterRandom::frameKey), sent at `now`, computing on `pool`: the same whatever its thread count.
-    void computeLinks(Slot sender, std::uint64_t frameKey, kernel::SimTime now, std::vector<Link>& links,
-                      kernel::ParallelFor& pool);
+    /// The links of the frame of `sender` keyed `frameKey` (CounterRandom::frameKey), sent at
+    /// `now`: the sender's links of the step, and in `drawn` those drawn for this frame (in the
+    /// step's order), computed on `pool`: the same whatever its thread count.
+    std::shared_ptr<const StepLinks> computeLinks(Slot sender, std::uint64_t frameKey, kernel::SimTime now,
+                                                  std::vector<Link>& drawn, kernel::ParallelFor& pool);
     /// Links per tier over the run: drawn in full, interference only, skipped below the floor.
     struct Tiers {
         std::uint64_t full = 0, interference = 0, skipped = 0;
@@ -62,16 +64,14 @@ public:
     std::uint64_t linksComputed() const { return tiers_.full + tiers_.interference; }
 
 private:
-    /// A sender's receivers within the cutoff and their distance and mean power, for one step.
+    /// A sender's receivers within the cutoff and their links for one step.
     struct Neighbourhood {
-        std::optional<kernel::SimTime> at;  // the snapshot they were computed for
-        std::vector<Slot> receivers;
-        std::vector<double> distance, meanDbm;
-        std::vector<std::uint64_t> key;      // the receivers' CounterRandom keys, contiguous
-        std::vector<std::uint32_t> bin;      // distance / kDistanceBin
-        std::vector<double> dbm, mw;         // per link, the power of an interference-only link
+        std::optional<kernel::SimTime> at;   // the snapshot they were computed for
+        std::vector<Slot> candidates;        // scratch: the grid's answer
+        std::shared_ptr<StepLinks> links;    // shared with the frames on the air
         std::vector<std::uint32_t> full;     // the links drawn per frame (every one without tiers)
         std::vector<std::uint64_t> fullKey;  // their receivers' keys, contiguous
+        std::vector<double> fullMeanDbm;     // their mean power
         std::uint64_t skipped = 0;           // within the cutoff but below the floor (obstacles)
         /// The full links' shadowing pairs, looked up at the step's first frame (a generation of
         /// CorrelatedShadowing: a sweep that freed pairs makes them stale).

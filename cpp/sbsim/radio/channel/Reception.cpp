@@ -44,28 +44,48 @@ void Reception::startSending(Slot s, FrameId id, kernel::SimTime now) {
     sendStart_[s] = now;
 }
 
-void Reception::frameStarts(FrameId id, std::vector<Link>& links) {
-    // Receivers one by one, in slot order: carrier sense changes schedule events, so this stays
-    // sequential.
-    for (Link& link : links) {
-        const Slot r = link.receiver;
-        if (sending_[r] != 0) link.halfDuplex = true;
-        if (link.powerMw < floorMw_) continue;
-        link.counted = true;
-        const Units others = heard_[r];
-        const Units total = others + unitsOf(link.powerMw);
+void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>& drawn,
+                            std::vector<std::uint32_t>* halfAtStart) {
+    // Receivers one by one, in the step's order: carrier sense changes schedule events, so this
+    // stays sequential.
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < step.size(); ++k) {
+        if (step.drawn[k]) {
+            linkStarts(id, drawn[j++]);
+            continue;
+        }
+        // Interference only: below the sensing threshold, never detected, never decoded.
+        const Slot r = step.receivers[k];
+        if (halfAtStart != nullptr && sending_[r] != 0) halfAtStart->push_back(static_cast<std::uint32_t>(k));
+        if (step.mw[k] < floorMw_) continue;
+        const Units total = heard_[r] + step.units[k];
         heard_[r] = total;
         if (locked_[r] != 0) {
             Link& decoding = *lockedLink_[r];
             decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, mwOf(total - unitsOf(decoding.powerMw)));
-        } else if (sending_[r] == 0 && link.powerMw >= sensingMw_) {
-            locked_[r] = id;
-            lockedLink_[r] = &link;
-            link.locked = true;
-            link.maxInterferenceMw = mwOf(others);
         }
         setSensedPower(r, mwOf(total));
     }
+}
+
+void Reception::linkStarts(FrameId id, Link& link) {
+    const Slot r = link.receiver;
+    if (sending_[r] != 0) link.halfDuplex = true;
+    if (link.powerMw < floorMw_) return;
+    link.counted = true;
+    const Units others = heard_[r];
+    const Units total = others + unitsOf(link.powerMw);
+    heard_[r] = total;
+    if (locked_[r] != 0) {
+        Link& decoding = *lockedLink_[r];
+        decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, mwOf(total - unitsOf(decoding.powerMw)));
+    } else if (sending_[r] == 0 && link.powerMw >= sensingMw_) {
+        locked_[r] = id;
+        lockedLink_[r] = &link;
+        link.locked = true;
+        link.maxInterferenceMw = mwOf(others);
+    }
+    setSensedPower(r, mwOf(total));
 }
 
 double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {

@@ -9,6 +9,7 @@
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/FrameErrorTable.h"
 #include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/channel/StepLinks.h"
 
 namespace sbsim::radio {
 
@@ -49,10 +50,22 @@ public:
     /// (half-duplex; frameEnds() tells the frames that overlapped the sending).
     void startSending(Slot s, FrameId id, kernel::SimTime now);
     void stopSending(Slot s) { sending_[s] = 0; }
-    /// Frame `id` reaches the receivers of `links` (which stay where they are until it ends): each
-    /// link above the floor adds to its receiver's power and to the interference of the frame it
-    /// decodes, and may lock it (only a locked link's maxInterferenceMw is kept: no other is decoded).
-    void frameStarts(FrameId id, std::vector<Link>& links);
+    /// Frame `id` reaches the receivers of `step` (which stay where they are until it ends), its
+    /// drawn links in `drawn`: each link above the floor adds to its receiver's power and to the
+    /// interference of the frame it decodes, and a drawn one may lock it (only a locked link's
+    /// maxInterferenceMw is kept: no other is decoded). With `halfAtStart`, the interference-only
+    /// links (by index in `step`) whose receiver was sending are added to it.
+    void frameStarts(FrameId id, const StepLinks& step, std::vector<Link>& drawn,
+                     std::vector<std::uint32_t>* halfAtStart = nullptr);
+    /// Whether an interference-only link of `mw` counts (at or above the floor).
+    bool counts(double mw) const { return mw >= floorMw_; }
+    /// An interference-only link of `units` (counted) left station `r`: the power it hears without it.
+    double quietEnds(Slot r, StepLinks::Units units) {
+        heard_[r] -= units;
+        return mwOf(heard_[r]);
+    }
+    /// Whether station `r` began sending at or after `start`.
+    bool sentSince(Slot r, kernel::SimTime start) const { return sendStart_[r] >= start; }
     /// Whether `mw` would change station `r`'s carrier sense.
     bool changesSense(Slot r, double mw) const { return (mw >= sensingMw_) != sensesBusy(r); }
     void setSensedPower(Slot r, double mw);
@@ -66,10 +79,13 @@ public:
     std::optional<LossReason> decode(const Link& link, std::uint64_t frameKey, std::uint64_t receiverKey,
                                      double& sinrDb) const;
 
-private:
-    __extension__ typedef unsigned __int128 Units;  // GCC and Clang have it on 64-bit targets
+    using Units = StepLinks::Units;
+    /// `mw` in units of 2^-64 mW, truncated.
     static Units unitsOf(double mw);
+
+private:
     static double mwOf(Units units);
+    void linkStarts(FrameId id, Link& link);
 
     Listener& listener_;
     FrameErrorTable fer_;

@@ -26,6 +26,21 @@ Link linkTo(Reception::Slot receiver, double dbm) {
     return link;
 }
 
+/// A step whose links are all drawn (their Link in the frame's vector).
+StepLinks allDrawn(const std::vector<Link>& links) {
+    StepLinks step;
+    for (const Link& link : links) {
+        step.receivers.push_back(link.receiver);
+        step.bin.push_back(0);
+        step.distance.push_back(link.distance);
+        step.drawn.push_back(1);
+        step.units.push_back(0);
+        step.mw.push_back(0);
+    }
+    step.drawnCount = links.size();
+    return step;
+}
+
 class ReceptionTest : public ::testing::Test {
 protected:
     ReceptionTest() : reception(settings, log) {
@@ -40,14 +55,14 @@ TEST_F(ReceptionTest, TheFirstFrameDetectedIsLockedAndTheSecondInterferes) {
     std::vector<Link> first{linkTo(1, -60)};
     std::vector<Link> second{linkTo(1, -70)};
     reception.startSending(0, 1, SimTime::zero());
-    reception.frameStarts(1, first);
+    reception.frameStarts(1, allDrawn(first), first);
     EXPECT_TRUE(first[0].counted && first[0].locked);
     EXPECT_TRUE(reception.sensesBusy(1));
     ASSERT_EQ(log.changes.size(), 1U);
     EXPECT_EQ(log.changes[0], std::make_pair(Reception::Slot{1}, true));
 
     reception.startSending(2, 2, SimTime::zero());
-    reception.frameStarts(2, second);
+    reception.frameStarts(2, allDrawn(second), second);
     EXPECT_FALSE(second[0].locked);
     EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-70), 1e-15);  // only the decoded frame's is kept
     EXPECT_EQ(log.changes.size(), 1U);                                // busy already
@@ -74,7 +89,7 @@ TEST_F(ReceptionTest, TheFirstFrameDetectedIsLockedAndTheSecondInterferes) {
 
 TEST_F(ReceptionTest, ASenderLosesWhatItHearsAndFramesBelowTheFloorAreNotCounted) {
     std::vector<Link> frame{linkTo(1, -50), linkTo(2, -110)};
-    reception.frameStarts(1, frame);
+    reception.frameStarts(1, allDrawn(frame), frame);
     EXPECT_TRUE(frame[0].counted);
     EXPECT_FALSE(frame[1].counted);  // below −105 dBm: no part of the sensed power
     EXPECT_FALSE(reception.sensesBusy(2));
@@ -96,7 +111,7 @@ TEST_F(ReceptionTest, ASendingThatEndedBeforeTheFrameStartedCostsNothing) {
     reception.startSending(1, 5, SimTime::zero());
     reception.stopSending(1);
     std::vector<Link> frame{linkTo(1, -50)};
-    reception.frameStarts(1, frame);
+    reception.frameStarts(1, allDrawn(frame), frame);
     reception.frameEnds(1, SimTime::fromMilliseconds(2), frame[0]);
     EXPECT_FALSE(frame[0].halfDuplex);
     EXPECT_TRUE(frame[0].locked);
@@ -106,7 +121,7 @@ TEST_F(ReceptionTest, TheHeardPowerIsExactWhateverTheOrderFramesLeave) {
     // Powers thirteen orders of magnitude apart: a floating sum that adds and subtracts drifts,
     // the fixed-point one returns to exactly zero.
     std::vector<Link> frames[4] = {{linkTo(1, -30)}, {linkTo(1, -104)}, {linkTo(1, -61.7)}, {linkTo(1, -99.3)}};
-    for (std::uint64_t k = 0; k < 4; ++k) reception.frameStarts(k + 1, frames[k]);
+    for (std::uint64_t k = 0; k < 4; ++k) reception.frameStarts(k + 1, allDrawn(frames[k]), frames[k]);
     EXPECT_NEAR(reception.frameEnds(1, SimTime::zero(), frames[0][0]),
                 dbToLinear(-104) + dbToLinear(-61.7) + dbToLinear(-99.3), 1e-18);
     reception.frameEnds(3, SimTime::zero(), frames[2][0]);
@@ -114,9 +129,33 @@ TEST_F(ReceptionTest, TheHeardPowerIsExactWhateverTheOrderFramesLeave) {
     EXPECT_EQ(reception.frameEnds(4, SimTime::zero(), frames[3][0]), 0.0);
 }
 
+TEST_F(ReceptionTest, AnInterferenceOnlyLinkAddsItsPowerButIsNeverDetected) {
+    std::vector<Link> first{linkTo(1, -60)};
+    reception.frameStarts(1, allDrawn(first), first);
+    // A second frame reaching station 1 only as interference (−90 dBm, below sensing), and
+    // station 2 as well, which it leaves idle.
+    StepLinks quiet;
+    for (const Reception::Slot r : {1, 2}) {
+        quiet.receivers.push_back(r);
+        quiet.bin.push_back(0);
+        quiet.distance.push_back(500);
+        quiet.drawn.push_back(0);
+        quiet.mw.push_back(dbToLinear(-90));
+        quiet.units.push_back(Reception::unitsOf(dbToLinear(-90)));
+    }
+    std::vector<Link> none;
+    std::vector<std::uint32_t> half;
+    reception.frameStarts(2, quiet, none, &half);
+    EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
+    EXPECT_FALSE(reception.sensesBusy(2));
+    EXPECT_TRUE(half.empty());
+    EXPECT_EQ(reception.quietEnds(2, quiet.units[1]), 0.0);
+    EXPECT_NEAR(reception.quietEnds(1, quiet.units[0]), dbToLinear(-60), 1e-15);
+}
+
 TEST_F(ReceptionTest, AStrongLoneFrameIsDecoded) {
     std::vector<Link> frame{linkTo(1, -40)};
-    reception.frameStarts(1, frame);
+    reception.frameStarts(1, allDrawn(frame), frame);
     double sinrDb = 0;
     // 55 dB of SNR, beyond the table's last point (a FER of 1e-3): at most a few of 200 frames lost.
     int lost = 0;

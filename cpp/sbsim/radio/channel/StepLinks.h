@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sbsim/radio/channel/ChannelStations.h"
+
+namespace sbsim::radio {
+
+/// A sender's links for one SUMO step, shared by every frame it sends in that step and left
+/// unchanged while one is on the air: its receivers in the order a frame reaches them, each link's
+/// distance bin and distance, whether it is drawn per frame (its Link then in the frame's own
+/// vector, in the same order) and, for an interference-only link, its fixed power. Frames read the
+/// interference-only links here instead of each writing its own copy of them (on a full city four
+/// links in five).
+struct StepLinks {
+    using Slot = ChannelStations::Slot;
+    __extension__ typedef unsigned __int128 Units;  // Reception's: 2^-64 mW
+
+    std::vector<Slot> receivers;
+    std::vector<std::uint32_t> bin;  // distance / Medium::kDistanceBin
+    std::vector<double> distance;
+    std::vector<std::uint8_t> drawn;  // 1: drawn per frame
+    std::vector<Units> units;         // an interference-only link's power (0 for a drawn one)
+    std::vector<double> mw;           // the same in mW
+    std::size_t drawnCount = 0;
+
+    std::size_t size() const { return receivers.size(); }
+    void clear() {
+        receivers.clear();
+        bin.clear();
+        distance.clear();
+        drawn.clear();
+        units.clear();
+        mw.clear();
+        drawnCount = 0;
+    }
+};
+
+}  // namespace sbsim::radio
