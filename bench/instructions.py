@@ -76,9 +76,10 @@ def main() -> None:
     with ThreadPoolExecutor(max_workers=2) as pool:
         counts = dict(zip(commands, pool.map(instructions, commands.values(), keeps), strict=True))
     base = counts["sumo"]
-    print(f"\n{'command':<36} {'instructions':>15} {'ratio':>7}")
+    width = max(36, *(len(name) for name in counts))
+    print(f"\n{'command':<{width}} {'instructions':>15} {'ratio':>7}")
     for name, count in counts.items():
-        print(f"{name:<36} {count / 1e9:13.3f} G {count / base:6.3f}x")
+        print(f"{name:<{width}} {count / 1e9:13.3f} G {count / base:6.3f}x")
 
 
 if __name__ == "__main__":
