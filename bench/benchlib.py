@@ -29,6 +29,56 @@ def scenario(preset: str) -> Path:
     return cfg
 
 
+def saved_state(preset: str, at: float) -> Path:
+    """A SUMO state of the preset at `at` s, saved once into bench/out/<preset>/ by plain `sumo` at the
+    preset's own step (a run may load it with another --step-length)."""
+    cfg = scenario(preset)
+    state = cfg.parent / f"state{at:g}.xml.gz"
+    if not state.exists():
+        print(f"saving {preset}'s state at {at:g} s ...", flush=True)
+        subprocess.run(
+            [sumo(), "-c", str(cfg), "--end", repr(at + 1), "--save-state.times", repr(at)]
+            + ["--save-state.files", str(state)],
+            check=True,
+            stdout=subprocess.DEVNULL,
+        )
+    return state
+
+
+@dataclass(frozen=True)
+class Window:
+    """Which part of a preset's run a benchmark runs: `end` s from 0, or `end` s from a state saved
+    at `state_at`; optionally with SUMO's step set to `step` s."""
+
+    preset: str
+    end: float
+    step: float | None = None
+    state_at: float | None = None
+
+    def sumo_options(self) -> list[str]:
+        """SUMO's options for the window, besides -c and --end (which end_time() gives)."""
+        out = [] if self.step is None else ["--step-length", repr(self.step)]
+        if self.state_at is not None:
+            out += ["--load-state", str(saved_state(self.preset, self.state_at)), "--begin", repr(self.state_at)]
+        return out
+
+    def end_time(self) -> float:
+        return self.end + (self.state_at or 0.0)
+
+    def sumo_command(self) -> list[str]:
+        return [sumo(), "-c", str(scenario(self.preset)), "--end", repr(self.end_time()), *self.sumo_options()]
+
+    def sbsim_command(self, exe: str, *options: str) -> list[str]:
+        """exe over the window with sbsim's `options`; SUMO's own come after `--`."""
+        cmd = [exe, "--sumocfg", str(scenario(self.preset)), "--end", repr(self.end_time()), *options]
+        return cmd + (["--", *self.sumo_options()] if self.sumo_options() else [])
+
+    def describe(self) -> str:
+        start = f"from a state at {self.state_at:g} s" if self.state_at is not None else "from 0 s"
+        step = f", step {self.step:g} s" if self.step is not None else ""
+        return f"{self.preset}, {self.end:g} s simulated {start}{step}"
+
+
 def sumo() -> str:
     return str(sumo_binary("sumo"))
 

@@ -4,6 +4,10 @@ to a fraction of a percent, so they show what a change does when the timings dro
 do not show waiting, cache misses or threads working side by side: read both).
 
     .venv/bin/python bench/instructions.py [--preset bench5k] [--end 60] [--compare EXE ...]
+        [--step-length 0.1] [--from-state 120] [--threads 1]
+
+--from-state T runs --end seconds from a state saved at T s (made once with plain `sumo`), as a run
+with the grid full is measured without its insertion ramp; --step-length sets SUMO's step.
 
 Runs are ~50x slower under callgrind; two run side by side.
 """
@@ -17,15 +21,16 @@ import tempfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from benchlib import sbsim, scenario, sumo
+from benchlib import Window, sbsim
 
 STORY = Path(__file__).resolve().parent / "stories" / "six_stories.py"
 
 
-def instructions(cmd: list[str]) -> int:
-    """The instructions callgrind counted for cmd (the whole process, start-up included)."""
+def instructions(cmd: list[str], keep: Path | None = None) -> int:
+    """The instructions callgrind counted for cmd (the whole process, start-up included); its
+    profile is kept as `keep` if given (callgrind_annotate --inclusive=yes reads it)."""
     with tempfile.TemporaryDirectory() as tmp:
-        out = Path(tmp) / "callgrind.out"
+        out = keep or Path(tmp) / "callgrind.out"
         subprocess.run(
             ["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *cmd],
             check=True,
@@ -43,21 +48,38 @@ def main() -> None:
     parser.add_argument("--preset", default="bench5k", help="make_grid preset (default bench5k)")
     parser.add_argument("--end", type=float, default=60.0, help="simulated seconds (default 60)")
     parser.add_argument("--compare", nargs="*", default=[], metavar="EXE", help="other sbsim executables to count")
+    parser.add_argument("--step-length", type=float, help="SUMO's step in seconds (default: the preset's)")
+    parser.add_argument("--from-state", type=float, metavar="T", help="run --end seconds from a state saved at T s")
+    parser.add_argument("--threads", help="sbsim's --threads (default: sbsim's own)")
+    parser.add_argument("--keep", type=Path, metavar="DIR", help="keep each run's callgrind profile in DIR")
+    parser.add_argument("--story", type=Path, default=STORY, help="the story set (default: the six stories)")
     args = parser.parse_args()
 
-    cfg = str(scenario(args.preset))
-    end = repr(args.end)
-    commands = {"sumo": [sumo(), "-c", cfg, "--end", end]}
-    for name, exe in [("sbsim", sbsim()), *((Path(e).name, e) for e in args.compare)]:
-        commands[name] = [exe, "--sumocfg", cfg, "--end", end, "--quiet"]
-        commands[f"{name} + six stories"] = [*commands[name], "--story", str(STORY)]
-    print(f"{args.preset}, {args.end:g} s simulated, under callgrind ...", flush=True)
+    window = Window(args.preset, args.end, args.step_length, args.from_state)
+    commands = {"sumo": window.sumo_command()}
+    threads = ["--threads", args.threads] if args.threads is not None else []
+    # Another build's name is its path when its file name is taken (builds are all called sbsim).
+    builds = [("sbsim", sbsim())]
+    for exe in args.compare:
+        builds.append((Path(exe).name if Path(exe).name not in dict(builds) else exe, exe))
+    for name, exe in builds:
+        commands[name] = window.sbsim_command(exe, "--quiet", *threads)
+        commands[f"{name} + {args.story.stem.replace('_', ' ')}"] = window.sbsim_command(
+            exe, "--quiet", *threads, "--story", str(args.story)
+        )
+    print(f"{window.describe()}, under callgrind ...", flush=True)
+    if args.keep:
+        args.keep.mkdir(parents=True, exist_ok=True)
+    keeps = [
+        args.keep / f"callgrind.{re.sub(r'[^A-Za-z0-9.]+', '_', name)}.out" if args.keep else None for name in commands
+    ]
     with ThreadPoolExecutor(max_workers=2) as pool:
-        counts = dict(zip(commands, pool.map(instructions, commands.values()), strict=True))
+        counts = dict(zip(commands, pool.map(instructions, commands.values(), keeps), strict=True))
     base = counts["sumo"]
-    print(f"\n{'command':<36} {'instructions':>15} {'ratio':>7}")
+    width = max(36, *(len(name) for name in counts))
+    print(f"\n{'command':<{width}} {'instructions':>15} {'ratio':>7}")
     for name, count in counts.items():
-        print(f"{name:<36} {count / 1e9:13.3f} G {count / base:6.3f}x")
+        print(f"{name:<{width}} {count / 1e9:13.3f} G {count / base:6.3f}x")
 
 
 if __name__ == "__main__":

@@ -7,7 +7,11 @@ the number of vehicles).
 Targets for the six-story set: at most 1.10x sumo at 5,000 vehicles, 1.12x at 20,000.
 
     PYTHONPATH=python .venv/bin/python bench/storyboard.py [--presets bench1k bench5k bench20k]
-        [--sets six logic] [--end 300] [--runs 3]
+        [--sets six logic] [--end 300] [--runs 3] [--step-length 0.1] [--from-state 120]
+
+"own" is sbsim's own time, its wall time less its time in SUMO's steps, as a share of plain `sumo`'s
+wall time (medians). --from-state T runs --end seconds from a state saved at T s (once, by plain
+`sumo`); --step-length sets SUMO's step.
 """
 
 from __future__ import annotations
@@ -16,7 +20,7 @@ import argparse
 import re
 from pathlib import Path
 
-from benchlib import PRELOADS, alternate, median, paired_ratio, preloaded, sbsim, scenario, summary_value, sumo
+from benchlib import PRELOADS, Window, alternate, median, paired_ratio, preloaded, sbsim, scenario, summary_value
 
 STORIES = Path(__file__).resolve().parent / "stories"
 SETS = {"six": STORIES / "six_stories.py", "logic": STORIES / "logic_stories.py"}
@@ -40,30 +44,38 @@ def main() -> None:
     parser.add_argument(
         "--compare", nargs="*", default=[], metavar="EXE", help="also run these other sbsim executables (older builds)"
     )
+    parser.add_argument("--step-length", type=float, help="SUMO's step in seconds (default: the preset's)")
+    parser.add_argument("--from-state", type=float, metavar="T", help="run --end seconds from a state saved at T s")
     args = parser.parse_args()
 
     rows = []
     extras: list[str] = []  # per command: ratio to sumo round by round, peak RSS
     for preset in args.presets:
-        cfg = str(scenario(preset))
-        parameters = {"six": [], "logic": ["--param", f"target={tenth_vehicle(Path(cfg))}"]}
-        end = repr(args.end)
-        print(f"{preset}, {args.end:g} s simulated, {args.runs} runs each, interleaved")
+        window = Window(preset, args.end, args.step_length, args.from_state)
+        cfg = scenario(preset)
+        parameters = {"six": [], "logic": ["--param", f"target={tenth_vehicle(cfg)}"]}
+        print(f"{window.describe()}, {args.runs} runs each, interleaved")
         sets = {
-            f"sbsim + {name}": [sbsim(), "--sumocfg", cfg, "--end", end, "--story", str(SETS[name]), *parameters[name]]
+            f"sbsim + {name}": window.sbsim_command(sbsim(), "--story", str(SETS[name]), *parameters[name])
             for name in args.sets
         }
-        commands = {"sumo": [sumo(), "-c", cfg, "--end", end], **sets}
+        commands = {"sumo": window.sumo_command(), **sets}
         first = next(iter(sets.values()))  # the extra builds and allocators run the first set
         for allocator in args.preload:
             commands[f"{args.sets[0]} + {allocator}"] = preloaded(allocator, first)
         for exe in args.compare:
-            commands[f"{args.sets[0]} {Path(exe).name}"] = [exe, *first[1:]]
+            name = f"{args.sets[0]} {Path(exe).name}"
+            commands[name if name not in commands else f"{args.sets[0]} {exe}"] = [exe, *first[1:]]
         results = alternate(commands, args.runs)
+        base = median([r.wall for r in results["sumo"]])
         for name in list(commands)[1:]:
             paired, low, high = paired_ratio(results, name)
             rss = max(r.rss_mb for r in results[name])
-            extras.append(f"{preset:<10} {name:<28} {paired:.3f}x ({low:.3f}-{high:.3f})  peak RSS {rss:.0f} MB")
+            own = median([r.wall - summary_value(r.stdout, "time in sumo") for r in results[name]])
+            extras.append(
+                f"{preset:<10} {name:<28} {paired:.3f}x ({low:.3f}-{high:.3f})  own {own:.2f} s = "
+                f"{100 * own / base:.1f} % of sumo  peak RSS {rss:.0f} MB"
+            )
         extras.append(f"{preset:<10} {'sumo':<28} peak RSS {max(r.rss_mb for r in results['sumo']):.0f} MB")
         for name in sets:
             story_runs = results[name]
@@ -94,7 +106,7 @@ def main() -> None:
             f"{preset:<10} {story_set:<6} {running:8.0f} {base:7.2f} s {wall:7.2f} s {wall / base:6.3f}x "
             f"{per_step:13.2f} ms {per_vehicle:14.3f} us {reading:10.2f} ms"
         )
-    print("\nratio to sumo per round, median (min-max), and peak RSS:")
+    print("\nratio to sumo per round, median (min-max), sbsim's own time (wall less time in SUMO), peak RSS:")
     print("\n".join(extras))
 
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 
+#include "sbsim/traffic/SumoBridge.h"
 #include "sbsim/traffic/SumoRouteChecks.h"
 
 namespace sbsim::traffic {
@@ -92,7 +93,10 @@ std::vector<std::string> NetworkController::findRoute(const std::string& from, c
     }
 }
 void NetworkController::reroute(const std::string& vehicle) { libsumo::Vehicle::rerouteTraveltime(vehicle); }
-void NetworkController::removeVehicle(const std::string& vehicle) { libsumo::Vehicle::remove(vehicle); }
+void NetworkController::removeVehicle(const std::string& vehicle) {
+    libsumo::Vehicle::remove(vehicle);
+    if (sumo_ != nullptr) sumo_->removedByCommand(vehicle);
+}
 bool NetworkController::hasRoute(const std::string& routeId) const {
     return known([&] { libsumo::Route::getEdges(routeId); });
 }

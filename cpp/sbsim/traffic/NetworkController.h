@@ -7,6 +7,8 @@
 
 namespace sbsim::traffic {
 
+class SumoBridge;
+
 /// Which vehicle classes a lane lets on, as SUMO reports them (libsumo Lane::getAllowed and
 /// getDisallowed: each is the other's complement).
 struct LanePermissions {
@@ -31,6 +33,9 @@ struct VehicleSpawn {
 /// SUMO only through this class. Virtual so that unit tests can stand a model network in.
 class SBSIM_API NetworkController {
 public:
+    /// `sumo`, if given, hears of each vehicle removeVehicle() takes out (libsumo forgets such an
+    /// arrival when the next step begins, so the bridge is told rather than asking every step).
+    explicit NetworkController(SumoBridge* sumo = nullptr) : sumo_(sumo) {}
     virtual ~NetworkController() = default;
 
     virtual bool hasEdge(const std::string& edge) const;
@@ -84,6 +89,9 @@ public:
     virtual void setSignalState(const std::string& tls, const std::string& state);
     virtual void setProgram(const std::string& tls, const std::string& programId);
     virtual void setPhase(const std::string& tls, int phase);
+
+private:
+    SumoBridge* sumo_;
 };
 
 }  // namespace sbsim::traffic

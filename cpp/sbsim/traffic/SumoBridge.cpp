@@ -9,7 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 #include <limits>
 
 #include "sbsim/kernel/OneLine.h"
@@ -169,22 +168,18 @@ void SumoBridge::handleMessage(kernel::Message& msg) {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point started = Clock::now();
     // A vehicle a command removed since the last step (a world story's closure takes out one SUMO
-    // inserted in that step) arrived then: libsumo lists it until the step begins, then forgets it.
-    // (One removed before it departed never ran: it neither departs nor arrives.)
-    std::vector<std::string> removed = libsumo::Simulation::getArrivedIDList();
-    std::sort(removed.begin(), removed.end());
+    // inserted in that step) arrived then. (One removed before it departed never ran: it neither
+    // departs nor arrives.) Nothing to do in a step unless a command removed one.
     std::vector<std::string> arrived;
-    std::set_difference(removed.begin(), removed.end(), lastArrived_.begin(), lastArrived_.end(),
-                        std::back_inserter(arrived));
+    arrived.swap(removedByCommand_);
     std::erase_if(arrived, [this](const std::string& id) { return !builder_.isRunning(id); });
     step();
     const Clock::time_point stepped = Clock::now();
     ++steps_;
     std::vector<std::string> departed = libsumo::Simulation::getDepartedIDList();
-    lastArrived_ = libsumo::Simulation::getArrivedIDList();
     std::sort(departed.begin(), departed.end());
-    std::sort(lastArrived_.begin(), lastArrived_.end());
-    arrived.insert(arrived.end(), lastArrived_.begin(), lastArrived_.end());
+    const std::vector<std::string> sumoArrived = libsumo::Simulation::getArrivedIDList();
+    arrived.insert(arrived.end(), sumoArrived.begin(), sumoArrived.end());
     std::sort(arrived.begin(), arrived.end());
     builder_.addVehicles(departed);
     builder_.removeVehicles(arrived);

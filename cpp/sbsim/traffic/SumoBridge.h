@@ -102,6 +102,11 @@ public:
     /// SUMO's version string, e.g. "SUMO v1_28_0" (asked of libsumo; SUMO must be loaded).
     std::string sumoVersion() const;
     double snapshotSeconds() const { return snapshotSeconds_; }
+    /// A command took `id` out of SUMO since the last step (NetworkController::removeVehicle: a
+    /// closure removes a vehicle SUMO inserted in that step). If it was running it arrived then, and
+    /// is reported with the next step's arrivals: libsumo lists such a removal only until that step
+    /// begins, and asking it every step would cost every run what only closures need.
+    void removedByCommand(std::string id) { removedByCommand_.push_back(std::move(id)); }
     /// What VehicleControllers tell of max-speed changes (the snapshot reads max speeds only then).
     MaxSpeedListener& maxSpeedListener() { return builder_; }
     /// SUMO's warnings so far, by kind (set a log on it before load() to keep them all).
@@ -127,7 +132,7 @@ private:
     kernel::Message stepMessage_{"sumo step"};
     kernel::Message endMessage_{"end of run"};
     SnapshotBuilder builder_;
-    std::vector<std::string> lastArrived_;  // libsumo's arrivals of the last step, sorted
+    std::vector<std::string> removedByCommand_;  // since the last step
     SnapshotColumns demanded_;
     VehicleSnapshot snapshot_;
     StderrCapture capture_;

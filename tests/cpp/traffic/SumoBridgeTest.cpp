@@ -5,6 +5,7 @@
 #include <unistd.h>
 #include <optional>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -13,6 +14,7 @@
 #include "SumoTestSupport.h"
 #include "TestPrinters.h"
 #include "sbsim/kernel/Simulation.h"
+#include "sbsim/traffic/NetworkController.h"
 #include "sbsim/traffic/SumoBridge.h"
 #include "sbsim/traffic/SumoRouteChecks.h"
 
@@ -299,6 +301,54 @@ TEST(SumoBridge, OtherEventsInterleaveWithSteps) {
     EXPECT_EQ(probe.trace,
               (std::vector<std::string>{"step 1 sumo 1", "tick 1 sumo 1", "latency 1.001 sumo 1", "step 2 sumo 2",
                                         "tick 2 sumo 2", "latency 2.001 sumo 2", "step 3 sumo 3", "tick 3 sumo 3"}));
+}
+
+TEST(SumoBridge, AVehicleACommandRemovedArrivesAtTheNextStep) {
+    // libsumo lists a vehicle removed between two steps only until the next step begins: the
+    // network controller tells the bridge, which reports it then, once, like SUMO's own arrivals.
+    // One removed in the step it departed (a closure's case) and one that has run for a while.
+    class Remover : public kernel::Listener {
+    public:
+        explicit Remover(SumoBridge& bridge) : network_(&bridge), bridge_(bridge) {}
+        std::vector<std::string> removed, arrivedAfter;
+        void receiveSignal(kernel::Module&, kernel::SignalId id, std::string_view value) override {
+            if (id == SumoBridge::departedSignal && removed.empty()) fresh_ = std::string(value);
+            if (id == SumoBridge::arrivedSignal) arrived_.emplace_back(value);
+        }
+        void receiveSignal(kernel::Module&, kernel::SignalId id, const kernel::Object&) override {
+            if (id != SumoBridge::stepSignal) return;
+            for (const std::string& a : arrived_) {
+                if (std::find(removed.begin(), removed.end(), a) != removed.end()) arrivedAfter.push_back(a);
+                EXPECT_FALSE(bridge_.snapshot().indexOf(a)) << a << " still in the snapshot";
+            }
+            arrived_.clear();
+            if (removed.empty() && fresh_) {
+                removed.push_back(*fresh_);  // departed in this very step
+                network_.removeVehicle(*fresh_);
+            } else if (removed.size() == 1 && bridge_.snapshot().size() > 1 && libsumo::Simulation::getTime() >= 20) {
+                removed.push_back(bridge_.snapshot().ids().back());  // running for a while
+                network_.removeVehicle(removed.back());
+            }
+        }
+
+    private:
+        traffic::NetworkController network_;
+        SumoBridge& bridge_;
+        std::optional<std::string> fresh_;
+        std::vector<std::string> arrived_;
+    };
+    traffic::SumoSettings settings = scenarioSettings();
+    settings.end = sec(40);
+    Simulation sim;
+    auto& bridge = sim.emplaceModule<SumoBridge>(settings);
+    Remover remover(bridge);
+    sim.subscribe(SumoBridge::departedSignal, remover);
+    sim.subscribe(SumoBridge::arrivedSignal, remover);
+    sim.subscribe(SumoBridge::stepSignal, remover);
+    sim.run();
+    ASSERT_EQ(remover.removed.size(), 2u);
+    EXPECT_NE(remover.removed[0], remover.removed[1]);
+    EXPECT_EQ(remover.arrivedAfter, remover.removed);  // each once, at the step after its removal
 }
 
 }  // namespace

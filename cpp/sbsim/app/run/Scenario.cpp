@@ -6,6 +6,7 @@
 #include "sbsim/app/run/RadioSetup.h"
 #include "sbsim/storyboard/CanvasFrame.h"
 #include "sbsim/traffic/EquippedView.h"
+#include "sbsim/traffic/NetworkController.h"
 
 namespace sbsim::app {
 
@@ -54,6 +55,8 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
     board_->hearStations(stations_);
     board_->setStatistics(statistics_);
     board_->setPenetration(equipment_->penetration());
+    // The vehicles a closure removes are told to the bridge, which reports them as arrived.
+    board_->setNetworkController(std::make_unique<traffic::NetworkController>(&sumo_));
     std::optional<traffic::EquippedView> view;
     if (equippedOnly) view.emplace(*equippedOnly);
     feed_ = std::make_unique<storyboard::BoardFeed>(sumo_, sumo_.snapshot(), *board_, std::move(view));

@@ -12,15 +12,32 @@ constexpr std::size_t kNamed = 10;  // vehicles named in the verdict; the rest a
 
 void NoRedLightRunning::prepare(const EvaluationContext& ctx) {
     const traffic::VehicleSnapshot& s = ctx.snapshot();
-    std::unordered_map<std::string, Where> now;
-    now.reserve(s.size());
+    // The last step's keys index the string table they were made with: the snapshot's own while it
+    // only grew, else the copy kept from then.
+    const bool sameTable = s.internGeneration() == generation_;
+    std::vector<std::string> oldStrings;
+    if (sameTable) {
+        strings_.insert(strings_.end(), s.interned().begin() + static_cast<std::ptrdiff_t>(strings_.size()),
+                        s.interned().end());
+    } else {
+        oldStrings.swap(strings_);
+        strings_ = s.interned();
+        generation_ = s.internGeneration();
+    }
+    const std::vector<std::string>& lastStrings = sameTable ? strings_ : oldStrings;
+    now_.clear();
+    // Both id lists are sorted: one merge pairs each vehicle with where it was a step ago.
+    std::size_t j = 0;
     for (traffic::VehicleSnapshot::Index i = 0; i < s.size(); ++i) {
         const std::string& id = s.ids()[i];
         if (!vehicles_.admits(ctx, id)) continue;
-        Where here{s.roadId(i), s.laneId(i)};
+        const std::int32_t road = s.roadKey(i);
+        const std::int32_t lane = s.laneKey(i);
+        while (j < last_.ids.size() && last_.ids[j] < id) ++j;
         // Only a move onto another road can pass a stop line: a lane change on one road cannot.
-        if (const auto it = last_.find(id); it != last_.end() && it->second.road != here.road) {
-            const auto passage = ctx.queries().signalPassage(id, it->second.lane, here.lane);
+        if (j < last_.ids.size() && last_.ids[j] == id &&
+            (sameTable ? last_.road[j] != road : lastStrings[last_.road[j]] != s.roadId(i))) {
+            const auto passage = ctx.queries().signalPassage(id, lastStrings[last_.lane[j]], s.laneId(i));
             if (passage && isRed(passage->state)) {
                 if (passages_++ == 0) {
                     first_ = fmt::format("{} at {} link {} ('{}') at t={} s", id, passage->link.signal,
@@ -29,9 +46,11 @@ void NoRedLightRunning::prepare(const EvaluationContext& ctx) {
                 if (runners_.insert(id).second) who_.push_back(id);
             }
         }
-        now.emplace(id, std::move(here));
+        now_.ids.push_back(id);
+        now_.road.push_back(road);
+        now_.lane.push_back(lane);
     }
-    last_ = std::move(now);  // vehicles that left (or teleport) are forgotten
+    std::swap(last_, now_);  // vehicles that left (or teleport) are forgotten
 }
 
 CriterionVerdict NoRedLightRunning::verdict(const CriterionRun& /*run*/) const {

@@ -1,8 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -32,11 +32,23 @@ public:
     static bool isRed(char state) { return state == 'r' || state == 'u'; }
 
 private:
-    struct Where {
-        std::string road, lane;
+    /// The vehicles of the set seen in one step, sorted as the snapshot's ids, with where they were
+    /// as the snapshot's interned keys (no string copied or hashed per vehicle and step).
+    struct Seen {
+        std::vector<std::string> ids;
+        std::vector<std::int32_t> road, lane;
+        void clear() {
+            ids.clear();
+            road.clear();
+            lane.clear();
+        }
     };
     VehicleSet vehicles_;
-    std::unordered_map<std::string, Where> last_;  // per vehicle seen in the last step
+    Seen last_, now_;  // the last step's vehicles; now_ is this step's, kept for its storage
+    // The last step's interned strings, so its keys still name their road and lane should the
+    // snapshot start another string table (hand-made snapshots do; a SUMO run's table only grows).
+    std::vector<std::string> strings_;
+    std::uint64_t generation_ = 0;
     std::size_t passages_ = 0;
     std::unordered_set<std::string> runners_;
     std::vector<std::string> who_;  // runners_ in the order of their first red passage
