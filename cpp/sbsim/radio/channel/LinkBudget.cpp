@@ -95,9 +95,7 @@ std::shared_ptr<const StepLinks> LinkBudget::computeLinks(Slot s, std::uint64_t 
     // The pairs are looked up (and made) here, serially, once a step: a frame's links then only
     // touch them, and the pool moves distinct pairs on.
     if (shadowing_ && (near.pairsAt != near.at || near.pairsGeneration != shadowing_->generation())) {
-        shadowing_->pairs(stations_.keys[s], near.fullKey, now, near.pair);
-        near.pairsAt = near.at;
-        near.pairsGeneration = shadowing_->generation();
+        findPairs(s, near, now);
     }
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     pool.run(
@@ -139,6 +137,37 @@ std::shared_ptr<const StepLinks> LinkBudget::computeLinks(Slot s, std::uint64_t 
     tiers_.interference += step.size() - n;
     tiers_.skipped += near.skipped;
     return near.links;
+}
+
+void LinkBudget::findPairs(Slot s, Neighbourhood& near, kernel::SimTime now) {
+    const std::uint64_t self = stations_.keys[s];
+    if (near.pairsGeneration != shadowing_->generation() || near.pairKeys.empty()) {
+        shadowing_->pairs(self, near.fullKey, now, near.pair);
+    } else {
+        // An index is the pair's for as long as no sweep freed pairs (the generation): the last
+        // step's is as good as a lookup, and the same pair.
+        constexpr std::size_t kWindow = 4;
+        const std::vector<std::uint64_t>& old = near.pairKeys;
+        std::vector<CorrelatedShadowing::Index>& out = near.scratch;
+        out.resize(near.fullKey.size());
+        std::size_t p = 0;
+        for (std::size_t k = 0; k < near.fullKey.size(); ++k) {
+            const std::uint64_t key = near.fullKey[k];
+            std::size_t q = p;
+            const std::size_t last = std::min(old.size(), p + kWindow);
+            while (q < last && old[q] != key) ++q;
+            if (q < last) {
+                out[k] = near.pair[q];
+                p = q + 1;
+            } else {
+                out[k] = shadowing_->pair(self, key, now);
+            }
+        }
+        near.pair.swap(out);
+    }
+    near.pairKeys = near.fullKey;
+    near.pairsAt = near.at;
+    near.pairsGeneration = shadowing_->generation();
 }
 
 void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {

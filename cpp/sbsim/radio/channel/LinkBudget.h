@@ -76,10 +76,16 @@ private:
         /// The full links' shadowing pairs, looked up at the step's first frame (a generation of
         /// CorrelatedShadowing: a sweep that freed pairs makes them stale).
         std::vector<CorrelatedShadowing::Index> pair;
+        std::vector<std::uint64_t> pairKeys;  // the receivers `pair` is for (the last step's)
+        std::vector<CorrelatedShadowing::Index> scratch;
         std::optional<kernel::SimTime> pairsAt;
         std::uint64_t pairsGeneration = 0;
     };
     void prepareStep(Slot first, kernel::ParallelFor& pool);
+    /// near.pair for near.fullKey: the last step's index of a receiver still near where it was in
+    /// the list, else a lookup (the table is a cache miss per pair; between two 0.1 s steps a
+    /// sender's receivers barely change).
+    void findPairs(Slot s, Neighbourhood& near, kernel::SimTime now);
     /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
     /// computed on distinct threads.
     void computeNeighbourhood(Slot s);

@@ -19,14 +19,6 @@ Reception::Reception(const ChannelSettings& settings, Listener& listener)
       floorMw_(dbToLinear(settings.interferenceFloorDbm)),
       ratioDb_(linearToDb(settings.bandwidthHz / (settings.rateMbps * 1e6))) {}
 
-Reception::Units Reception::unitsOf(double mw) {
-    // Whole milliwatts and the fraction apart, each exact in 64 bits (a link's power is far below
-    // 2^64 mW): the same value as a direct conversion, without libgcc's out-of-line one per link.
-    const auto whole = static_cast<std::uint64_t>(mw);
-    const auto fraction = static_cast<std::uint64_t>((mw - static_cast<double>(whole)) * kUnitsPerMw);
-    return (static_cast<Units>(whole) << 64) + fraction;
-}
-
 double Reception::mwOf(Units units) { return static_cast<double>(units) / kUnitsPerMw; }
 
 void Reception::addStation() {

@@ -80,8 +80,15 @@ public:
                                      double& sinrDb) const;
 
     using Units = StepLinks::Units;
-    /// `mw` in units of 2^-64 mW, truncated.
-    static Units unitsOf(double mw);
+    /// `mw` in units of 2^-64 mW, truncated: whole milliwatts and the fraction apart, each exact in
+    /// 64 bits (a link's power is far below 2^64 mW), the value a direct conversion gives without
+    /// libgcc's out-of-line one.
+    static Units unitsOf(double mw) {
+        constexpr double kUnitsPerMw = 18446744073709551616.0;  // 2^64: scaling by it is exact
+        const auto whole = static_cast<std::uint64_t>(mw);
+        const auto fraction = static_cast<std::uint64_t>((mw - static_cast<double>(whole)) * kUnitsPerMw);
+        return (static_cast<Units>(whole) << 64) + fraction;
+    }
 
 private:
     static double mwOf(Units units);
