@@ -246,11 +246,11 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     const StepLinks& step = *tx->step;
     std::size_t drawn = 0;
     for (std::size_t k = 0; k < step.size(); ++k) {
-        if (!step.drawn[k]) {
+        if (step.tier[k] != StepLinks::kDrawn) {
             // Interference only: it leaves the power its receiver hears, and is lost below the
             // sensing threshold (or to half-duplex).
             const Slot r = step.receivers[k];
-            const bool counted = reception_.counts(step.mw[k]);
+            const bool counted = step.tier[k] == StepLinks::kInterference;
             if (counted) {
                 const double total = reception_.quietEnds(r, step.units[k]);
                 if (access_.contending(r) && reception_.changesSense(r, total)) flush();

@@ -33,6 +33,7 @@ LinkBudget::LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Ob
     floorMarginDb_ = 2 * settings_.shadowingSigmaDb + (settings_.fading == ChannelSettings::Fading::None ? 0.0 : 5.0);
     // E[10^(σZ/10)] = exp((σ ln10 / 10)² / 2): an interference-only link adds its mean in mW.
     meanGainDb_ = settings_.shadowingSigmaDb * settings_.shadowingSigmaDb * std::log(10.0) / 20;
+    floorMw_ = dbToLinear(settings_.interferenceFloorDbm);
     const auto above = [&](double d) { return meanPowerDbm(d) + floorMarginDb_ >= settings_.interferenceFloorDbm; };
     double lo = 1;
     double hi = 2;
@@ -194,7 +195,9 @@ void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {
 void LinkBudget::computeNeighbourhood(Slot s) {
     Neighbourhood& near = near_[s];
     near.at = stations_.refreshedAt;
-    std::vector<Slot>& candidates = near.candidates;
+    // The grid's answer, per thread (neighbourhoods are computed on the pool): per station it
+    // would be a few kB times every station.
+    thread_local std::vector<Slot> candidates;
     candidates.clear();
     const auto index = snapshot_.indexOf(stations_.ids[s]);
     // The grid's order (by cell, then vehicle index) is the same whatever the thread count,
@@ -245,12 +248,10 @@ void LinkBudget::computeNeighbourhood(Slot s) {
         step.bin.push_back(static_cast<std::uint32_t>(distance / kDistanceBin));
         if (tiers && mean < fullFrom) {
             const double mw = dbToLinear(mean + meanGainDb_);
-            step.drawn.push_back(0);
-            step.mw.push_back(mw);
+            step.tier.push_back(mw >= floorMw_ ? StepLinks::kInterference : StepLinks::kBelowFloor);
             step.units.push_back(Reception::unitsOf(mw));
         } else {
-            step.drawn.push_back(1);
-            step.mw.push_back(0);
+            step.tier.push_back(StepLinks::kDrawn);
             step.units.push_back(0);
             near.full.push_back(static_cast<std::uint32_t>(step.receivers.size() - 1));
             near.fullKey.push_back(stations_.keys[r]);

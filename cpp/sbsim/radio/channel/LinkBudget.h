@@ -101,6 +101,7 @@ private:
     double cutoff_ = 0;
     double floorMarginDb_ = 0;  // the cutoff's margin for shadowing and fading
     double meanGainDb_ = 0;     // shadowing's linear mean, in dB: σ² ln10 / 20
+    double floorMw_ = 0;        // Reception's floor: an interference-only link below it adds nothing
 
     std::vector<Neighbourhood> near_;
     std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for

@@ -42,14 +42,14 @@ void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>
     // stays sequential.
     std::size_t j = 0;
     for (std::size_t k = 0; k < step.size(); ++k) {
-        if (step.drawn[k]) {
+        if (step.tier[k] == StepLinks::kDrawn) {
             linkStarts(id, drawn[j++]);
             continue;
         }
         // Interference only: below the sensing threshold, never detected, never decoded.
         const Slot r = step.receivers[k];
         if (halfAtStart != nullptr && sending_[r] != 0) halfAtStart->push_back(static_cast<std::uint32_t>(k));
-        if (step.mw[k] < floorMw_) continue;
+        if (step.tier[k] == StepLinks::kBelowFloor) continue;
         const Units total = heard_[r] + step.units[k];
         heard_[r] = total;
         if (locked_[r] != 0) {

@@ -57,8 +57,6 @@ public:
     /// links (by index in `step`) whose receiver was sending are added to it.
     void frameStarts(FrameId id, const StepLinks& step, std::vector<Link>& drawn,
                      std::vector<std::uint32_t>* halfAtStart = nullptr);
-    /// Whether an interference-only link of `mw` counts (at or above the floor).
-    bool counts(double mw) const { return mw >= floorMw_; }
     /// An interference-only link of `units` (counted) left station `r`: the power it hears without it.
     double quietEnds(Slot r, StepLinks::Units units) {
         heard_[r] -= units;

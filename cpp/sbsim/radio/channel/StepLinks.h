@@ -9,8 +9,8 @@ namespace sbsim::radio {
 
 /// A sender's links for one SUMO step, shared by every frame it sends in that step and left
 /// unchanged while one is on the air: its receivers in the order a frame reaches them, each link's
-/// distance bin and distance, whether it is drawn per frame (its Link then in the frame's own
-/// vector, in the same order) and, for an interference-only link, its fixed power. Frames read the
+/// distance bin and distance, its tier — drawn per frame (its Link then in the frame's own vector,
+/// in the same order) or interference only — and an interference-only link's fixed power. Frames read the
 /// interference-only links here instead of each writing its own copy of them (on a full city four
 /// links in five).
 struct StepLinks {
@@ -20,9 +20,13 @@ struct StepLinks {
     std::vector<Slot> receivers;
     std::vector<std::uint32_t> bin;  // distance / Medium::kDistanceBin
     std::vector<double> distance;
-    std::vector<std::uint8_t> drawn;  // 1: drawn per frame
-    std::vector<Units> units;         // an interference-only link's power (0 for a drawn one)
-    std::vector<double> mw;           // the same in mW
+    enum Tier : std::uint8_t {
+        kBelowFloor = 0,    // interference only, below the floor: no part of what its receiver hears
+        kInterference = 1,  // interference only: adds `units` to what its receiver hears
+        kDrawn = 2,         // drawn per frame
+    };
+    std::vector<std::uint8_t> tier;
+    std::vector<Units> units;  // an interference-only link's power (0 for a drawn one)
     std::size_t drawnCount = 0;
 
     std::size_t size() const { return receivers.size(); }
@@ -30,9 +34,8 @@ struct StepLinks {
         receivers.clear();
         bin.clear();
         distance.clear();
-        drawn.clear();
+        tier.clear();
         units.clear();
-        mw.clear();
         drawnCount = 0;
     }
 };

@@ -33,9 +33,8 @@ StepLinks allDrawn(const std::vector<Link>& links) {
         step.receivers.push_back(link.receiver);
         step.bin.push_back(0);
         step.distance.push_back(link.distance);
-        step.drawn.push_back(1);
+        step.tier.push_back(StepLinks::kDrawn);
         step.units.push_back(0);
-        step.mw.push_back(0);
     }
     step.drawnCount = links.size();
     return step;
@@ -139,8 +138,7 @@ TEST_F(ReceptionTest, AnInterferenceOnlyLinkAddsItsPowerButIsNeverDetected) {
         quiet.receivers.push_back(r);
         quiet.bin.push_back(0);
         quiet.distance.push_back(500);
-        quiet.drawn.push_back(0);
-        quiet.mw.push_back(dbToLinear(-90));
+        quiet.tier.push_back(StepLinks::kInterference);
         quiet.units.push_back(Reception::unitsOf(dbToLinear(-90)));
     }
     std::vector<Link> none;
