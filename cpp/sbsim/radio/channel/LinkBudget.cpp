@@ -12,6 +12,8 @@ namespace sbsim::radio {
 namespace {
 /// A neighbourhood is hundreds of links: a few stations make a chunk worth a worker's wake-up.
 constexpr std::size_t kStationsPerChunk = 4;
+/// A building-crossing test is a few hundred ns: a few links make a chunk worth a wake-up.
+constexpr std::size_t kObstacleLinksPerChunk = 8;
 constexpr double kDistanceBin = Medium::kDistanceBin;
 }  // namespace
 
@@ -80,6 +82,7 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime no
     if (batchedAt_ != stations_.refreshedAt) prepareStep(s, pool);
     Neighbourhood& near = near_[s];
     if (near.at != stations_.refreshedAt) computeNeighbourhood(s);
+    if (near.obstaclesPending) applyObstacles(s, pool);
     if (sentInStep_[s] != step_) {
         sentInStep_[s] = step_;
         sentThisStep_.push_back(s);
@@ -181,12 +184,29 @@ void LinkBudget::computeNeighbourhood(Slot s) {
         const Slot r = near.receivers[k];
         const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
         near.distance[k] = (to - from).norm();
-        double mean = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
-        if (obstacles) mean -= obstacles_->lossDb(from, to);
-        near.meanDbm[k] = mean;
+        near.meanDbm[k] = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
         near.key[k] = stations_.keys[r];
         near.bin[k] = static_cast<std::uint32_t>(near.distance[k] / kDistanceBin);
     }
+    near.obstaclesPending = obstacles && n > 0;
+}
+
+void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
+    // Apart from the step's batch: the batch guesses the step's senders from the last step's,
+    // and with CAMs (1 to 10 Hz) half its guesses do not send, so the dearest part waits for the
+    // frame. Within the step the snapshot's positions are those the neighbourhood was made from.
+    Neighbourhood& near = near_[s];
+    const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
+    pool.run(
+        near.receivers.size(),
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t k = begin; k < end; ++k) {
+                const Slot r = near.receivers[k];
+                near.meanDbm[k] -= obstacles_->lossDb(from, {stations_.x[r], stations_.y[r]});
+            }
+        },
+        kObstacleLinksPerChunk);
+    near.obstaclesPending = false;
 }
 
 }  // namespace sbsim::radio

@@ -63,11 +63,14 @@ private:
         std::vector<double> distance, meanDbm;
         std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
         std::vector<std::uint32_t> bin;  // distance / kDistanceBin
+        bool obstaclesPending = false;   // meanDbm lacks the buildings' loss until the sender sends
     };
     void prepareStep(Slot first, kernel::ParallelFor& pool);
     /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
     /// computed on distinct threads.
     void computeNeighbourhood(Slot s);
+    /// Subtracts the buildings' loss from near_[s]'s mean powers, its links spread over `pool`.
+    void applyObstacles(Slot s, kernel::ParallelFor& pool);
 
     const ChannelSettings& settings_;
     std::shared_ptr<const Obstacles> obstacles_;
