@@ -54,27 +54,33 @@ bool within(const Eigen::Vector2d& p, const Eigen::Vector4d& box) {
     return p.x() >= box[0] && p.y() >= box[1] && p.x() <= box[2] && p.y() <= box[3];
 }
 
-/// Whether the segment a→b meets the box (min x, min y, max x, max y): the slab test.
-bool meets(const Eigen::Vector2d& a, const Eigen::Vector2d& d, const Eigen::Vector4d& box) {
-    double t0 = 0;
-    double t1 = 1;
-    for (int axis = 0; axis < 2; ++axis) {
-        const double lo = box[axis];
-        const double hi = box[axis + 2];
-        if (d[axis] == 0) {
-            if (a[axis] < lo || a[axis] > hi) return false;
-            continue;
+/// The segment a→a+d, with what the slab test needs per box computed once per link.
+struct Ray {
+    Eigen::Vector2d a, d, inverse;
+    Ray(const Eigen::Vector2d& from, const Eigen::Vector2d& delta)
+        : a(from), d(delta), inverse(delta.x() != 0 ? 1 / delta.x() : 0, delta.y() != 0 ? 1 / delta.y() : 0) {}
+
+    /// Whether the segment meets the box (min x, min y, max x, max y): the slab test.
+    bool meets(const Eigen::Vector4d& box) const {
+        double t0 = 0;
+        double t1 = 1;
+        for (int axis = 0; axis < 2; ++axis) {
+            const double lo = box[axis];
+            const double hi = box[axis + 2];
+            if (d[axis] == 0) {
+                if (a[axis] < lo || a[axis] > hi) return false;
+                continue;
+            }
+            double tLo = (lo - a[axis]) * inverse[axis];
+            double tHi = (hi - a[axis]) * inverse[axis];
+            if (tLo > tHi) std::swap(tLo, tHi);
+            t0 = std::max(t0, tLo);
+            t1 = std::min(t1, tHi);
+            if (t0 > t1) return false;
         }
-        const double inverse = 1 / d[axis];
-        double tLo = (lo - a[axis]) * inverse;
-        double tHi = (hi - a[axis]) * inverse;
-        if (tLo > tHi) std::swap(tLo, tHi);
-        t0 = std::max(t0, tLo);
-        t1 = std::min(t1, tHi);
-        if (t0 > t1) return false;
+        return true;
     }
-    return true;
-}
+};
 
 /// Per thread: which buildings the current query has seen (a stamp per building, the query's
 /// serial number), so a building listed in several of the line's cells is tested once.
@@ -85,6 +91,13 @@ struct Seen {
     std::vector<double> ts;
     std::vector<std::pair<std::uint32_t, Obstacles::Crossing>> hits;
 };
+
+/// This thread's scratch, looked up once per link (a thread_local in a shared library costs a
+/// call at each use).
+Seen& threadSeen() {
+    thread_local Seen seen;
+    return seen;
+}
 
 }  // namespace
 
@@ -185,15 +198,29 @@ void Obstacles::addCrossing(std::size_t k, const Eigen::Vector2d& a, const Eigen
     const Eigen::Vector2d* ring = points_.data() + firstPoint_[k];
     const std::size_t n = firstPoint_[k + 1] - firstPoint_[k];
     const Eigen::Vector2d r = b - a;
+    // A wall whose ends lie both on one side of the line, farther than a micrometre from it,
+    // cannot cross it: the side is (p - a) x r, distance times length, one product per corner
+    // instead of the full test per wall. The tolerance is far above the rounding of either.
+    const double tolerance = 1e-6 * length;
+    const auto side = [&](const Eigen::Vector2d& p) { return (p.x() - a.x()) * r.y() - (p.y() - a.y()) * r.x(); };
+    const auto apart = [&](double u, double v) {
+        return (u > tolerance && v > tolerance) || (u < -tolerance && v < -tolerance);
+    };
     ts.clear();
+    const double first = side(ring[0]);
+    double here = first;
     for (std::size_t i = 0; i < n; ++i) {
+        const double next = i + 1 == n ? first : side(ring[i + 1]);
         double t = 0;
-        if (cross(a, r, ring[i], ring[i + 1 == n ? 0 : i + 1], t)) ts.push_back(t);
+        if (!apart(here, next) && cross(a, r, ring[i], ring[i + 1 == n ? 0 : i + 1], t)) ts.push_back(t);
+        here = next;
     }
     // Outside the (widened) box, the even-odd walk cannot find a inside: no need to walk.
     const bool startsInside = within(a, boxes_[k]) && inside(ring, n, a);
     if (ts.empty() && !startsInside) return;
-    std::sort(ts.begin(), ts.end());
+    for (std::size_t i = 1; i < ts.size(); ++i) {  // a few crossings: insertion sort
+        for (std::size_t j = i; j > 0 && ts[j] < ts[j - 1]; --j) std::swap(ts[j], ts[j - 1]);
+    }
     total.walls += static_cast<int>(ts.size());
     // Alternate in and out along the line from where a is.
     bool in = startsInside;
@@ -224,7 +251,7 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
     Crossing total;
     if (boxes_.empty()) return total;
     const Grid& g = grid();
-    thread_local Seen seen;
+    Seen& seen = threadSeen();
     if (seen.owner != this || seen.stamp.size() != boxes_.size()) {
         seen.owner = this;
         seen.serial = 0;
@@ -236,6 +263,7 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
     }
     seen.hits.clear();
     const Eigen::Vector2d d = b - a;
+    const Ray ray(a, d);
     const double length = d.norm();
     const double yLow = std::min(a.y(), b.y());
     const double yHigh = std::max(a.y(), b.y());
@@ -268,7 +296,7 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
                 const std::uint32_t k = g.items[m];
                 if (seen.stamp[k] == seen.serial) continue;
                 seen.stamp[k] = seen.serial;
-                if (!meets(a, d, boxes_[k])) continue;
+                if (!ray.meets(boxes_[k])) continue;
                 Crossing one;
                 addCrossing(k, a, b, length, seen.ts, one);
                 if (one.walls > 0 || one.insideMetres != 0) seen.hits.emplace_back(k, one);
