@@ -92,9 +92,9 @@ struct Seen {
     std::vector<std::pair<std::uint32_t, Obstacles::Crossing>> hits;
 };
 
-/// This thread's scratch, looked up once per link (a thread_local in a shared library costs a
-/// call at each use).
-Seen& threadSeen() {
+/// This thread's scratch, looked up once per link: a thread_local in a shared library costs a
+/// call at each use, and inlined, the compiler repeated that call at each of them.
+[[gnu::noinline]] Seen& threadSeen() {
     thread_local Seen seen;
     return seen;
 }
@@ -273,30 +273,48 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
     if (yHigh < g.y0 || xHigh < g.x0 || yLow > g.y0 + static_cast<double>(g.ny) * g.cell ||
         xLow > g.x0 + static_cast<double>(g.nx) * g.cell)
         return total;
-    // Row by row of cells, the stretch of x the line covers within the row (widened by the margin).
-    const double slope = d.y() != 0 ? d.x() / d.y() : 0;
-    const long lastRow = g.row(yHigh);
-    for (long j = g.row(yLow); j <= lastRow; ++j) {
-        double x0 = xLow;
-        double x1 = xHigh;
-        if (d.y() != 0) {
-            const double y0 = std::max(yLow, g.y0 + static_cast<double>(j) * g.cell);
-            const double y1 = std::min(yHigh, g.y0 + static_cast<double>(j + 1) * g.cell);
-            x0 = a.x() + (y0 - a.y()) * slope;
-            x1 = a.x() + (y1 - a.y()) * slope;
-            if (x0 > x1) std::swap(x0, x1);
-            x0 = std::max(x0, xLow);
-            x1 = std::min(x1, xHigh);
+    // Plain pointers: the stamps' stores would otherwise make the compiler reload the grid's.
+    const std::uint32_t* start = g.start.data();
+    const std::uint32_t* items = g.items.data();
+    const Eigen::Vector4d* boxes = boxes_.data();
+    std::uint32_t* stamp = seen.stamp.data();
+    const std::uint32_t serial = seen.serial;
+    // Band by band of cells across the line's lesser extent (rows for a line more along x than
+    // y, else columns), the stretch of the other axis it covers within the band, widened by the
+    // margin: a cell's index along an axis as the grid placed the boxes by.
+    const int v = std::abs(d.y()) <= std::abs(d.x()) ? 1 : 0;  // the bands' axis
+    const int u = 1 - v;
+    const double origin[2] = {g.x0, g.y0};
+    const long count[2] = {g.nx, g.ny};
+    const std::size_t stride[2] = {1, static_cast<std::size_t>(g.nx)};
+    const double low[2] = {xLow, yLow};
+    const double high[2] = {xHigh, yHigh};
+    const auto index = [&](int axis, double value) {
+        return Grid::clamp(std::floor((value - origin[axis]) / g.cell), count[axis]);
+    };
+    const double slope = d[v] != 0 ? d[u] / d[v] : 0;
+    const long lastBand = index(v, high[v]);
+    for (long j = index(v, low[v]); j <= lastBand; ++j) {
+        double from = low[u];
+        double to = high[u];
+        if (d[v] != 0) {
+            const double v0 = std::max(low[v], origin[v] + static_cast<double>(j) * g.cell);
+            const double v1 = std::min(high[v], origin[v] + static_cast<double>(j + 1) * g.cell);
+            from = a[u] + (v0 - a[v]) * slope;
+            to = a[u] + (v1 - a[v]) * slope;
+            if (from > to) std::swap(from, to);
+            from = std::max(from, low[u]);
+            to = std::min(to, high[u]);
         }
-        const long lastColumn = g.column(x1 + kMargin);
-        const std::size_t rowStart = static_cast<std::size_t>(j * g.nx);
-        for (long i = g.column(x0 - kMargin); i <= lastColumn; ++i) {
-            const std::size_t c = rowStart + static_cast<std::size_t>(i);
-            for (std::uint32_t m = g.start[c]; m < g.start[c + 1]; ++m) {
-                const std::uint32_t k = g.items[m];
-                if (seen.stamp[k] == seen.serial) continue;
-                seen.stamp[k] = seen.serial;
-                if (!ray.meets(boxes_[k])) continue;
+        const long last = index(u, to + kMargin);
+        const std::size_t bandStart = static_cast<std::size_t>(j) * stride[v];
+        for (long i = index(u, from - kMargin); i <= last; ++i) {
+            const std::size_t c = bandStart + static_cast<std::size_t>(i) * stride[u];
+            for (std::uint32_t m = start[c], end = start[c + 1]; m < end; ++m) {
+                const std::uint32_t k = items[m];
+                if (stamp[k] == serial) continue;
+                stamp[k] = serial;
+                if (!ray.meets(boxes[k])) continue;
                 Crossing one;
                 addCrossing(k, a, b, length, seen.ts, one);
                 if (one.walls > 0 || one.insideMetres != 0) seen.hits.emplace_back(k, one);
@@ -304,8 +322,9 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
         }
     }
     // Summed in the buildings' order, as crossingEveryBuilding() does: the same result to the bit.
-    if (seen.hits.size() > 1) {
-        std::sort(seen.hits.begin(), seen.hits.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    auto& hits = seen.hits;
+    for (std::size_t i = 1; i < hits.size(); ++i) {  // a few buildings: insertion sort
+        for (std::size_t j = i; j > 0 && hits[j].first < hits[j - 1].first; --j) std::swap(hits[j], hits[j - 1]);
     }
     for (const auto& [k, one] : seen.hits) {
         total.walls += one.walls;
