@@ -233,7 +233,16 @@ void Obstacles::addCrossing(std::size_t k, const Eigen::Vector2d& a, const Eigen
     if (in) total.insideMetres += (1 - last) * length;
 }
 
+namespace {
+/// Whether the link is walked from b: the lesser end (by x, then y) is its start, so the result is
+/// the same from either end to the bit, and a pair's loss computed once serves both ways.
+bool reversed(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return b.x() < a.x() || (b.x() == a.x() && b.y() < a.y());
+}
+}  // namespace
+
 Obstacles::Crossing Obstacles::crossingEveryBuilding(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+    if (reversed(a, b)) return crossingEveryBuilding(b, a);
     Crossing total;
     const double length = (b - a).norm();
     std::vector<double> ts;
@@ -247,6 +256,7 @@ Obstacles::Crossing Obstacles::crossingEveryBuilding(const Eigen::Vector2d& a, c
 }
 
 Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
+    if (reversed(a, b)) return crossing(b, a);
     linksEvaluated_.fetch_add(1, std::memory_order_relaxed);
     Crossing total;
     if (boxes_.empty()) return total;

@@ -39,7 +39,7 @@ public:
 
     /// Walls crossed and metres inside, over every building, on the straight line from a to b:
     /// the buildings summed in the order they were added, so the result is exactly that of
-    /// crossingEveryBuilding().
+    /// crossingEveryBuilding(); walked from the lesser end, so the same from either end.
     Crossing crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
     /// The same by walking every building's walls, no grid, no culling: the reference the grid
     /// must equal (tests and checks).
