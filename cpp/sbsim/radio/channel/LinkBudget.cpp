@@ -196,16 +196,38 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
     // and with CAMs (1 to 10 Hz) half its guesses do not send, so the dearest part waits for the
     // frame. Within the step the snapshot's positions are those the neighbourhood was made from.
     Neighbourhood& near = near_[s];
+    if (obstacleStep_ != step_) {
+        obstacleStep_ = step_;
+        obstacleDb_.clear();
+    }
+    const auto pair = [s](Slot r) {
+        const auto [lo, hi] = std::minmax(s, r);
+        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) | static_cast<std::uint32_t>(hi);
+    };
+    obstacleTodo_.clear();
+    for (std::size_t k = 0; k < near.receivers.size(); ++k) {
+        if (const auto it = obstacleDb_.find(pair(near.receivers[k])); it != obstacleDb_.end()) {
+            near.meanDbm[k] -= it->second;
+        } else {
+            obstacleTodo_.push_back(k);
+        }
+    }
+    obstacleTodoDb_.resize(obstacleTodo_.size());
     const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
     pool.run(
-        near.receivers.size(),
+        obstacleTodo_.size(),
         [&](std::size_t begin, std::size_t end) {
-            for (std::size_t k = begin; k < end; ++k) {
-                const Slot r = near.receivers[k];
-                near.meanDbm[k] -= obstacles_->lossDb(from, {stations_.x[r], stations_.y[r]});
+            for (std::size_t i = begin; i < end; ++i) {
+                const Slot r = near.receivers[obstacleTodo_[i]];
+                obstacleTodoDb_[i] = obstacles_->lossDb(from, {stations_.x[r], stations_.y[r]});
             }
         },
         kObstacleLinksPerChunk);
+    for (std::size_t i = 0; i < obstacleTodo_.size(); ++i) {
+        const std::size_t k = obstacleTodo_[i];
+        near.meanDbm[k] -= obstacleTodoDb_[i];
+        obstacleDb_.emplace(pair(near.receivers[k]), obstacleTodoDb_[i]);
+    }
     near.obstaclesPending = false;
 }
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include "sbsim/kernel/ParallelFor.h"
@@ -90,6 +91,12 @@ private:
     std::vector<Slot> sentThisStep_, batch_;
     traffic::NeighbourGrid grid_;
     std::uint64_t linksComputed_ = 0;
+    // The buildings' loss per pair of slots (lesser first) within the step obstacleStep_: the
+    // same both ways, so a pair whose two stations send in one step is walked once.
+    std::unordered_map<std::uint64_t, double> obstacleDb_;
+    std::uint64_t obstacleStep_ = 0;
+    std::vector<std::size_t> obstacleTodo_;
+    std::vector<double> obstacleTodoDb_;
 };
 
 }  // namespace sbsim::radio
