@@ -198,16 +198,12 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
     Neighbourhood& near = near_[s];
     if (obstacleStep_ != step_) {
         obstacleStep_ = step_;
-        obstacleDb_.clear();
+        obstacleDb_.newStep();
     }
-    const auto pair = [s](Slot r) {
-        const auto [lo, hi] = std::minmax(s, r);
-        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(lo)) << 32) | static_cast<std::uint32_t>(hi);
-    };
     obstacleTodo_.clear();
     for (std::size_t k = 0; k < near.receivers.size(); ++k) {
-        if (const auto it = obstacleDb_.find(pair(near.receivers[k])); it != obstacleDb_.end()) {
-            near.meanDbm[k] -= it->second;
+        if (const double* loss = obstacleDb_.find(s, near.receivers[k])) {
+            near.meanDbm[k] -= *loss;
         } else {
             obstacleTodo_.push_back(k);
         }
@@ -226,7 +222,7 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
     for (std::size_t i = 0; i < obstacleTodo_.size(); ++i) {
         const std::size_t k = obstacleTodo_[i];
         near.meanDbm[k] -= obstacleTodoDb_[i];
-        obstacleDb_.emplace(pair(near.receivers[k]), obstacleTodoDb_[i]);
+        obstacleDb_.add(s, near.receivers[k], obstacleTodoDb_[i]);
     }
     near.obstaclesPending = false;
 }

@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 #include "sbsim/kernel/ParallelFor.h"
@@ -12,6 +11,7 @@
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/ChannelStations.h"
 #include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/channel/PairLosses.h"
 #include "sbsim/radio/propagation/CorrelatedShadowing.h"
 #include "sbsim/radio/propagation/NakagamiFading.h"
 #include "sbsim/radio/propagation/Obstacles.h"
@@ -93,7 +93,7 @@ private:
     std::uint64_t linksComputed_ = 0;
     // The buildings' loss per pair of slots (lesser first) within the step obstacleStep_: the
     // same both ways, so a pair whose two stations send in one step is walked once.
-    std::unordered_map<std::uint64_t, double> obstacleDb_;
+    PairLosses obstacleDb_;
     std::uint64_t obstacleStep_ = 0;
     std::vector<std::size_t> obstacleTodo_;
     std::vector<double> obstacleTodoDb_;
