@@ -121,7 +121,8 @@ def make_highway(folder: Path, c: Config) -> Path:
     return cfg
 
 
-def run(c: Config, seconds: float, folder: Path, threads: int, seed: int) -> dict:
+def run(c: Config, seconds: float, folder: Path, threads: int, seed: int, extra: tuple[str, ...] = ()) -> dict:
+    """One run of config `c`; `extra` arguments go to sbsim as they are (e.g. more --param)."""
     cfg = make_highway(folder, c)
     services = folder / f"{c.name}.services.xml"
     fifo = Path(tempfile.mkdtemp()) / "messages.jsonl"
@@ -144,11 +145,14 @@ def run(c: Config, seconds: float, folder: Path, threads: int, seed: int) -> dic
         "radio_trace_range=520",
         "--messages",
         str(fifo),
+        "--messages-events",
+        "tx,rx,lost",
         "--threads",
         str(threads),
         "--seed",
         str(seed),
         "--quiet",
+        *extra,
     ]
     proc = subprocess.Popen(cmd, stderr=subprocess.PIPE, text=True)
     err: list[str] = []
@@ -171,6 +175,8 @@ def run(c: Config, seconds: float, folder: Path, threads: int, seed: int) -> dic
                     middle[(e["station"], e["seq"])] = None
                     cbr_sum += e["cbr"]
                     cbr_n += 1
+                continue
+            if e["event"] not in ("rx", "lost"):
                 continue
             key = (e["sender"], e["seq"])
             if key not in middle or e.get("reason") == "queue":

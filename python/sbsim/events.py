@@ -7,7 +7,14 @@ import os
 from collections.abc import Callable
 from typing import Any
 
-__all__ = ["EVENT_FIELDS", "WORLD_EVENT_TYPES", "EventLogError", "read_events", "read_json_lines"]
+__all__ = [
+    "EQUIPPED_EVENT_TYPE",
+    "EVENT_FIELDS",
+    "WORLD_EVENT_TYPES",
+    "EventLogError",
+    "read_events",
+    "read_json_lines",
+]
 
 
 class EventLogError(ValueError):
@@ -23,6 +30,9 @@ class EventLogError(ValueError):
 EVENT_FIELDS: dict[str, type | tuple[type, ...]] = {"t": (int, float), "type": str, "story": str, "vehicle": str}
 #: Event types a WorldStory writes with ``"vehicle": null`` (it acts on the network, not on a vehicle).
 WORLD_EVENT_TYPES = ("activate", "deactivate")
+#: The event a vehicle that departs with V2X equipment writes (runs with ``--services`` only), with
+#: ``"story": null``: it is no story's.
+EQUIPPED_EVENT_TYPE = "equipped"
 
 
 def read_json_lines(
@@ -64,7 +74,8 @@ def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
     """The events of an ``--events`` file, one dict per line (``pandas.read_json(path, lines=True)`` works too).
 
     Raises :class:`EventLogError` (naming the line) for a line that is not a JSON object with ``t``,
-    ``type``, ``story`` and ``vehicle`` (``None`` in a WorldStory's activate and deactivate lines);
+    ``type``, ``story`` and ``vehicle`` (``None`` in a WorldStory's activate and deactivate lines;
+    ``story`` is ``None`` in an ``equipped`` line, a vehicle that departed with V2X equipment);
     blank lines are skipped. A file that cannot be read raises :class:`OSError`, one that is not
     UTF-8 :class:`UnicodeDecodeError`.
     """
@@ -73,6 +84,8 @@ def read_events(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
         fields = dict(EVENT_FIELDS)
         if event.get("vehicle", 0) is None and event.get("type") in WORLD_EVENT_TYPES:
             del fields["vehicle"]
+        if event.get("story", 0) is None and event.get("type") == EQUIPPED_EVENT_TYPE:
+            del fields["story"]
         require_fields(path, number, event, fields)
 
     return read_json_lines(path, check)

@@ -22,7 +22,7 @@ from sbsim.events import EventLogError, read_json_lines, require_fields
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["MESSAGE_FIELDS", "MessageTraceError", "Filters", "read_message_lines", "read_messages"]
+__all__ = ["MESSAGE_FIELDS", "MessageTraceError", "Filters", "iter_messages", "read_message_lines", "read_messages"]
 
 #: What each kind of line carries at least (extra fields may follow: power, SINR, a DENM's cause, ...;
 #: ``tx`` lines of sbsim since frames have their real size also carry ``frame_bytes``, the whole 802.11
@@ -109,6 +109,34 @@ def read_messages(
     if is_parquet(path):
         return _read_parquet(path, columns, filters)
     return _read_json_lines(path, columns, clauses)
+
+
+def iter_messages(path: str | os.PathLike[str], columns: Sequence[str]) -> Iterator[pd.DataFrame]:
+    """A ``--messages`` trace as consecutive DataFrames of ``columns`` (one the trace lacks comes back all null),
+    together all its rows in order, for a reader that aggregates as it goes: memory holds one part at a time
+    (:data:`CHUNK_LINES` lines of JSON Lines, a record batch of Parquet), whatever the trace's length.
+
+    Raises as :func:`read_messages` does."""
+    import pandas as pd
+
+    wanted = list(columns)
+    if is_parquet(path):
+        import pyarrow as pa
+        import pyarrow.dataset as ds
+
+        try:
+            dataset = ds.dataset(os.fspath(path), format="parquet", partitioning="hive")
+            present = [c for c in wanted if c in dataset.schema.names]
+            for batch in dataset.to_batches(columns=present, batch_size=CHUNK_LINES):
+                yield batch.to_pandas().reindex(columns=wanted)
+        except (pa.ArrowException, ValueError, TypeError, KeyError) as e:
+            raise MessageTraceError(path, f"not a readable message trace: {e}") from e
+        return
+    needed = set(wanted)
+    for _, objects in _chunks(path):
+        yield pd.DataFrame.from_records(
+            [{k: v for k, v in obj.items() if k in needed} for obj in objects], columns=wanted
+        )
 
 
 def _clauses(path: str | os.PathLike[str], filters: Filters | None) -> list[list[tuple[str, str, Any]]]:

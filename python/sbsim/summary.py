@@ -7,6 +7,8 @@ The program writes one JSON object at the end of a run::
      "steps": 300, "vehicles_seen": 150, "peak_running": 40,
      "stories": [{"name": "rain", "activations": 12, "active_vehicle_seconds": 340.0}],
      "signals": {"cause": count}, "services_created": 3,
+     "equipped": {"penetration": 0.5, "count": 2, "of": 4,   # with --services: who departed V2X-equipped, when
+                  "vehicles": [{"vehicle": "veh0", "since": 0.0}, {"vehicle": "veh3", "since": 2.5}]},
      "messages": {"Type": {"sent": 10, "delivered": 8}},  # also "forwarded" when GeoNetworking forwarded
      "message_trace": {"format": "parquet", "lines": 5000, "bytes": 81234, "max_bytes": 2000000000,
                        "truncated": false, "truncated_at": null},
@@ -116,12 +118,15 @@ def run_figures(summary: Summary) -> dict[str, Any]:
 
 
 def table_columns(summary: Summary) -> dict[str, Any]:
-    """The summary as one table row: counts, per-story activations and active vehicle-seconds,
-    signals per cause, messages per type, per statistic ``stat:<name>:<count|sum|mean|min|max>``,
-    the time in SUMO and in the storyboard."""
+    """The summary as one table row: counts, the equipped vehicles (``equipped``, of ``vehicles_seen``;
+    with services), per-story activations and active vehicle-seconds, signals per cause, messages per type,
+    per statistic ``stat:<name>:<count|sum|mean|min|max>``, the time in SUMO and in the storyboard."""
     row: dict[str, Any] = {k: summary[k] for k in ("steps", "vehicles_seen", "peak_running") if k in summary}
     end = summary.get("end")
     row["end_reason"] = end.get("reason") if isinstance(end, dict) else None
+    equipped = summary.get("equipped")
+    if isinstance(equipped, dict):
+        row["equipped"] = equipped.get("count")
     for story in story_figures(summary).values():
         row[f"activations:{story.name}"] = story.activations
         row[f"active_vehicle_s:{story.name}"] = story.active_vehicle_seconds

@@ -198,6 +198,11 @@ class CamCondition(Condition):
     def __init__(self, distance: float | None = None, max_age: Seconds | None = None) -> None: ...
     def describe(self) -> str: ...
 
+class EquippedCondition(Condition):
+    """A vehicle that carries V2X equipment (the run's --penetration draw; everyone at the default 1)."""
+
+    def __init__(self) -> None: ...
+
 class HoldCondition(Condition):
     def __init__(self, condition: Condition, seconds: Seconds) -> None: ...
 
@@ -338,23 +343,26 @@ class NoCollision(Criterion):
     def __init__(self) -> None: ...
 
 class MaxSpeed(Criterion):
-    def __init__(self, mps: float, vehicles: str | Iterable[str] | None = None) -> None: ...
+    def __init__(
+        self, mps: float, vehicles: str | Iterable[str] | None = None, equipped_only: bool = False
+    ) -> None: ...
 
 class ReachedRegion(Criterion):
     def __init__(self, vehicle: str, area: Iterable[Point], by: Seconds) -> None: ...
 
 class KeepsLane(Criterion):
-    def __init__(self, vehicles: str | Iterable[str] | None = None) -> None: ...
+    def __init__(self, vehicles: str | Iterable[str] | None = None, equipped_only: bool = False) -> None: ...
 
 class NoRedLightRunning(Criterion):
-    def __init__(self, vehicles: str | Iterable[str] | None = None) -> None: ...
+    def __init__(self, vehicles: str | Iterable[str] | None = None, equipped_only: bool = False) -> None: ...
 
 class StoryActivated(Criterion):
     def __init__(self, story: str, at_least: int = 1) -> None: ...
 
 class WarnedBefore(Criterion):
     """Every vehicle that reached the place (an edge id, or an area of points) between `since` and `until` had
-    heard a DENM of `cause` (any if None) at least `seconds` before; needs a DEN service (--services)."""
+    heard a DENM of `cause` (any if None) at least `seconds` before; needs a DEN service (--services).
+    With `equipped_only`, only the V2X-equipped vehicles are judged."""
 
     def __init__(
         self,
@@ -363,6 +371,7 @@ class WarnedBefore(Criterion):
         seconds: Seconds = 0,
         since: Seconds = 0,
         until: Seconds | None = None,
+        equipped_only: bool = False,
     ) -> None: ...
 
 class Storyboard:

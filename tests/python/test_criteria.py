@@ -5,12 +5,13 @@ from __future__ import annotations
 
 import json
 import re
+import textwrap
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 from pathlib import Path
 
 import pytest
-from sbsim.runner import RunResult, run
+from sbsim.runner import RunResult, read_events, run
 from sbsim.scenarios.grid import make_grid
 from sbsim_helpers import STORIES, assert_bad_input, assert_no_crash, write_story
 
@@ -257,7 +258,6 @@ def test_custom_criterion_reads_events_and_statistics(loops_cfg: Path, tmp_path:
     board.registerCriterion(FewActivations(3), name='at most three')
     board.registerCriterion(FewActivations(2))
     """
-    import textwrap
 
     result, summary, junit = run_criteria(loops_cfg, tmp_path, textwrap.indent(textwrap.dedent(body), "    "))
     assert result.returncode == 3, result.stderr
@@ -296,3 +296,71 @@ def test_a_run_without_criteria_has_no_verdict(loops_cfg: Path, tmp_path: Path) 
     assert result.returncode == 0
     assert summary["criteria"] == [] and summary["verdict"] is None
     assert junit.find("testsuite").get("tests") == "0"
+
+
+def test_junit_stays_well_formed_whatever_a_criterion_holds(loops_cfg: Path, tmp_path: Path) -> None:
+    # Control characters and a lone surrogate's bytes are not XML 1.0: the file must still parse (issue 29).
+    body = """
+    class Odd(Criterion):
+        def evaluate(self, run):
+            return (False, 'bell\\x07 nul\\x00 esc\\x1b', 'tab\\tnew\\nline \\x0c')
+
+    board.registerCriterion(Odd(), name='odd\\x01name\\x1f')
+    """
+
+    result, summary, junit = run_criteria(loops_cfg, tmp_path, textwrap.indent(textwrap.dedent(body), "    "), end=5.0)
+    assert result.returncode == 3, result.stderr
+    [case] = junit.findall("testsuite/testcase")
+    assert case.get("name") == "odd\\x01name\\x1f"
+    failure = case.find("failure")
+    assert failure is not None and "bell\\x07 nul\\x00 esc\\x1b" in failure.get("message", "")
+
+
+def test_junit_is_well_formed_whatever_the_names_and_values_hold(loops_cfg: Path, tmp_path: Path) -> None:
+    # XML 1.0 forbids most control characters even as references: they are written as visible escapes.
+    body = """
+    class Odd(Criterion):
+        def evaluate(self, run):
+            return (False, "bell\\x07 <b>&\\ttab", "nul\\x00 \\ufffe")
+
+    board.registerCriterion(Odd(), name="odd\\x01\\x1b name\\ttab")
+    """
+    result, summary, junit = run_criteria(loops_cfg, tmp_path, textwrap.indent(textwrap.dedent(body), "    "), end=5.0)
+    assert result.returncode == 3
+    assert summary["criteria"][0]["name"] == "odd\x01\x1b name\ttab"
+    [case] = junit.findall("testsuite/testcase")
+    # A tab stays (XML reads one in an attribute as a space; in an element's text it stays a tab).
+    assert case.get("name") == "odd\\x01\\x1b name tab"
+    failure = case.find("failure")
+    assert failure is not None
+    assert failure.text == "actual: bell\\x07 <b>&\ttab; expected: nul\\x00 \\ufffe"
+
+
+def test_warned_before_equipped_only_judges_the_equipped(tmp_path: Path) -> None:
+    # Half the vehicles equipped (seed 2 equips the crash car, so its DENM goes out): the unequipped
+    # never hear it, so judging everyone fails on them alone, and judging the equipped passes.
+    body = "".join(
+        f"    {line}\n"
+        for line in [
+            *ACCIDENT_STORY.splitlines(),
+            f"board.registerCriterion(WarnedBefore({AT_THE_CRASH}, cause=2, since=40, until=160), name='all')",
+            f"board.registerCriterion(WarnedBefore({AT_THE_CRASH}, cause=2, since=40, until=160, "
+            "equipped_only=True), name='equipped')",
+        ]
+    )
+    events = tmp_path / "events.jsonl"
+    extra = ["--services", str(MOTORWAY / "services.xml"), "--penetration", "0.5", "--seed", "2"]
+    result, summary, _ = run_criteria(
+        MOTORWAY / "motorway.sumocfg", tmp_path, body, None, [*extra, "--events", str(events)]
+    )
+    assert result.returncode == 3, result.stderr
+    everyone, equipped = summary["criteria"]
+    assert equipped["passed"] and equipped["actual"].startswith("0 of "), equipped
+    judged = int(equipped["actual"].split()[2])
+    assert not everyone["passed"], everyone
+    unwarned, of = (int(everyone["actual"].split()[k]) for k in (0, 2))
+    # Exactly the unequipped were unwarned: those judged among everyone but not among the equipped.
+    assert judged > 20 and unwarned == of - judged > 20, (everyone, equipped)
+    named = everyone["actual"].split("(")[1].split(")")[0].split(" and ")[0].split(", ")
+    logged = {e["vehicle"] for e in read_events(events) if e["type"] == "equipped"}
+    assert "crash" in logged and not set(named) & logged, (named, sorted(logged)[:10])

@@ -7,6 +7,7 @@ import io
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 from collections import Counter
@@ -437,3 +438,24 @@ def test_without_sbsim_the_story_areas_are_one_error_line(
     [line] = capsys.readouterr().err.splitlines()
     assert re.fullmatch(r"report: .*no-sbsim: No such file or directory", line), line
     assert not (tmp_path / "out.html").exists()
+
+
+@pytest.mark.parametrize("named", ["events", "messages", "summary", "events-symlink"])
+def test_output_naming_an_input_is_refused_and_the_input_kept(
+    rain: RainRun, tmp_path: Path, named: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # The page written over its own event log or trace would destroy the run it reports (issue 29).
+    events, trace, summary = tmp_path / "events.jsonl", tmp_path / "m.jsonl", tmp_path / "summary.json"
+    shutil.copy(rain.events_path, events)
+    trace.write_text('{"t": 1.0, "event": "tx", "type": "CAM", "station": "a", "seq": 1, "bytes": 9, "x": 0, "y": 0}\n')
+    shutil.copy(rain.summary_path, summary)
+    before = {p: p.read_bytes() for p in (events, trace, summary)}
+    output = {"events": events, "messages": trace, "summary": summary}.get(named)
+    if output is None:
+        output = tmp_path / "link.html"
+        output.symlink_to(events)
+    args = [events, "--sumocfg", SUMOCFG, "--messages", trace, "--summary", summary, "-o", output]
+    assert report.main([str(a) for a in args]) == 2
+    [line] = capsys.readouterr().err.splitlines()
+    assert re.fullmatch(r"report: -o: .* must not overwrite its input", line), line
+    assert {p: p.read_bytes() for p in before} == before

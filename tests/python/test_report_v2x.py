@@ -239,3 +239,46 @@ def test_a_world_story_has_no_speed_panel_nor_map_points(bridge: Report) -> None
     table = bridge.stories
     assert table.loc["bridge-closed", "kind"] == "world" and math.isnan(table.loc["bridge-closed", "vehicles"])
     assert table.loc["detour", "kind"] == "vehicle" and table.loc["detour", "vehicles"] > 10
+
+
+def _synthetic_trace(path: Path, lines: int) -> None:
+    with open(path, "w", encoding="utf-8") as f:
+        for i in range(lines):
+            t, station = i * 0.001, f"v{i % 97}"
+            if i % 3 == 0:
+                line = {
+                    "t": t,
+                    "event": "tx",
+                    "type": "CAM",
+                    "station": station,
+                    "seq": i,
+                    "bytes": 300,
+                    "x": 0,
+                    "y": 0,
+                }
+            else:
+                line = {"t": t, "event": "rx", "type": "CAM", "station": station, "sender": "v0", "seq": i}
+                line["distance"] = float(i % 800)
+            f.write(json.dumps(line) + "\n")
+
+
+def test_the_report_reads_a_trace_in_bounded_memory(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # The motorway scenario's own trace is 777 MB: read whole, it ended in MemoryError (issue 29). What the
+    # report holds must not grow with the trace: ten times the lines, about the same peak.
+    import tracemalloc
+
+    from sbsim import messages
+    from sbsim.report.loading import load_messages
+
+    monkeypatch.setattr(messages, "CHUNK_LINES", 1000)
+    peaks = {}
+    for lines in (3_000, 45_000):
+        trace = tmp_path / f"m{lines}.jsonl"
+        _synthetic_trace(trace, lines)
+        tracemalloc.start()
+        tables = load_messages(trace)
+        peaks[lines] = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+        sent = tables.messages_per_type()
+        assert int(sent["CAM"].sum()) == len(range(0, lines, 3))
+    assert peaks[45_000] < 1.5 * peaks[3_000], peaks

@@ -94,10 +94,13 @@ def test_siren_story_activates_and_signals_for_police0_at_10(highway: HighwayRun
     signal = signals[0]
     assert (signal["t"], signal["story"], signal["vehicle"], signal["cause"]) == (SIREN_AT, "siren", POLICE, "siren on")
     assert signal["others"] == []
-    # Nothing else but police0 leaving the road, with its story active until then.
-    others = [e for e in highway.events if e["type"] not in ("activate", "signal")]
-    assert [(e["type"], e["vehicle"], e.get("reason")) for e in others] == [("deactivate", POLICE, "vehicle_left")]
     summary = highway.result.summary()
+    # Every vehicle departed equipped (the default penetration, 1): one equipped line each.
+    equipped = [e["vehicle"] for e in highway.events if e["type"] == "equipped"]
+    assert POLICE in equipped and len(set(equipped)) == len(equipped) == int(summary["vehicles seen"])
+    # Nothing else but police0 leaving the road, with its story active until then.
+    others = [e for e in highway.events if e["type"] not in ("activate", "signal", "equipped")]
+    assert [(e["type"], e["vehicle"], e.get("reason")) for e in others] == [("deactivate", POLICE, "vehicle_left")]
     assert summary["activations siren"] == "1"
 
 

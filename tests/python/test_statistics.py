@@ -46,7 +46,7 @@ def test_service_and_story_statistics_agree_with_the_summary(
     assert_no_crash(result)
     assert result.returncode == 0, result.stderr
     table = pd.read_parquet(parquet)
-    assert list(table.columns) == ["vehicle", "source", "name", "time", "value"]
+    assert list(table.columns) == ["vehicle", "source", "name", "time", "value", "equipped"]
     assert set(table["name"]) == {"speed", "triggers", "top_speed", "story_marks"}
     services = table[table["source"] == "SpeedStatisticsService"]
     # 30 vehicles, each with its one series and two scalars at the end.
@@ -61,6 +61,7 @@ def test_service_and_story_statistics_agree_with_the_summary(
     tops = services[services["name"] == "top_speed"].set_index("vehicle")["value"]
     assert (speed.groupby("vehicle")["value"].max() == tops).all()
     assert speed["value"].max() > 5.0  # vehicles do move
+    assert services["equipped"].all()  # the default penetration, 1: every vehicle is equipped
     marks = table[table["name"] == "story_marks"]
     assert (marks["source"] == "marker").all() and (marks["value"] == 2.5).all()
     assert marks["time"].between(20, 40).all() and len(marks) > 0

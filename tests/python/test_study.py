@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 import shutil
 from pathlib import Path
 
@@ -184,3 +185,74 @@ def test_a_run_whose_folder_cannot_be_made_fails_alone(trips_cfg: Path, tmp_path
     row = study.execute(spec, r, "/nonexistent/sbsim")
     assert row["exit_code"] == 2 and "the run's folder" in row["stderr_tail"] and "File exists" in row["stderr_tail"]
     assert study.result_of(spec.directory / "runs" / "seed-1") is None
+
+
+def test_a_resumed_study_checks_the_outputs_content_not_their_size(
+    trips_cfg: Path, tmp_path: Path, cluster_env: None
+) -> None:
+    # A damaged statistics.parquet or trace of the right size is no finished run (issue 29).
+    services = tmp_path / "s.xml"
+    services.write_text('<services><service type="CaService"/></services>\n', encoding="utf-8")
+    spec = make_spec(
+        trips_cfg,
+        tmp_path,
+        parameters={},
+        seeds=[1, 2, 3],
+        end=20,
+        services=str(services),
+        outputs={"directory": str(tmp_path / "results"), "statistics": True, "messages": True},
+    )
+    assert study.run(spec, workers=2, progress=False).ran == 3
+    runs = spec.directory / "runs"
+    kept = (runs / "seed-1" / "result.json").stat().st_mtime_ns
+    for seed, name in ((2, "statistics.parquet"), (3, "messages.parquet")):
+        damaged = bytearray((runs / f"seed-{seed}" / name).read_bytes())
+        damaged[len(damaged) // 2] ^= 0xFF  # one byte flipped: the same size
+        (runs / f"seed-{seed}" / name).write_bytes(bytes(damaged))
+        assert study.result_of(runs / f"seed-{seed}") is None
+    again = study.run(spec, workers=2, progress=False)
+    assert again.ran == 2 and not again.failed
+    assert (runs / "seed-1" / "result.json").stat().st_mtime_ns == kept
+
+
+def test_radio_mistakes_of_the_study_file_end_it_before_the_first_run(
+    trips_cfg: Path, tmp_path: Path, cluster_env: None
+) -> None:
+    services = tmp_path / "s.xml"
+    services.write_text('<services><service type="CaService"/></services>\n', encoding="utf-8")
+    radio = tmp_path / "radio.toml"
+    radio.write_text("[phy]\npower_dbm = 20\n", encoding="utf-8")
+    with pytest.raises(study.StudyError, match="'radio' needs 'services'"):
+        make_spec(trips_cfg, tmp_path, radio=str(radio))
+    with pytest.raises(study.StudyError, match="parameter 'radio_power_dbm' .* needs 'radio'"):
+        make_spec(trips_cfg, tmp_path, services=str(services), parameters={"radio_power_dbm": [10]})
+    # One value of the sweep sbsim refuses: the study ends at once, no run started.
+    spec = make_spec(
+        trips_cfg,
+        tmp_path,
+        services=str(services),
+        radio=str(radio),
+        parameters={"radio_queue_limit": [4, 2.5]},
+        seeds=[1],
+    )
+    with pytest.raises(study.StudyError, match=r"radio_queue_limit=2\.5: .*queue_limit: must be a whole number"):
+        study.run(spec, workers=1, progress=False)
+    assert not (spec.directory / "runs").exists()
+
+
+def test_the_command_refuses_a_radio_value_before_making_any_folder(
+    trips_cfg: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "s.xml").write_text('<services><service type="CaService"/></services>\n', encoding="utf-8")
+    (tmp_path / "radio.toml").write_text("[mac]\naifsn = 3\n", encoding="utf-8")
+    (tmp_path / "study.toml").write_text(
+        f'sumocfg = "{trips_cfg}"\nservices = "s.xml"\nradio = "radio.toml"\nseeds = [1, 2]\n'
+        "[parameters]\nradio_aifsn = [2, 99]\n",
+        encoding="utf-8",
+    )
+    assert study.main([str(tmp_path / "study.toml")]) == 2
+    [line] = capsys.readouterr().err.splitlines()
+    assert re.fullmatch(
+        r"study: radio_aifsn=99: --param radio_aifsn: must be a whole number from 1 to 15, got 99", line
+    )
+    assert not (tmp_path / "results").exists()

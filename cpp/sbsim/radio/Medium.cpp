@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "sbsim/radio/CounterRandom.h"
 #include "sbsim/radio/Receiver.h"
 
 namespace sbsim::radio {
@@ -47,10 +48,14 @@ void Medium::handleMessage(kernel::Message& msg) {
     Counts* counts = countsOf(*frame.message);  // one lookup per frame, not per reception
     const V2xMessage& message = *frame.message;
     const bool secured = certificates_.secured();
+    const std::uint64_t sender = secured ? CounterRandom::keyOf(message.sender()) : 0;
     if (simulation().moduleChanges() == frame.moduleChanges) {
         for (std::size_t k = 0; k < frame.receivers.size(); ++k) {
             if (counts != nullptr) ++counts->delivered;
-            if (secured) certificates_.heard(frame.stations[k], message.sender(), message.securityProfile(), simTime());
+            if (secured) {
+                certificates_.heard(CounterRandom::keyOf(frame.stations[k]), sender, message.securityProfile(),
+                                    simTime());
+            }
             frame.receivers[k]->receive(message);
         }
         return;

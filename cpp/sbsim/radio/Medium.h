@@ -37,6 +37,11 @@ public:
     };
     static constexpr double kDistanceBin = 50;
     /// Channel busy ratio over every station's 100 ms samples.
+    /// What the link budget did: links drawn in full, interference only (their mean power, no
+    /// draw) and skipped below the floor, over the run (ChannelSettings::linkTiers).
+    struct LinkFigures {
+        std::uint64_t full = 0, interference = 0, skipped = 0;
+    };
     struct LoadFigures {
         double meanCbr = 0;
         double maxCbr = 0;
@@ -58,6 +63,7 @@ public:
     virtual std::optional<double> channelBusyRatio(const std::string& /*station*/) const { return std::nullopt; }
     /// Mean and max channel busy ratio so far; none when the medium does not model it.
     virtual std::optional<LoadFigures> loadFigures() const { return std::nullopt; }
+    virtual std::optional<LinkFigures> linkFigures() const { return std::nullopt; }
     /// Hands a frame's receptions (queued with deliverLater()) to their stations.
     void handleMessage(kernel::Message& msg) override;
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "sbsim/services/ServiceAttributes.h"
 #include "sbsim/services/den/UseCaseFactory.h"
 
 namespace sbsim::services {
@@ -313,13 +314,17 @@ ServiceSpec parseService(const XMLElement& element, const std::string& source, I
     return spec;
 }
 
-// A coordinate attribute: a finite number.
+// A coordinate attribute: a number on the map (no network is wider than 10,000 km; the units'
+// grid and the distances squared stay finite).
+constexpr double kMaxCoordinate = 1e7;
 double coordinate(const std::string& value, std::string_view name, const std::string& source, int line) {
     const std::string_view text = trimmed(value);
     double out = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(out)) {
-        fail(source, line, "attribute '" + std::string(name) + "' of <rsu> must be a number, got '" + value + "'");
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !(std::abs(out) <= kMaxCoordinate)) {
+        fail(source, line,
+             fmt::format("attribute '{}' of <rsu> must be a number from {:g} to {:g} m, got '{}'", name,
+                         -kMaxCoordinate, kMaxCoordinate, value));
     }
     return out;
 }
@@ -431,7 +436,7 @@ std::string readFile(const std::filesystem::path& path) {
 
 // A DenService's use cases: its `useCases` file (relative to the services file), else
 // den-use-cases.xml beside the services file, else none listed (all run).
-void attachUseCases(ServiceSpec& spec) {
+void attachUseCases(ServiceSpec& spec, std::vector<std::filesystem::path>& files) {
     const std::filesystem::path dir = std::filesystem::path(spec.source).parent_path();
     std::filesystem::path file;
     if (const auto named = spec.parameter("useCases")) {
@@ -441,6 +446,7 @@ void attachUseCases(ServiceSpec& spec) {
         if (!std::filesystem::exists(dir / "den-use-cases.xml", ec)) return;
         file = dir / "den-use-cases.xml";
     }
+    if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
     auto useCases = readSpecs(readFile(file), file.string(), "usecases", "usecase");
     for (const ServiceSpec& u : useCases) {
         if (!isUseCase(u.type)) {
@@ -452,6 +458,7 @@ void attachUseCases(ServiceSpec& spec) {
         }
     }
     for (const ServiceSpec& u : useCases) {
+        checkAttributes(u);
         const auto signal = u.parameter("signal");
         if (u.type == "StoryboardEvent" && (!signal || trimmed(*signal).empty()))
             fail(u.source, u.line, "the StoryboardEvent use case needs a 'signal' attribute");
@@ -460,10 +467,15 @@ void attachUseCases(ServiceSpec& spec) {
 }
 
 std::vector<ServiceSpec> readServices(std::string_view text, const std::string& source,
-                                      std::vector<RoadsideUnitSpec>& roadsideUnits) {
+                                      std::vector<RoadsideUnitSpec>& roadsideUnits,
+                                      std::vector<std::filesystem::path>& files) {
     std::vector<ServiceSpec> out = readSpecs(text, source, "services", "service", &roadsideUnits);
+    for (const ServiceSpec& spec : out) checkAttributes(spec);
+    for (const RoadsideUnitSpec& rsu : roadsideUnits) {
+        for (const ServiceSpec& spec : rsu.services) checkAttributes(spec);
+    }
     for (ServiceSpec& spec : out) {
-        if (spec.type == "DenService") attachUseCases(spec);
+        if (spec.type == "DenService") attachUseCases(spec, files);
     }
     return out;
 }
@@ -532,7 +544,7 @@ bool ServiceSpec::boolean(std::string_view name, bool fallback) const {
 
 ServicesConfig ServicesConfig::parse(std::string_view text, const std::string& source) {
     ServicesConfig config;
-    config.services_ = readServices(text, source, config.roadsideUnits_);
+    config.services_ = readServices(text, source, config.roadsideUnits_, config.otherFiles_);
     return config;
 }
 

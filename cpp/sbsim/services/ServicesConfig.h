@@ -137,12 +137,16 @@ public:
     const std::vector<ServiceSpec>& services() const { return services_; }
     /// The <rsu> elements, in file order.
     const std::vector<RoadsideUnitSpec>& roadsideUnits() const { return roadsideUnits_; }
+    /// The files read besides the services file itself (DenService use-case files), each once: the
+    /// run counts them as its inputs, so that no output may overwrite them.
+    const std::vector<std::filesystem::path>& otherFiles() const { return otherFiles_; }
     /// The services that run on this vehicle, in file order.
     std::vector<const ServiceSpec*> matching(std::string_view vehicleId, std::string_view vehicleType) const;
 
 private:
     std::vector<ServiceSpec> services_;
     std::vector<RoadsideUnitSpec> roadsideUnits_;
+    std::vector<std::filesystem::path> otherFiles_;
 };
 
 }  // namespace sbsim::services

@@ -1,12 +1,14 @@
 #pragma once
 
 #include <stdexcept>
+#include <string_view>
 
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/ParallelFor.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/traffic/NeighbourGrid.h"
+#include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/TrafficQueries.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -20,8 +22,14 @@ class SBSIM_API EvaluationContext {
 public:
     EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid& neighbours,
                       traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr,
-                      const facilities::StationRegistry* stations = nullptr)
-        : snapshot_(snapshot), neighbours_(neighbours), queries_(queries), parallel_(parallel), stations_(stations) {}
+                      const facilities::StationRegistry* stations = nullptr,
+                      const traffic::Penetration* penetration = nullptr)
+        : snapshot_(snapshot),
+          neighbours_(neighbours),
+          queries_(queries),
+          parallel_(parallel),
+          stations_(stations),
+          penetration_(penetration) {}
 
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     kernel::SimTime now() const { return snapshot_.time(); }
@@ -41,6 +49,11 @@ public:
     /// What each station heard over V2X (its LDM, its DENM memory), which the V2X conditions read;
     /// null in a run without services (then nobody heard anything).
     const facilities::StationRegistry* stations() const { return stations_; }
+    /// Whether the vehicle carries V2X equipment (the run's --penetration draw; everyone when the
+    /// context has no penetration). Thread-safe: a hash of the id and the seed.
+    bool equipped(std::string_view vehicleId) const {
+        return penetration_ == nullptr || penetration_->equipped(vehicleId);
+    }
 
 private:
     const traffic::VehicleSnapshot& snapshot_;
@@ -48,6 +61,7 @@ private:
     traffic::TrafficQueries* queries_;
     kernel::ParallelFor* parallel_;
     const facilities::StationRegistry* stations_;
+    const traffic::Penetration* penetration_;
 };
 
 }  // namespace sbsim::storyboard

@@ -21,11 +21,12 @@ Event seconds(kernel::SimTime t) {
 
 // Key by key rather than from an initializer list, which builds a temporary array per pair and
 // made each line twice as slow.
-Event event(kernel::SimTime t, std::string_view type, std::string_view story, std::optional<std::string_view> vehicle) {
+Event event(kernel::SimTime t, std::string_view type, std::optional<std::string_view> story,
+            std::optional<std::string_view> vehicle) {
     Event e;
     e["t"] = seconds(t);
     e["type"] = type;
-    e["story"] = story;
+    e["story"] = story ? Event(*story) : Event(nullptr);
     e["vehicle"] = vehicle ? Event(*vehicle) : Event(nullptr);
     return e;
 }
@@ -50,6 +51,10 @@ void EventLog::deactivate(kernel::SimTime t, std::string_view story, std::option
     Event e = event(t, "deactivate", story, vehicle);
     e["reason"] = reason;
     write(line(e));
+}
+
+void EventLog::equipped(kernel::SimTime t, std::string_view vehicle) {
+    write(line(event(t, "equipped", std::nullopt, vehicle)));
 }
 
 void EventLog::signal(kernel::SimTime t, std::string_view story, std::string_view vehicle, std::string_view cause,

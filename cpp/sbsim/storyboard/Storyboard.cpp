@@ -111,7 +111,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     }
 
     if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 5.0));
-    const EvaluationContext ctx(snapshot, grid_, queries_.get(), &simulation().parallel(), stations_.get());
+    const EvaluationContext ctx(snapshot, grid_, queries_.get(), &simulation().parallel(), stations_.get(),
+                                &penetration_);
     for (Condition* c : conditions_) c->prepare(ctx);
     for (const CriterionPtr& c : criteria_) c->prepare(ctx);
     if (!world_.empty()) {

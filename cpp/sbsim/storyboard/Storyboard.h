@@ -24,6 +24,7 @@
 #include "sbsim/storyboard/WorldPass.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/NetworkController.h"
+#include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/SnapshotColumns.h"
 #include "sbsim/traffic/TrafficQueries.h"
 #include "sbsim/traffic/VehicleRegistry.h"
@@ -56,6 +57,9 @@ public:
     void setTrafficQueries(std::unique_ptr<traffic::TrafficQueries> queries) { queries_ = std::move(queries); }
     /// What the stations heard over V2X, for the V2X conditions (DenmCondition, CamCondition).
     void hearStations(std::shared_ptr<const facilities::StationRegistry> stations) { stations_ = std::move(stations); }
+    /// Which vehicles carry V2X equipment (--penetration), for EquippedCondition and the criteria's
+    /// equipped_only (default: everyone).
+    void setPenetration(const traffic::Penetration& penetration) { penetration_ = penetration; }
     /// `observer` sees every activation of a story for a vehicle (sbsim --gui paints them).
     void observeActivations(ActivationObserver& observer) { vehicles_.observe(observer); }
 
@@ -116,6 +120,7 @@ private:
     traffic::NeighbourGrid grid_;
     std::unique_ptr<traffic::TrafficQueries> queries_;
     std::shared_ptr<const facilities::StationRegistry> stations_;
+    traffic::Penetration penetration_;
     std::function<void(traffic::SnapshotColumns)> columnsChanged_;
     WorldPass world_;
     VehiclePass vehicles_;

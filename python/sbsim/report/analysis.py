@@ -27,7 +27,8 @@ def events_frame(events: Events) -> pd.DataFrame:
 
 def stories(events: Events, summary: Mapping[str, Any] | None = None) -> list[str]:
     """Story names in the order they first appear in the log, then those only the summary lists."""
-    names = list(dict.fromkeys(events_frame(events)["story"]))
+    # An equipped line is no story's ("story": null).
+    names = list(dict.fromkeys(events_frame(events)["story"].dropna()))
     names += [name for name in story_figures(summary) if name not in names]
     return names
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -12,6 +13,31 @@ from sbsim.report.html import to_html, write_pngs
 from sbsim.report.loading import ReportError
 
 PROG = "python -m sbsim.report"
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    """Whether ``a`` and ``b`` are one file: the same inode when both exist (hard links, symlinks), else the
+    same path once resolved."""
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return a.resolve() == b.resolve()
+
+
+def _refuse_overwriting_inputs(args: argparse.Namespace) -> None:
+    """Every file the report reads is an input before the page is written: ``-o`` naming one is refused, so
+    the page can never replace the event log or trace it was made from."""
+    inputs = {
+        "the event log": args.events,
+        "--sumocfg": args.sumocfg,
+        "--story": args.story,
+        "--fcd": args.fcd,
+        "--summary": args.summary,
+        "--messages": args.messages,
+    }
+    for name, path in inputs.items():
+        if path is not None and _same_file(args.output, path):
+            raise ReportError(f"-o: {args.output} is {name} ({path}); the report must not overwrite its input")
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -32,6 +58,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--png", type=Path, metavar="DIR", help="also write each figure as DIR/<name>.png")
     args = parser.parse_args(argv)
     try:
+        _refuse_overwriting_inputs(args)
         report = build(
             args.events,
             args.sumocfg,

@@ -15,7 +15,7 @@ from sbsim.report.areas import story_areas
 from sbsim.report.figures import plot_activity, plot_durations, plot_map, plot_speeds
 from sbsim.report.loading import load_events, load_fcd, load_messages, load_summary, read_net, read_sumocfg
 from sbsim.report.tables import run_table, story_table
-from sbsim.report.v2x import busy_ratio_over_time, delivery_by_distance, messages_per_type, speeds_by_denm
+from sbsim.report.v2x import speeds_by_denm
 from sbsim.report.v2x_figures import plot_busy_ratio, plot_delivery, plot_denm_speeds, plot_messages
 from sbsim.summary import end_time
 
@@ -69,15 +69,15 @@ def build(
     if trace is not None:
         report.figures["speeds"] = plot_speeds(frame, trace, names)
     if messages is not None:
-        trace_lines = load_messages(messages)
-        report.v2x["messages"] = messages_per_type(trace_lines)
-        report.v2x["delivery"] = delivery_by_distance(trace_lines)
-        report.v2x["busy_ratio"] = busy_ratio_over_time(trace_lines)
+        tables = load_messages(messages)
+        report.v2x["messages"] = tables.messages_per_type()
+        report.v2x["delivery"] = tables.delivery_by_distance()
+        report.v2x["busy_ratio"] = tables.busy_ratio_over_time()
         report.figures["messages"] = plot_messages(report.v2x["messages"])
         report.figures["delivery"] = plot_delivery(report.v2x["delivery"])
         report.figures["busy_ratio"] = plot_busy_ratio(report.v2x["busy_ratio"])
         if trace is not None:
-            report.v2x["denm_speeds"] = speeds_by_denm(trace_lines, trace)
+            report.v2x["denm_speeds"] = speeds_by_denm(tables, trace)
             report.figures["denm_speeds"] = plot_denm_speeds(report.v2x["denm_speeds"])
     report.stories = story_table(frame, data, names)
     report.run = run_table(data) if data is not None else None

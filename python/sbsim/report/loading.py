@@ -14,7 +14,8 @@ import sumolib
 
 from sbsim.events import EventLogError, read_events
 from sbsim.fcd import FcdError, read_fcd
-from sbsim.messages import read_messages
+from sbsim.messages import iter_messages
+from sbsim.report.v2x import TraceTables
 from sbsim.summary import SummaryError, read_summary
 
 _T = TypeVar("_T")
@@ -116,7 +117,15 @@ def load_fcd(path: str | os.PathLike[str], fallback_step: float = 1.0) -> pd.Dat
 MESSAGE_COLUMNS = ("t", "event", "type", "station", "sender", "distance", "cbr", "phase", "action")
 
 
-def load_messages(path: str | os.PathLike[str]) -> pd.DataFrame:
-    """The run's message trace (JSON Lines or Parquet), only the columns the V2X panels read
-    (:func:`sbsim.messages.read_messages`), so a trace of millions of lines fits in memory."""
-    return _load_lines(path, lambda p: read_messages(p, columns=MESSAGE_COLUMNS))
+def load_messages(path: str | os.PathLike[str]) -> TraceTables:
+    """The V2X panels' data from the run's message trace (JSON Lines or Parquet), read a part at a time
+    (:func:`sbsim.messages.iter_messages`) and gathered into counts (:class:`~sbsim.report.v2x.TraceTables`),
+    so memory stays bounded whatever the trace's length (a motorway run's trace is hundreds of MB)."""
+
+    def gather(p: str | os.PathLike[str]) -> TraceTables:
+        tables = TraceTables()
+        for part in iter_messages(p, MESSAGE_COLUMNS):
+            tables.add(part)
+        return tables
+
+    return _load_lines(path, gather)

@@ -1,6 +1,6 @@
 """Studies: one story run over parameter values x seeds, on Dask, with the results as two tables.
 
-    python -m sbsim.study study.toml [--scheduler tcp://host:8786] [--workers N] [--plot]
+    python -m sbsim.study study.toml [--scheduler tcp://host:8786] [--workers N] [--plot] [--fail-on-criteria]
 
 The TOML names the scenario, the seeds and the parameter values (paths relative to the TOML)::
 
@@ -31,11 +31,14 @@ under way and exits with 130. At the end ``runs.parquet`` (one row per run) and 
 (every event with its run's parameters and seed) are written beside them, and with ``messages = true``
 ``messages/`` (the runs' Parquet message traces as one dataset partitioned by ``run``: join with
 runs.parquet for parameters and seed; read it with :func:`sbsim.messages.read_messages`), with ``statistics = true``
-``statistics.parquet`` (every value the runs recorded, likewise).
+``statistics.parquet`` (every value the runs recorded, likewise). ``junit.xml`` holds one test suite per
+run, named by its parameters and seed (``rain_speed=5, seed=1``), with a test case per criterion (a failed
+run: one ``run`` case with an error); ``--fail-on-criteria`` makes the study's exit code 3 when all runs
+completed but a criterion of one failed (0 without it; 1 when a run failed stays 1).
 
 The package, one job a module: :mod:`~sbsim.study.spec` (the TOML file and its runs),
 :mod:`~sbsim.study.execution` (the runs on Dask), :mod:`~sbsim.study.tables` (Parquet tables and
-plots) and :mod:`~sbsim.study.cli`; a run's summary becomes its row through
+plots), :mod:`~sbsim.study.junit` (the JUnit file) and :mod:`~sbsim.study.cli`; a run's summary becomes its row through
 :func:`sbsim.summary.table_columns`.
 """
 
@@ -43,6 +46,7 @@ from __future__ import annotations
 
 from sbsim.study.cli import main
 from sbsim.study.execution import STDERR_TAIL, StudyInterrupted, StudyResult, execute, result_of, run, stop_runs
+from sbsim.study.junit import suite_name, write_junit, xml_text
 from sbsim.study.spec import Run, StudyError, StudySpec, Value
 from sbsim.study.tables import plot, write_tables
 
@@ -60,5 +64,8 @@ __all__ = [
     "result_of",
     "run",
     "stop_runs",
+    "suite_name",
+    "write_junit",
     "write_tables",
+    "xml_text",
 ]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import re
 import signal
 import sys
@@ -10,7 +11,8 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from sbsim.extras import missing_message
-from sbsim.study.execution import StudyInterrupted, run
+from sbsim.runner import executable
+from sbsim.study.execution import StudyInterrupted, check_radio, run
 from sbsim.study.spec import StudyError, StudySpec
 from sbsim.study.tables import plot, plot_column
 
@@ -19,7 +21,8 @@ SCHEDULER_ADDRESS = re.compile(r"((tcp|tls|ucx|inproc)://)?[\w.\-\[\]:]+:\d{1,5}
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Runs the study; a bad study file is one line on stderr and exit code 2, a failed run exit code 1."""
+    """Runs the study; a bad study file is one line on stderr and exit code 2, a failed run exit code 1, and
+    with --fail-on-criteria a run whose criterion failed exit code 3."""
     parser = argparse.ArgumentParser(
         prog="python -m sbsim.study",
         description=sys.modules["sbsim.study"].__doc__,
@@ -38,6 +41,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         help="also draw PNG files: alone, activations per story; with a runs.parquet column (stat:warned:mean), "
         "that column against the first parameter (repeatable)",
     )
+    parser.add_argument(
+        "--fail-on-criteria",
+        action="store_true",
+        help="exit with 3 when a run's criterion failed (all runs complete; junit.xml says which); default 0",
+    )
     args = parser.parse_args(argv)
     # Before any run: the sweep (Dask), the tables (pandas, pyarrow), the progress bar and the plots.
     message = missing_message("study", ("dask", "distributed", "pandas", "pyarrow", "tqdm", "matplotlib"))
@@ -55,12 +63,14 @@ def main(argv: Sequence[str] | None = None) -> int:
             raise StudyError(f"--timeout must be > 0 seconds, not {args.timeout}")
         if args.scheduler is not None and not SCHEDULER_ADDRESS.fullmatch(args.scheduler):
             raise StudyError(f"--scheduler '{args.scheduler}' is not an address like tcp://host:8786")
+        # Before anything is made: a mistake in the study file leaves no results folder behind.
+        check_radio(spec, str(executable().resolve()))
         try:
             spec.directory.mkdir(parents=True, exist_ok=True)
         except OSError as e:
             raise StudyError(f"the output folder '{spec.directory}' cannot be made: {e.strerror}") from e
         try:
-            result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout)
+            result = run(spec, scheduler=args.scheduler, workers=args.workers, timeout=args.timeout, check=False)
         except OSError as e:
             if args.scheduler is None:
                 raise
@@ -79,6 +89,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("study: interrupted; finished runs are kept, run the same command again to go on", file=sys.stderr)
         return 130
     print(f"study: {len(result.rows)} runs ({result.ran} run now, {len(result.failed)} failed) in {spec.directory}")
+    for row in result.failed_criteria:
+        # Quoted as JSON: a name with a line break or a control character stays on its line.
+        failed = [
+            json.dumps(k.removeprefix("criterion:"), ensure_ascii=False)
+            for k, v in row.items()
+            if k.startswith("criterion:") and v is False
+        ]
+        print(f"study: run {row['run']}: criteria failed: {', '.join(failed)}", file=sys.stderr)
     for row in result.failed:
         print(f"study: run {row['run']} failed with exit code {row['exit_code']}", file=sys.stderr)
     for column in dict.fromkeys(args.plot or []):
@@ -89,4 +107,6 @@ def main(argv: Sequence[str] | None = None) -> int:
             return 2
         for path in paths:
             print(f"study: plot {path}")
-    return 1 if result.failed else 0
+    if result.failed:
+        return 1
+    return 3 if args.fail_on_criteria and result.failed_criteria else 0

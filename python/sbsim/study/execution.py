@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import asyncio
+import hashlib
 import json
 import logging
 import os
 import signal
 import subprocess
+import tempfile
 import threading
 import time
 import uuid
@@ -18,12 +20,16 @@ from pathlib import Path
 from typing import Any
 
 from sbsim.runner import executable
-from sbsim.study.spec import Run, StudySpec
+from sbsim.study.junit import write_junit
+from sbsim.study.spec import Run, StudyError, StudySpec
 from sbsim.study.tables import COMPLETE, write_tables
 from sbsim.summary import read_summary, table_columns
 
 #: How much of a failed run's stderr its row keeps.
 STDERR_TAIL = 2000
+
+#: sbsim's exit code for a run that went to its end with a criterion failed.
+CRITERION_FAILED = 3
 
 #: sbsim's exit code for a run stopped by SIGINT or SIGTERM: the run is not finished, it is done again.
 INTERRUPTED = 130
@@ -32,8 +38,41 @@ INTERRUPTED = 130
 #: safe point and exit before they are killed.
 STOP_GRACE = 5.0
 
-#: A run's record, written last: the row and the size of each output it wrote.
+#: A run's record, written last: the row and the size and SHA-256 of each output it wrote.
 RESULT = "result.json"
+
+
+def check_radio(spec: StudySpec, program: str) -> None:
+    """Before the first run: the radio file and every ``radio_*`` value of the sweep as sbsim reads them
+    (``sbsim check`` with the services and radio file, each value alone), so that a mistake in the study file
+    ends the study at once, one line, instead of failing every run that takes it. Raises StudyError."""
+    if spec.radio is None or spec.services is None:
+        return
+    base = [program, "check", "--sumocfg", str(spec.sumocfg), "--services", str(spec.services)]
+    base += ["--radio", str(spec.radio)]
+    for plugin in spec.plugins:
+        base += ["--plugin", str(plugin)]
+    variants: list[list[str]] = [[]]
+    for name, values in spec.parameters.items():
+        if name.startswith("radio_"):
+            # As a run passes it (Run.arguments), without the seed.
+            variants += [Run(((name, v),), 0).arguments()[2:] for v in dict.fromkeys(values)]
+    with tempfile.TemporaryDirectory(prefix="sbsim-study-check-") as scratch:
+        for variant in variants:
+            done = subprocess.run(
+                base + variant,
+                cwd=scratch,
+                env=_environment(),
+                stdin=subprocess.DEVNULL,
+                capture_output=True,
+                text=True,
+                errors="replace",
+                check=False,
+            )
+            if done.returncode == 2:
+                lines = [line for line in done.stderr.splitlines() if line.strip() and "warning" not in line]
+                message = lines[-1].removeprefix("sbsim: ") if lines else "sbsim check refused it"
+                raise StudyError(f"{' '.join(variant[1:]) or str(spec.radio)}: {message}")
 
 
 def outputs(spec: StudySpec) -> tuple[str, ...]:
@@ -42,22 +81,34 @@ def outputs(spec: StudySpec) -> tuple[str, ...]:
     return ("events.jsonl", "summary.json", *kept)
 
 
+def digest(path: Path) -> str:
+    """The file's SHA-256, read in blocks (a trace may be large)."""
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        while block := f.read(1 << 20):
+            h.update(block)
+    return h.hexdigest()
+
+
 def result_of(folder: Path) -> dict[str, Any] | None:
     """A finished run's row, or None if the folder does not hold what the run left: not run, stopped
-    half-way, a ``*.incomplete`` file left, an output missing or of another size than when the run ended
-    (truncated), or a record from before outputs were recorded. Such a run is done again."""
+    half-way, a ``*.incomplete`` file left, an output missing or not byte for byte what the run wrote (its
+    size and SHA-256 are recorded: a damaged file of the right size is caught too), or a record from before
+    outputs were recorded so. Such a run is done again."""
     try:
         saved = json.loads((folder / RESULT).read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError):
         return None
     if not isinstance(saved, dict) or not isinstance(saved.get("row"), dict):
         return None
-    sizes = saved.get("outputs")
-    if not isinstance(sizes, dict) or any(folder.glob("*.incomplete")):
+    recorded = saved.get("outputs")
+    if not isinstance(recorded, dict) or any(folder.glob("*.incomplete")):
         return None
-    for name, size in sizes.items():
+    for name, record in recorded.items():
+        if not isinstance(record, dict) or not isinstance(record.get("sha256"), str):
+            return None
         try:
-            if (folder / name).stat().st_size != size:
+            if (folder / name).stat().st_size != record.get("size") or digest(folder / name) != record["sha256"]:
                 return None
         except OSError:
             return None
@@ -129,10 +180,14 @@ def execute(spec: StudySpec, run: Run, program: str, timeout: float | None = Non
     summary = folder / "summary.json"
     if code in COMPLETE and summary.exists():
         row.update(table_columns(read_summary(summary)))
-    sizes = {name: (folder / name).stat().st_size for name in outputs(spec) if (folder / name).is_file()}
+    written = {
+        name: {"size": (folder / name).stat().st_size, "sha256": digest(folder / name)}
+        for name in outputs(spec)
+        if (folder / name).is_file()
+    }
     # Written last, through a rename: its presence says the run is finished.
     tmp = folder / f"{RESULT}.tmp"
-    tmp.write_text(json.dumps({"row": row, "outputs": sizes}), encoding="utf-8")
+    tmp.write_text(json.dumps({"row": row, "outputs": written}), encoding="utf-8")
     tmp.replace(folder / RESULT)
     return row
 
@@ -183,6 +238,11 @@ class StudyResult:
     @property
     def failed(self) -> list[dict[str, Any]]:
         return [r for r in self.rows if r["exit_code"] not in COMPLETE]
+
+    @property
+    def failed_criteria(self) -> list[dict[str, Any]]:
+        """The complete runs of which a criterion failed (sbsim's exit code 3)."""
+        return [r for r in self.rows if r["exit_code"] == CRITERION_FAILED]
 
 
 @contextmanager
@@ -247,13 +307,17 @@ def run(
     workers: int | None = None,
     progress: bool = True,
     timeout: float | None = None,
+    check: bool = True,
 ) -> StudyResult:
-    """Runs the study's missing runs on Dask, then writes runs.parquet and events.parquet.
+    """Runs the study's missing runs on Dask, then writes runs.parquet, events.parquet and junit.xml;
+    first, with ``check``, the radio settings of the study file (:func:`check_radio`).
 
     KeyboardInterrupt (SIGINT) stops the runs under way (see stop_runs) and raises StudyInterrupted."""
     from distributed import as_completed
 
     program = str(executable().resolve())
+    if check:  # the command checks before it makes the output folder
+        check_radio(spec, program)
     runs = spec.runs()
     rows: dict[str, dict[str, Any]] = {}
     todo = []
@@ -299,6 +363,7 @@ def run(
         raise StudyInterrupted(finished, len(runs)) from None
     ordered = [rows[r.id] for r in runs]
     write_tables(spec, runs, ordered)
+    write_junit(spec, runs, ordered)
     return StudyResult(spec.directory, ordered, len(todo))
 
 

@@ -211,6 +211,11 @@ class StudySpec:
             raise StudyError(f"{source}: 'plugins' must be a list of file names, e.g. [\"build/libmine.so\"]")
         if "sumocfg" in data and not isinstance(data["sumocfg"], str):
             raise StudyError(f"{source}: 'sumocfg' must be a file name")
+        if "radio" in data and "services" not in data:
+            raise StudyError(f"{source}: 'radio' needs 'services' (the radio carries the services' messages)")
+        for name in parameters:
+            if name.startswith("radio_") and "radio" not in data:
+                raise StudyError(f"{source}: parameter '{name}' sets the channel model, which needs 'radio'")
         return cls(
             sumocfg=file("sumocfg") or Path(),
             directory=directory.resolve(),

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace sbsim::kernel {
 namespace {
@@ -37,6 +38,20 @@ TEST(Statistics, RefusesNonFiniteValuesAndEmptyNames) {
     EXPECT_THROW(s.record("v", "x", "", SimTime{}, 1.0), std::invalid_argument);
     EXPECT_EQ(s.size(), 0u);
     EXPECT_TRUE(s.aggregates().empty());
+}
+
+TEST(Statistics, RefusesTextThatIsNotUtf8) {
+    // The summary's JSON and the Parquet file hold UTF-8 only: a name that is not ended the run
+    // with exit 1 when they were written (issue 29). Refused where it is recorded instead.
+    Statistics s;
+    for (const std::string bad : {"speed\xff", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xe2\x82"}) {
+        EXPECT_THROW(s.record("v", "x", bad, SimTime{}, 1.0), std::invalid_argument) << bad;
+        EXPECT_THROW(s.record(bad, "x", "a", SimTime{}, 1.0), std::invalid_argument) << bad;
+        EXPECT_THROW(s.record("v", bad, "a", SimTime{}, 1.0), std::invalid_argument) << bad;
+    }
+    EXPECT_EQ(s.size(), 0u);
+    s.record("véhicule", "x", "Geschwindigkeit \xe2\x82\xac \xf0\x9f\x9a\x97", SimTime{}, 1.0);
+    EXPECT_EQ(s.size(), 1u);
 }
 
 }  // namespace

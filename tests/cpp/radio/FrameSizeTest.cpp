@@ -89,12 +89,15 @@ TEST(CertificatePolicy, StationsUnheardForTwentySecondsAreForgotten) {
     policy.heard("a", "b", Cam, SimTime::zero());
     for (int k = 0; k < 100; ++k) policy.heard("s" + std::to_string(k), "a", Cam, SimTime::fromMilliseconds(k));
     EXPECT_EQ(policy.stations(), 101u);
+    EXPECT_EQ(policy.remembered(), 101u);  // a heard b, a hundred heard a
     // 25 s on, only a signs: everyone else is dropped, and b counts as new again for a.
     EXPECT_EQ(policy.sign("a", Cam, SimTime::fromMilliseconds(25'000)), SignerIdentifier::Certificate);
     policy.sign("a", Cam, SimTime::fromMilliseconds(41'000));
     EXPECT_EQ(policy.stations(), 1u);
+    EXPECT_EQ(policy.remembered(), 0u);
     EXPECT_EQ(policy.sign("a", Cam, SimTime::fromMilliseconds(41'100)), SignerIdentifier::Digest);
     policy.heard("a", "b", Cam, SimTime::fromMilliseconds(41'200));
+    EXPECT_EQ(policy.remembered(), 1u);
     EXPECT_EQ(policy.sign("a", Cam, SimTime::fromMilliseconds(41'300)), SignerIdentifier::Certificate);
 }
 

@@ -235,7 +235,10 @@ TEST_F(RoadsideUnit, ServicesFileForms) {
     EXPECT_EQ(parseError(R"(<services><rsu id="a" x="1"><service type="RsuCaService"/></rsu></services>)"),
               "s.xml:1: an <rsu> needs 'id', 'x' and 'y' (or 'poiType' for every SUMO POI of that type)");
     EXPECT_EQ(parseError(R"(<services><rsu id="a" x="1" y="oops"><service type="RsuCaService"/></rsu></services>)"),
-              "s.xml:1: attribute 'y' of <rsu> must be a number, got 'oops'");
+              "s.xml:1: attribute 'y' of <rsu> must be a number from -1e+07 to 1e+07 m, got 'oops'");
+    // Issue 29: a unit 1e300 m away was taken silently.
+    EXPECT_EQ(parseError(R"(<services><rsu id="a" x="1e300" y="0"><service type="RsuCaService"/></rsu></services>)"),
+              "s.xml:1: attribute 'x' of <rsu> must be a number from -1e+07 to 1e+07 m, got '1e300'");
     EXPECT_EQ(parseError(R"(<services><rsu poiType="rsu" id="a"><service type="RsuCaService"/></rsu></services>)"),
               "s.xml:1: an <rsu> with 'poiType' takes its id and position from each POI: no id, x or y");
     EXPECT_EQ(parseError(R"(<services><rsu id="a" x="0" y="0"/></services>)"), "s.xml:1: <rsu> has no <service>");

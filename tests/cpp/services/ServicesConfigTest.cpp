@@ -98,9 +98,9 @@ TEST(ServicesConfig, EmptyServicesAndDefaultConfig) {
 }
 
 TEST(ServicesConfig, ParametersAreAllAttributesButType) {
-    const ServicesConfig config = parse(oneService("", R"(interval="0.5" type="ClearLaneService" range="300")"));
+    const ServicesConfig config = parse(oneService("", R"(interval="0.5" type="PluginService" range="300")"));
     const ServiceSpec& spec = onlyService(config);
-    EXPECT_EQ(spec.type, "ClearLaneService");
+    EXPECT_EQ(spec.type, "PluginService");
     EXPECT_EQ(spec.parameters.size(), 2u);
     EXPECT_EQ(spec.parameter("interval"), "0.5");
     EXPECT_EQ(spec.parameter("range"), "300");
@@ -567,14 +567,14 @@ TEST(ServicesConfigFile, MalformedXmlInAFileNamesTheFileAndLine) {
 }
 
 TEST(ServicesConfigFile, MalformedNumberInALoadedFileNamesTheFile) {
-    const TempFile file("number", "<services>\n  <service type=\"ClearLaneService\" range=\"far\"/>\n</services>\n");
+    const TempFile file("number", "<services>\n  <service type=\"PluginService\" range=\"far\"/>\n</services>\n");
     const ServicesConfig config = ServicesConfig::load(file.path());
     try {
         config.services().at(0).number("range", 300);
         FAIL() << "no error";
     } catch (const ServicesConfigError& e) {
         EXPECT_EQ(std::string(e.what()), file.path().string() +
-                                             ":2: parameter 'range' of service 'ClearLaneService' must be a number, "
+                                             ":2: parameter 'range' of service 'PluginService' must be a number, "
                                              "got 'far'");
     }
 }
@@ -622,6 +622,46 @@ TEST(ServicesConfigErrors, BadEquippedFilter) {
               "s.xml:4: unknown match 'some' in <equipped> filter (expected 'inverse' or 'any')");
     EXPECT_EQ(errorOf(oneService("<filters>\n<equipped rate='1'/>\n</filters>\n")),
               "s.xml:4: unexpected attribute 'rate' on <equipped>");
+}
+
+// Issue 29: bundled services took misspelt attributes, NaN, infinity, fractions and absurd sizes
+// silently (a cause of 1e300 became -2147483648). Each now has a kind and a range, checked at load.
+TEST(ServiceAttributes, UnknownAttributesOfABundledTypeAreRefused) {
+    EXPECT_EQ(errorOf("<services>\n<service type=\"Beacon\" intervall=\"0.5\"/>\n</services>\n"),
+              "s.xml:2: unknown attribute 'intervall' of service 'Beacon' (it takes: bytes, interval, name)");
+    // Artery's label is every type's; a plugin's type is not checked.
+    EXPECT_EQ(errorOf("<services>\n<service type=\"artery.application.CaService\" name=\"CA\"/>\n</services>\n"),
+              "no error");
+    EXPECT_EQ(errorOf("<services>\n<service type=\"Mine\" anything=\"x\"/>\n</services>\n"), "no error");
+}
+
+TEST(ServiceAttributes, ValuesOfTheWrongKindOrOutOfRangeAreRefused) {
+    const auto beacon = [](const std::string& bytes) {
+        return errorOf("<services>\n<service type=\"Beacon\" bytes=\"" + bytes + "\"/>\n</services>\n");
+    };
+    EXPECT_EQ(beacon("190"), "no error");
+    for (const std::string bad : {"1e18", "100.5", "0", "nan", "inf", "-1"}) {
+        EXPECT_NE(beacon(bad).find("parameter 'bytes' of service 'Beacon' must be"), std::string::npos) << bad;
+    }
+    EXPECT_EQ(beacon("2305"),
+              "s.xml:2: parameter 'bytes' of service 'Beacon' must be a whole number from 1 to 2304, got '2305'");
+    EXPECT_EQ(errorOf("<services>\n<rsu id=\"r\" x=\"0\" y=\"0\">\n<service type=\"RsuDenService\" "
+                      "cause=\"1e300\"/>\n</rsu>\n</services>\n"),
+              "s.xml:3: parameter 'cause' of service 'RsuDenService' must be a whole number from 0 to 255, got "
+              "'1e300'");
+    EXPECT_EQ(errorOf("<services>\n<service type=\"CaService\" fixedRate=\"yes\"/>\n</services>\n"),
+              "s.xml:2: parameter 'fixedRate' of service 'CaService' must be true or false, got 'yes'");
+}
+
+TEST(ServiceAttributes, ContradictingAttributesAreRefused) {
+    EXPECT_EQ(errorOf("<services>\n<service type=\"CaService\" minInterval=\"2\" maxInterval=\"1\"/>\n</services>\n"),
+              "s.xml:2: service 'CaService': minInterval (2 s) is above maxInterval (1 s)");
+    // Against the other's default (1 s).
+    EXPECT_EQ(errorOf("<services>\n<service type=\"CaService\" minInterval=\"5\"/>\n</services>\n"),
+              "s.xml:2: service 'CaService': minInterval (5 s) is above maxInterval (1 s)");
+    EXPECT_EQ(
+        errorOf("<services>\n<service type=\"CaService\" minInterval=\"0.5\" maxInterval=\"0.5\"/>\n</services>\n"),
+        "no error");
 }
 
 }  // namespace

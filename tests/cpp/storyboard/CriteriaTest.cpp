@@ -2,8 +2,10 @@
 // reporting what it saw and what was expected.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "StoryboardTestSupport.h"
@@ -16,6 +18,7 @@
 #include "sbsim/storyboard/criteria/ReachedRegion.h"
 #include "sbsim/storyboard/criteria/StoryActivated.h"
 #include "sbsim/storyboard/criteria/WarnedBefore.h"
+#include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/TrafficQueries.h"
 
 namespace sbsim::storyboard::test {
@@ -47,13 +50,14 @@ Vehicle onLane(std::string id, double x, std::string road, std::string lane, dou
 
 /// Runs `c` over steps 1 s apart and returns its verdict.
 CriterionVerdict over(Criterion& c, const std::vector<std::vector<Vehicle>>& steps,
-                      traffic::TrafficQueries* queries = nullptr, const std::vector<StoryPtr>& stories = {}) {
+                      traffic::TrafficQueries* queries = nullptr, const std::vector<StoryPtr>& stories = {},
+                      const traffic::Penetration* penetration = nullptr) {
     traffic::VehicleSnapshot snapshot;
     traffic::NeighbourGrid grid;
     for (std::size_t k = 0; k < steps.size(); ++k) {
         snapshot.assign(steps[k], SimTime::fromSeconds(static_cast<double>(k + 1)));
         grid.build(snapshot, 100);
-        const EvaluationContext ctx(snapshot, grid, queries);
+        const EvaluationContext ctx(snapshot, grid, queries, nullptr, nullptr, penetration);
         c.prepare(ctx);
         c.observe(ctx);
     }
@@ -84,6 +88,41 @@ TEST(Criteria, MaxSpeedFailsNamingTheFastestVehicleOfItsSet) {
     EXPECT_TRUE(slow.passed) << slow.actual;
     EXPECT_EQ(onlyB.describe(), "MaxSpeed(12, vehicles=[b])");
     EXPECT_THROW(MaxSpeed(-1, VehicleSet{}), std::invalid_argument);
+}
+
+/// A penetration of 0.5 whose draw equips exactly the vehicles of `equipped` among `ids` (the first
+/// seed that does; Penetration's draw is tested on its own).
+traffic::Penetration equipping(const std::vector<std::string>& ids, const std::set<std::string>& equipped) {
+    for (std::uint64_t seed = 0;; ++seed) {
+        const traffic::Penetration p(0.5, seed);
+        if (std::all_of(ids.begin(), ids.end(),
+                        [&](const std::string& id) { return p.equipped(id) == equipped.contains(id); }))
+            return p;
+    }
+}
+
+TEST(Criteria, EquippedOnlyJudgesOnlyTheEquippedVehicles) {
+    const traffic::Penetration onlyB = equipping({"a", "b"}, {"b"});
+    const std::vector<std::vector<Vehicle>> steps = {{car("a", 10), car("b", 11)}, {car("a", 13.5), car("b", 11)}};
+    MaxSpeed equipped(12, VehicleSet({}, true));
+    const CriterionVerdict v = over(equipped, steps, nullptr, {}, &onlyB);
+    EXPECT_TRUE(v.passed) << v.actual;
+    EXPECT_EQ(v.actual, "11.000 m/s (b at t=1 s)");
+    EXPECT_EQ(equipped.describe(), "MaxSpeed(12, equipped_only=True)");
+    MaxSpeed everyone(12, VehicleSet{});
+    EXPECT_FALSE(over(everyone, steps, nullptr, {}, &onlyB).passed) << "a, unequipped, was too fast";
+    MaxSpeed named(12, VehicleSet({"a"}, true));
+    EXPECT_EQ(over(named, steps, nullptr, {}, &onlyB).actual, "no vehicle seen");
+    EXPECT_EQ(named.describe(), "MaxSpeed(12, vehicles=[a], equipped_only=True)");
+
+    // Lane changes of the unequipped are not counted.
+    const std::vector<std::vector<Vehicle>> change = {{onLane("a", 0, "r", "r_0"), onLane("b", 0, "r", "r_0")},
+                                                      {onLane("a", 1, "r", "r_1"), onLane("b", 1, "r", "r_0")}};
+    KeepsLane keeps{VehicleSet({}, true)};
+    EXPECT_TRUE(over(keeps, change, nullptr, {}, &onlyB).passed);
+    KeepsLane all{VehicleSet{}};
+    EXPECT_FALSE(over(all, change, nullptr, {}, &onlyB).passed);
+    EXPECT_EQ(keeps.describe(), "KeepsLane(equipped_only=True)");
 }
 
 TEST(Criteria, ReachedRegionPassesOnlyWhenInTime) {
@@ -185,7 +224,7 @@ facilities::DenmContent denm(const std::string& station, int cause, double at) {
 /// Four steps (t = 1..4 s) towards a place at x in [100, 120] on edge "e2": "crash" (which sends
 /// the DENM) enters at 3 s, a, b, c and e at 4 s, d is there from the start. a hears the accident
 /// DENM (cause 2) at 1.5 s, b at 3.5 s, e only a cause 6 one at 1.5 s; c hears nothing.
-CriterionVerdict approach(WarnedBefore& c) {
+CriterionVerdict approach(WarnedBefore& c, const traffic::Penetration* penetration = nullptr) {
     facilities::StationRegistry stations;
     traffic::VehicleSnapshot snapshot;
     traffic::NeighbourGrid grid;
@@ -205,7 +244,7 @@ CriterionVerdict approach(WarnedBefore& c) {
             {at("a", k == 4), at("b", k == 4), at("c", k == 4), at("crash", k >= 3), at("d", true), at("e", k == 4)},
             now);
         grid.build(snapshot, 100);
-        const EvaluationContext ctx(snapshot, grid, nullptr, nullptr, &stations);
+        const EvaluationContext ctx(snapshot, grid, nullptr, nullptr, &stations, penetration);
         c.prepare(ctx);
         c.observe(ctx);
     }
@@ -242,6 +281,16 @@ TEST(Criteria, WarnedBeforeJudgesTheVehiclesThatReachedThePlace) {
     auto edge = WarnedBefore::onEdge("e2", std::nullopt, SimTime::fromSeconds(0.5), zero, std::nullopt);
     EXPECT_EQ(edge->describe(), "WarnedBefore(edge e2, seconds=0.5)");
     EXPECT_EQ(approach(*edge).actual, "1 of 4 vehicles reached it unwarned (c), first c at t=4 s, never warned");
+
+    // c, never warned, carries no equipment: with equipped_only it is not judged.
+    const traffic::Penetration withoutC = equipping({"a", "b", "c", "e"}, {"a", "b", "e"});
+    auto equipped = WarnedBefore::inArea(box, 2, zero, zero, std::nullopt, true);
+    EXPECT_EQ(approach(*equipped, &withoutC).actual,
+              "1 of 3 vehicles reached it unwarned (e), first e at t=4 s, never warned");
+    EXPECT_EQ(equipped->describe(), "WarnedBefore(4 points, cause=2, seconds=0, equipped_only=True)");
+    auto judgedAll = WarnedBefore::inArea(box, 2, zero, zero, std::nullopt);
+    EXPECT_EQ(approach(*judgedAll, &withoutC).actual,
+              "2 of 4 vehicles reached it unwarned (c, e), first c at t=4 s, never warned");
 
     EXPECT_THROW(WarnedBefore::onEdge("e2", 300, zero, zero, std::nullopt), std::invalid_argument);
     EXPECT_THROW(WarnedBefore::onEdge("e2", 2, SimTime::fromSeconds(-1), zero, std::nullopt), std::invalid_argument);

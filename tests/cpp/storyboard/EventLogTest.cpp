@@ -53,6 +53,7 @@ TEST(EventLog, KeysComeInTheDocumentedOrder) {
     log.deactivate(SimTime::fromSeconds(2), "rain", "flow0.1", "vehicle_left");
     log.signal(SimTime::fromSeconds(3), "siren", "police0", "siren on", {"a", "b"});
     log.signal(SimTime::fromSeconds(4), "siren", "police1", "alone", {});
+    log.equipped(SimTime::fromSeconds(5.5), "flow0.2");
     EXPECT_EQ(out.str(),
               R"({"t":1,"type":"activate","story":"rain","vehicle":"flow0.1"})"
               "\n"
@@ -61,6 +62,8 @@ TEST(EventLog, KeysComeInTheDocumentedOrder) {
               R"({"t":3,"type":"signal","story":"siren","vehicle":"police0","cause":"siren on","others":["a","b"]})"
               "\n"
               R"({"t":4,"type":"signal","story":"siren","vehicle":"police1","cause":"alone","others":[]})"
+              "\n"
+              R"({"t":5.5,"type":"equipped","story":null,"vehicle":"flow0.2"})"
               "\n");
 }
 

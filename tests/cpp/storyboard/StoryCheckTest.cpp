@@ -24,6 +24,7 @@
 #include "sbsim/storyboard/conditions/CollisionCondition.h"
 #include "sbsim/storyboard/conditions/DeferringCondition.h"
 #include "sbsim/storyboard/conditions/DistanceCondition.h"
+#include "sbsim/storyboard/conditions/EquippedCondition.h"
 #include "sbsim/storyboard/conditions/HeadwayCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
 #include "sbsim/storyboard/conditions/LaneCondition.h"
@@ -124,6 +125,7 @@ TEST(StoryCheck, EveryConditionDescribesItselfWithItsArguments) {
         {std::make_shared<RoadCondition>(Ids{"c3", "b12"}), "RoadCondition(b12, c3)"},
         {std::make_shared<LaneCondition>(Ids{"b12_0"}), "LaneCondition(b12_0)"},
         {std::make_shared<CollisionCondition>(), "CollisionCondition"},
+        {std::make_shared<EquippedCondition>(), "EquippedCondition()"},
         // Logic nodes are their name: their operands are printed below them.
         {std::make_shared<NotCondition>(window(0, 1)), "NotCondition"},
         {std::make_shared<AllCondition>(std::vector<ConditionPtr>{window(0, 1)}), "AllCondition"},

@@ -1,7 +1,8 @@
 // The V2X conditions on a station registry filled by hand: DenmCondition by cause and age of the
 // last reception, yielding the running originators (plainly true when none runs), false after
 // expiry or termination, filtered by the event's distance, direction and relevance area;
-// CamCondition by distance to the known station's CAM position and age.
+// CamCondition by distance to the known station's CAM position and age; EquippedCondition by the
+// run's penetration draw.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,8 @@
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/storyboard/conditions/CamCondition.h"
 #include "sbsim/storyboard/conditions/DenmCondition.h"
+#include "sbsim/storyboard/conditions/EquippedCondition.h"
+#include "sbsim/traffic/Penetration.h"
 
 namespace sbsim::storyboard::test {
 namespace {
@@ -146,6 +149,35 @@ TEST(CamCondition, KnowsStationsWithinDistanceAndAge) {
     EXPECT_EQ(scene.test(anywhere, "ego").others(), others(scene, {"far"})) << "near's CAM outlived 1.1 s";
     EXPECT_EQ(within50.describe(), "CamCondition(within 50 m)");
     EXPECT_EQ(fresh.describe(), "CamCondition(within 50 m, max age 0.2 s)");
+}
+
+TEST(EquippedCondition, IsTheRunsPenetrationDraw) {
+    const traffic::Penetration half(0.5, 7);
+    // Ids on both sides of the draw, found by the draw itself (Penetration is tested on its own).
+    std::vector<std::string> equipped, unequipped;
+    for (int k = 0; equipped.size() < 2 || unequipped.size() < 2; ++k) {
+        const std::string id = "veh" + std::to_string(k);
+        (half.equipped(id) ? equipped : unequipped).push_back(id);
+    }
+    traffic::VehicleSnapshot snapshot;
+    snapshot.assign(
+        {car(equipped[0], 0, 0), car(unequipped[0], 10, 0), car(equipped[1], 20, 0), car(unequipped[1], 30, 0)},
+        secs(1));
+    traffic::NeighbourGrid grid;
+    grid.build(snapshot, 100);
+    const EvaluationContext ctx(snapshot, grid, nullptr, nullptr, nullptr, &half);
+    EquippedCondition c;
+    for (const std::string& id : equipped) EXPECT_TRUE(c.test(ctx, *snapshot.indexOf(id))) << id;
+    for (const std::string& id : unequipped) EXPECT_FALSE(c.test(ctx, *snapshot.indexOf(id))) << id;
+    // No penetration given (the default, 1): everyone carries equipment.
+    const EvaluationContext everyone(snapshot, grid);
+    for (const std::string& id : unequipped) EXPECT_TRUE(c.test(everyone, *snapshot.indexOf(id))) << id;
+    const traffic::Penetration nobody(0.0, 7);
+    const EvaluationContext none(snapshot, grid, nullptr, nullptr, nullptr, &nobody);
+    for (const std::string& id : equipped) EXPECT_FALSE(c.test(none, *snapshot.indexOf(id))) << id;
+    EXPECT_TRUE(c.pure());
+    EXPECT_EQ(c.columns(), traffic::SnapshotColumns{});
+    EXPECT_EQ(c.describe(), "EquippedCondition()");
 }
 
 }  // namespace

@@ -64,7 +64,18 @@ void requireReadableFile(const std::string& option, const fs::path& path) {
 
 void FileLedger::requireInput(const std::string& option, const fs::path& path) {
     requireReadableFile(option, path);
-    inputs_.push_back({option, path});
+    addInput(option, path);
+}
+
+void FileLedger::addInput(const std::string& source, const fs::path& path) {
+    // An input found after an output was claimed (a file one feature reads late) is still one.
+    for (const File& output : outputs_) {
+        if (!sameFile(path, output.path)) continue;
+        throw OutputError(
+            fmt::format("{}: '{}' is the same file as the input '{}' ({}); an output must not overwrite it",
+                        output.source, output.path.string(), path.string(), source));
+    }
+    inputs_.push_back({source, path});
 }
 
 void FileLedger::addReferencedInput(const std::string& source, const fs::path& path) {
@@ -78,7 +89,7 @@ void FileLedger::addReferencedInput(const std::string& source, const fs::path& p
         throw InputError(fmt::format("{}: '{}' is {}; sbsim reads regular files only", source, path.string(),
                                      kindOf(status.type())));
     }
-    inputs_.push_back({source, path});
+    addInput(source, path);
 }
 
 void FileLedger::claimOutput(const std::string& option, const fs::path& path) {

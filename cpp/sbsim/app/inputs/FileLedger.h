@@ -9,7 +9,9 @@ namespace sbsim::app {
 /// The files a run reads and writes, each with what names it (an option, or a file and its
 /// option). Inputs are checked before anything opens them; an output is refused when it is the
 /// same file as an input or as another output (std::filesystem::equivalent: symlinks and hard
-/// links included), so that writing it can never destroy one.
+/// links included), so that writing it can never destroy one. Whichever comes first: an input
+/// recorded after an output is checked against it too, so no feature's input can slip through
+/// by being read late.
 class FileLedger {
 public:
     /// An input named on the command line: it must be a regular, readable file. Checked before
@@ -26,6 +28,9 @@ private:
         std::string source;
         std::filesystem::path path;
     };
+    /// Records an input; throws OutputError if an output claimed before is the same file.
+    void addInput(const std::string& source, const std::filesystem::path& path);
+
     std::vector<File> inputs_;
     std::vector<File> outputs_;
 };

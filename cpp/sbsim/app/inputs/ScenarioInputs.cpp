@@ -60,10 +60,21 @@ services::ServicesConfig loadServicesConfig(const fs::path& path, FileLedger& fi
         throw InputError(fmt::format("--services: {}", e.what()));
     }
     const services::ServiceRegistry& registry = services::ServiceRegistry::instance();
-    for (const services::ServiceSpec& spec : config->services()) {
-        if (registry.contains(spec.type)) continue;
+    // Every <service>, a vehicle's or a roadside unit's: a type the registry lacks is bad input now,
+    // not a failure when the first station starts.
+    std::vector<const services::ServiceSpec*> specs;
+    for (const services::ServiceSpec& spec : config->services()) specs.push_back(&spec);
+    for (const services::RoadsideUnitSpec& rsu : config->roadsideUnits()) {
+        for (const services::ServiceSpec& spec : rsu.services) specs.push_back(&spec);
+    }
+    for (const services::ServiceSpec* spec : specs) {
+        if (registry.contains(spec->type)) continue;
         throw InputError(fmt::format("--services: {}:{}: unknown service type '{}' (known: {})", path.string(),
-                                     spec.line, spec.type, fmt::join(registry.names(), ", ")));
+                                     spec->line, spec->type, fmt::join(registry.names(), ", ")));
+    }
+    // Read by the services' parser (a DenService's use cases): inputs all the same.
+    for (const fs::path& other : config->otherFiles()) {
+        files.addReferencedInput(fmt::format("--services (read from '{}')", path.string()), other);
     }
     return std::move(*config);
 }

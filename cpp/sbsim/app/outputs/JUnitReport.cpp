@@ -4,6 +4,8 @@
 
 #include <cstddef>
 
+#include "sbsim/app/outputs/XmlText.h"
+
 namespace sbsim::app {
 
 void writeJUnit(std::ostream& out, const std::string& suite,
@@ -15,16 +17,17 @@ void writeJUnit(std::ostream& out, const std::string& suite,
     tinyxml2::XMLElement* suites = doc.NewElement("testsuites");
     doc.InsertEndChild(suites);
     tinyxml2::XMLElement* s = suites->InsertNewChildElement("testsuite");
-    s->SetAttribute("name", suite.c_str());
+    const std::string suiteName = xmlText(suite);
+    s->SetAttribute("name", suiteName.c_str());
     s->SetAttribute("tests", static_cast<std::int64_t>(verdicts.size()));
     s->SetAttribute("failures", static_cast<std::int64_t>(failures));
     s->SetAttribute("errors", 0);
     s->SetAttribute("time", seconds);
     for (const auto& [name, v] : verdicts) {
         tinyxml2::XMLElement* c = s->InsertNewChildElement("testcase");
-        c->SetAttribute("name", name.c_str());
-        c->SetAttribute("classname", suite.c_str());
-        const std::string text = "actual: " + v.actual + "; expected: " + v.expected;
+        c->SetAttribute("name", xmlText(name).c_str());
+        c->SetAttribute("classname", suiteName.c_str());
+        const std::string text = xmlText("actual: " + v.actual + "; expected: " + v.expected);
         if (v.passed) {
             c->InsertNewChildElement("system-out")->SetText(text.c_str());
         } else {

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/inputs/FileLedger.h"
@@ -107,6 +108,12 @@ void OutputFile::check() {
 }
 
 void OutputFile::commit() {
+    prepare();
+    publish();
+}
+
+void OutputFile::prepare() {
+    if (prepared_) return;
     stream_->flush();
     check();
     // On the disk before it gets its final name, so a crash cannot leave a complete-looking
@@ -116,7 +123,21 @@ void OutputFile::commit() {
     errno = 0;
     if (buffer_->close() == nullptr) fail(errno != 0 ? errno : EIO);
     committed_ = true;
-    if (renamed && std::rename(writing_.c_str(), target_.c_str()) != 0) fail(errno);
+    prepared_ = true;
+}
+
+void OutputFile::publish() {
+    if (!prepared_) throw std::logic_error("OutputFile::publish() before prepare()");
+    if (writing_ != target_ && std::rename(writing_.c_str(), target_.c_str()) != 0) fail(errno);
+}
+
+void commitTogether(std::initializer_list<OutputFile*> outputs) {
+    for (OutputFile* output : outputs) {
+        if (output != nullptr) output->prepare();
+    }
+    for (OutputFile* output : outputs) {
+        if (output != nullptr) output->publish();
+    }
 }
 
 }  // namespace sbsim::app

@@ -3,6 +3,7 @@
 #include <ext/stdio_filebuf.h>
 
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -38,6 +39,11 @@ public:
     void check();
     /// Flushes everything to the disk and renames the file into place; throws OutputError.
     void commit();
+    /// commit() in two halves, for a run's outputs to be committed together (commitTogether):
+    /// prepare() flushes, syncs and closes the file, throwing OutputError for any failed write;
+    /// publish() renames it into place.
+    void prepare();
+    void publish();
 
 private:
     /// The file's buffer, keeping the error of its first failed write (errno is overwritten by
@@ -68,6 +74,12 @@ private:
     std::unique_ptr<Buffer> buffer_;
     std::unique_ptr<std::ostream> stream_;
     bool committed_ = false;
+    bool prepared_ = false;
 };
+
+/// Commits the given outputs (null ones skipped) all or none: every one is prepared first, so a
+/// write that failed in any (a full disk, a closed pipe) leaves them all `.incomplete`; only then
+/// are they renamed into place.
+void commitTogether(std::initializer_list<OutputFile*> outputs);
 
 }  // namespace sbsim::app

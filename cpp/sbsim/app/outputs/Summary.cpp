@@ -31,6 +31,20 @@ double meanReceivers(const radio::Medium::Counts& c) {
 
 /// Distance bins (of 50 m) the text summary shows; the JSON has them all.
 constexpr std::size_t kSummaryBins = 20;
+/// Equipped vehicles the text summary names; the JSON names them all.
+constexpr std::size_t kSummaryEquipped = 10;
+
+/// "12 of 40 (penetration 0.3): a at t=0 s, b at t=1.5 s and 10 more".
+std::string equippedLine(const traffic::EquippedVehicles& e) {
+    const auto& list = e.equipped();
+    std::string out = fmt::format("{} of {} (penetration {:g})", list.size(), e.seen(), e.penetration().share());
+    for (std::size_t k = 0; k < list.size() && k < kSummaryEquipped; ++k) {
+        out += fmt::format("{}{} at t={} s", k == 0 ? ": " : ", ", kernel::escapeControls(list[k].vehicle),
+                           list[k].since.str());
+    }
+    if (list.size() > kSummaryEquipped) out += fmt::format(" and {} more", list.size() - kSummaryEquipped);
+    return out;
+}
 
 }  // namespace
 
@@ -52,6 +66,7 @@ void printSummary(const RunFigures& f) {
     }
     if (f.services != nullptr) {
         fmt::print("services created: {}\n", f.services->servicesCreated());
+        if (f.equipped != nullptr) fmt::print("equipped vehicles: {}\n", equippedLine(*f.equipped));
         if (f.services->roadsideUnits() > 0) fmt::print("roadside units: {}\n", f.services->roadsideUnits());
         if (f.obstacles != nullptr)
             fmt::print("obstacles: {} (polygon type '{}')\n", f.obstacles->count, f.obstacles->polygonType);
@@ -79,6 +94,10 @@ void printSummary(const RunFigures& f) {
         }
         if (const auto load = f.medium->loadFigures())
             fmt::print("channel busy ratio: mean {:.4f}, max {:.4f}\n", load->meanCbr, load->maxCbr);
+        if (const auto links = f.medium->linkFigures()) {
+            fmt::print("links: {} drawn in full, {} interference only, {} skipped below the floor\n", links->full,
+                       links->interference, links->skipped);
+        }
     }
     if (f.messageTrace && f.messageTrace->truncatedAt) {
         fmt::print("message trace: truncated at t={} s (--messages-max-bytes {})\n", f.messageTrace->truncatedAt->str(),
@@ -142,6 +161,15 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
     ordered_json messages = ordered_json::object();
     if (f.services != nullptr) {
         out["services_created"] = f.services->servicesCreated();
+        if (f.equipped != nullptr) {
+            ordered_json vehicles = ordered_json::array();
+            for (const auto& entry : f.equipped->equipped())
+                vehicles.push_back({{"vehicle", entry.vehicle}, {"since", entry.since.seconds()}});
+            out["equipped"] = {{"penetration", f.equipped->penetration().share()},
+                               {"count", f.equipped->equipped().size()},
+                               {"of", f.equipped->seen()},
+                               {"vehicles", std::move(vehicles)}};
+        }
         if (f.services->roadsideUnits() > 0) out["roadside_units"] = f.services->roadsideUnits();
         if (f.obstacles != nullptr)
             out["obstacles"] = {{"polygon_type", f.obstacles->polygonType}, {"count", f.obstacles->count}};
@@ -165,6 +193,10 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         }
         if (const auto load = f.medium->loadFigures())
             out["channel_busy_ratio"] = {{"mean", load->meanCbr}, {"max", load->maxCbr}, {"samples", load->samples}};
+        if (const auto links = f.medium->linkFigures()) {
+            out["links"] = {
+                {"full", links->full}, {"interference", links->interference}, {"skipped", links->skipped}};
+        }
     }
     out["messages"] = std::move(messages);
     if (f.messageTrace) {

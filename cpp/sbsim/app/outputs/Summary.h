@@ -17,6 +17,7 @@
 #include "sbsim/services/ServiceManager.h"
 #include "sbsim/storyboard/Criterion.h"
 #include "sbsim/storyboard/Storyboard.h"
+#include "sbsim/traffic/EquippedVehicles.h"
 #include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::app {
@@ -37,6 +38,8 @@ struct RunFigures {
     std::optional<TraceFigures> messageTrace = std::nullopt;  ///< --messages
     /// The channel model's buildings (--radio); null for the disc model.
     const ObstacleFigures* obstacles = nullptr;
+    /// Which vehicles departed V2X-equipped (a run with services); null without services.
+    const traffic::EquippedVehicles* equipped = nullptr;
 };
 
 /// `key: value` lines on stdout: first what the run did (identical for identical runs), then the

@@ -115,6 +115,7 @@ int RunCommand::run(const CommandLine& cl) {
     const std::vector<std::unique_ptr<PluginLibrary>> plugins = loadPlugins(cl.plugins, files);
     std::optional<services::ServicesConfig> servicesConfig;
     if (cl.services) servicesConfig = loadServicesConfig(*cl.services, files);
+    checkRadioInput(cl, files);
     // Opened once every input is known, so it can be none of them; before SUMO loads, so a path
     // it cannot write fails at once.
     std::optional<OutputFile> events;
@@ -126,7 +127,6 @@ int RunCommand::run(const CommandLine& cl) {
         if (!cl.services) throw UsageError("--messages: there are no messages without --services");
         messages.emplace("--messages", *cl.messages, files);
     }
-    checkRadioInput(cl, files);
     std::optional<OutputFile> statisticsFile;
     if (cl.statistics) statisticsFile.emplace("--statistics", *cl.statistics, files);
     std::optional<OutputFile> junit;
@@ -155,7 +155,7 @@ int RunCommand::run(const CommandLine& cl) {
     // After the scenario: its Python finds the interpreter a Parquet trace is written with.
     std::optional<MessageTraceFile> messageTrace;
     if (messages) messageTrace.emplace(traceWriter(cl, *messages, scenario), traceFilter(cl), cl.messagesMaxBytes);
-    const traffic::Penetration penetration(cl.penetration, sim.seed());
+    const traffic::Penetration& penetration = scenario.equipment().penetration();
     if (sumoLog) sumo.warnings().setLog(&sumoLog->stream());
     scenario.loadSumo();
     Interruption::checkpoint("while SUMO was loading");
@@ -166,6 +166,11 @@ int RunCommand::run(const CommandLine& cl) {
 
     std::optional<storyboard::EventLog> log;
     if (events) log.emplace(events->stream());
+    // Equipment matters where V2X runs: the logs of runs without services stay as they were.
+    if (log && servicesConfig) {
+        scenario.equipment().onEquipped(
+            [&log](kernel::SimTime t, const std::string& vehicle) { log->equipped(t, vehicle); });
+    }
     if (messageTrace) scenario.stations().setPhaseSink(&*messageTrace);
     if (story) {
         storyboard::StoryScript& script = scenario.addStoryboard(
@@ -263,23 +268,18 @@ int RunCommand::run(const CommandLine& cl) {
         std::any_of(verdicts.begin(), verdicts.end(), [](const auto& v) { return !v.second.passed; });
     if (progress) progress->clear();
     if (gui && !Interruption::requested()) gui->finish(sim.now());
-    // Only a run that ended as it should gives outputs their names; others stay .incomplete.
-    if (events && !Interruption::requested()) events->commit();
+    // Everything written first, then committed together: a failure in any output (a full disk,
+    // the Parquet writer) or an interruption while they are written leaves all of them
+    // .incomplete, none under its final name.
     if (messageTrace) {
         messageTrace->finish(sim.now());
         if (!Interruption::requested()) warnOfUnsentTypes(messageTrace->filter(), scenario.medium());
     }
-    if (messages && !Interruption::requested()) messages->commit();
-    if (sumoLog && !Interruption::requested()) sumoLog->commit();
     if (junit) {
         writeJUnit(junit->stream(), story ? story->filename().string() : sumocfg.filename().string(), verdicts,
                    std::chrono::duration<double>(Clock::now() - started).count());
-        if (!Interruption::requested()) junit->commit();
     }
-    if (statisticsFile) {
-        statisticsFile->stream() << scenario.statisticsFile();
-        if (!Interruption::requested()) statisticsFile->commit();
-    }
+    if (statisticsFile) statisticsFile->stream() << scenario.statisticsFile();
 
     const RunFigures figures{sumocfg,
                              sim,
@@ -292,10 +292,14 @@ int RunCommand::run(const CommandLine& cl) {
                              std::chrono::duration<double>(Clock::now() - started).count(),
                              cl.arguments,
                              messageTrace ? std::optional(messageTrace->figures()) : std::nullopt,
-                             scenario.obstacles() ? &*scenario.obstacles() : nullptr};
-    if (summary) {
-        summary->stream() << summaryJson(figures).dump(2) << '\n';
-        if (!Interruption::requested()) summary->commit();
+                             scenario.obstacles() ? &*scenario.obstacles() : nullptr,
+                             scenario.services() != nullptr ? &scenario.equipment() : nullptr};
+    if (summary) summary->stream() << summaryJson(figures).dump(2) << '\n';
+    // Only a run that ended as it should gives outputs their names; others stay .incomplete.
+    const auto present = [](std::optional<OutputFile>& f) { return f ? &*f : nullptr; };
+    if (!Interruption::requested()) {
+        commitTogether({present(events), present(messages), present(sumoLog), present(junit), present(statisticsFile),
+                        present(summary)});
     }
     if (!cl.quiet) {
         try {

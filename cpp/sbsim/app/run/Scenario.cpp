@@ -24,7 +24,9 @@ Scenario::Scenario(const CommandLine& options, traffic::SumoSettings settings, u
       sumocfg_(settings.sumocfg),
       stations_(std::make_shared<facilities::StationRegistry>()),
       sim_(static_cast<std::uint64_t>(options.seed.value_or(CommandLine::kDefaultSeed)), threads),
-      sumo_(sim_.emplaceModule<traffic::SumoBridge>(std::move(settings))) {
+      sumo_(sim_.emplaceModule<traffic::SumoBridge>(std::move(settings))),
+      equipment_(
+          std::make_unique<traffic::EquippedVehicles>(sumo_, traffic::Penetration(options.penetration, sim_.seed()))) {
     for (const std::string& param : options.params) {
         try {
             sim_.parameters().add(param);
@@ -51,6 +53,7 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
     board_ = &sim_.emplaceModule<storyboard::Storyboard>(vehicles_, log);
     board_->hearStations(stations_);
     board_->setStatistics(statistics_);
+    board_->setPenetration(equipment_->penetration());
     std::optional<traffic::EquippedView> view;
     if (equippedOnly) view.emplace(*equippedOnly);
     feed_ = std::make_unique<storyboard::BoardFeed>(sumo_, sumo_.snapshot(), *board_, std::move(view));
@@ -98,7 +101,7 @@ std::unique_ptr<storyboard::ParquetStream> Scenario::parquetStream(const std::st
 
 std::string Scenario::statisticsFile() const {
     if (!parquet_) throw std::logic_error("requireStatisticsFile() was not called");
-    return parquet_->bytes(statistics_);
+    return parquet_->bytes(statistics_, [this](std::string_view id) { return equipment_->isEquipped(id); });
 }
 
 std::vector<std::string> Scenario::abandonLingeringThreads() {

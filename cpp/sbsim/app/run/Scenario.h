@@ -22,6 +22,7 @@
 #include "sbsim/storyboard/python/PythonRuntime.h"
 #include "sbsim/storyboard/python/StatisticsParquet.h"
 #include "sbsim/storyboard/python/StoryScript.h"
+#include "sbsim/traffic/EquippedVehicles.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/SumoBridge.h"
 #include "sbsim/traffic/VehicleRegistry.h"
@@ -38,15 +39,17 @@ public:
     /// What the command line says SUMO is to run: the sumocfg, SUMO's words, --seed, --end, --quiet.
     static traffic::SumoSettings sumoSettings(const CommandLine& options, const std::filesystem::path& sumocfg);
 
-    /// Makes the simulation and the (not yet loaded) SUMO bridge. Throws UsageError for a bad --param.
+    /// Makes the simulation, the (not yet loaded) SUMO bridge and the record of which vehicles are
+    /// equipped (--penetration). Throws UsageError for a bad --param.
     Scenario(const CommandLine& options, traffic::SumoSettings settings, unsigned threads);
     Scenario(const Scenario&) = delete;
     Scenario& operator=(const Scenario&) = delete;
 
     /// Loads SUMO; throws InputError naming the sumocfg when SUMO cannot.
     void loadSumo();
-    /// Adds the storyboard (events to `log`, if given; with `equippedOnly`, the stories see only
-    /// those vehicles) and loads the story script, whose createStories() is still to run.
+    /// Adds the storyboard (events to `log`, if given; its conditions and criteria know who is
+    /// equipped; with `equippedOnly`, the stories see only those vehicles) and loads the story script, whose
+    /// createStories() is still to run.
     storyboard::StoryScript& addStoryboard(const std::filesystem::path& story, storyboard::EventLog* log,
                                            std::optional<traffic::Penetration> equippedOnly = std::nullopt);
     /// Starts the interpreter (if no story did) and makes sure the statistics file can be written
@@ -74,6 +77,9 @@ public:
     /// What every station heard (LDMs, DENM memories): written by the services, read by the
     /// stories' V2X conditions.
     facilities::StationRegistry& stations() { return *stations_; }
+    /// Which vehicles departed V2X-equipped, and when (the services' penetration draw).
+    traffic::EquippedVehicles& equipment() { return *equipment_; }
+    const traffic::EquippedVehicles& equipment() const { return *equipment_; }
     /// What the services and the stories recorded (recordScalar, emit, board.record).
     const kernel::Statistics& statistics() const { return statistics_; }
     /// Threads the story script left running, abandoned after a grace period (their names).
@@ -91,6 +97,7 @@ private:
     std::optional<storyboard::StatisticsParquet> parquet_;
     kernel::Simulation sim_;
     traffic::SumoBridge& sumo_;
+    std::unique_ptr<traffic::EquippedVehicles> equipment_;
     storyboard::Storyboard* board_ = nullptr;
     std::unique_ptr<storyboard::StoryScript> script_;
     std::unique_ptr<storyboard::BoardFeed> feed_;

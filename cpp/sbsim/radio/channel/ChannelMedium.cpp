@@ -205,7 +205,7 @@ void ChannelMedium::startTransmission(Slot s) {
     }
 
     // The sender stops receiving: whatever it was receiving is lost to half-duplex.
-    reception_.startSending(s, tx->id);
+    reception_.startSending(s, tx->id, simTime());
     setCbrBusy(s);
     reception_.frameStarts(tx->id, tx->links);
     scheduleAt(simTime() + settings_.airtime(tx->message->frameBytes()), tx->end);
@@ -239,14 +239,13 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
 
     for (Link& link : tx->links) {
         const Slot r = link.receiver;
+        const double total = reception_.frameEnds(id, tx->start, link);
         if (link.counted) {
-            const double total = reception_.powerWithout(r, tx->links);
             // A station that senses the channel free may schedule its backoff's end, possibly at
             // a delivery's time: the receptions so far go first, as their own events did.
             if (access_.contending(r) && reception_.changesSense(r, total)) flush();
             reception_.setSensedPower(r, total);
         }
-        reception_.unlock(r, id);
 
         double sinrDb = 0;
         const std::optional<LossReason> loss = reception_.decode(link, frameKey, stations_.keys[r], sinrDb);

@@ -57,6 +57,10 @@ public:
     std::optional<kernel::SimTime> dccInterval(const std::string& station) const override;
     std::optional<double> channelBusyRatio(const std::string& station) const override;
     std::optional<LoadFigures> loadFigures() const override { return load_.figures(); }
+    std::optional<LinkFigures> linkFigures() const override {
+        const LinkBudget::Tiers& t = budget_.tiers();
+        return LinkFigures{t.full, t.interference, t.skipped};
+    }
 
     /// Figures for tests and benchmarks.
     std::uint64_t transmissions() const { return transmissions_; }

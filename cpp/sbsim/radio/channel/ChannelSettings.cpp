@@ -40,6 +40,7 @@ void ChannelSettings::validate() const {
             "delays must be >= 0 s, delay_max_s >= delay_min_s, delay_shape > 0");
     require(linksPerChunk >= 1, "links_per_chunk must be >= 1");
     require(traceRange >= 0, "trace_range must be >= 0 m");
+    require(tierMarginDb >= 0 && tierMarginDb <= 100, "tier_margin_db must be 0 to 100");
     (void)FrameErrorTable(ferTable);  // throws on a malformed table
     (void)makePathLoss();
 }

@@ -69,6 +69,18 @@ struct SBSIM_API ChannelSettings {
     std::vector<std::pair<double, double>> ferTable = {{0, 1},     {5, 1},     {10, 0.4},  {15, 1.5e-2},
                                                        {20, 4e-3}, {25, 3e-3}, {30, 2e-3}, {35, 1e-3}};
 
+    /// The link budget in tiers (Veins' cheapest-first thresholding), on by default: per SUMO step a
+    /// link's mean power (path loss, obstacles) decides its tier. Below the interference floor by
+    /// the cutoff's margin (2 σ, +5 dB with fading): not computed. Below the sensing threshold by
+    /// `tierMarginDb`: the link can neither be detected nor decoded, it only adds its mean power
+    /// (shadowing's linear mean, fading's mean of 1) to the receiver's interference and carrier
+    /// sense, with no draw per frame. Above: shadowing and fading drawn per frame, as exactly as
+    /// with the tiers off (`[performance] link_budget = "exact"`). bench/tiers.py measures the error.
+    bool linkTiers = true;
+    /// dB between a link's mean power and the sensing threshold below which it is interference
+    /// only: with σ = 3 dB a draw reaches it with probability 4·10⁻⁴ (3.3 σ).
+    double tierMarginDb = 10;
+
     /// A frame's links are computed on the thread pool in chunks of this many (fewer links stay on
     /// the calling thread): waking a worker costs more than a few hundred links.
     std::size_t linksPerChunk = 1024;

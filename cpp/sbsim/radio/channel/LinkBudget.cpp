@@ -1,6 +1,7 @@
 #include "sbsim/radio/channel/LinkBudget.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "sbsim/radio/CounterRandom.h"
@@ -30,9 +31,10 @@ LinkBudget::LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Ob
     fading_.veinsDistanceRule = settings_.fading == ChannelSettings::Fading::NakagamiVeins;
     // The cutoff: where the mean power plus a margin for shadowing (2 σ) and fading falls below
     // the floor. Path loss grows with distance, so double, then bisect.
-    const double margin =
-        2 * settings_.shadowingSigmaDb + (settings_.fading == ChannelSettings::Fading::None ? 0.0 : 5.0);
-    const auto above = [&](double d) { return meanPowerDbm(d) + margin >= settings_.interferenceFloorDbm; };
+    floorMarginDb_ = 2 * settings_.shadowingSigmaDb + (settings_.fading == ChannelSettings::Fading::None ? 0.0 : 5.0);
+    // E[10^(σZ/10)] = exp((σ ln10 / 10)² / 2): an interference-only link adds its mean in mW.
+    meanGainDb_ = settings_.shadowingSigmaDb * settings_.shadowingSigmaDb * std::log(10.0) / 20;
+    const auto above = [&](double d) { return meanPowerDbm(d) + floorMarginDb_ >= settings_.interferenceFloorDbm; };
     double lo = 1;
     double hi = 2;
     while (above(hi) && hi < 1e5) {
@@ -87,38 +89,53 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime no
         sentInStep_[s] = step_;
         sentThisStep_.push_back(s);
     }
-    links.resize(near.receivers.size());
+    const std::size_t n = near.receivers.size();
+    links.resize(n);
+    // Every link with its tier's power first (an interference-only link keeps it), then the draws
+    // of the links drawn in full.
+    for (std::size_t k = 0; k < n; ++k) {
+        // Field by field: `link = Link{}` went through a stack temporary whose overlapping stores
+        // stalled store-to-load forwarding (a quarter of this loop's time).
+        Link& link = links[k];
+        link.receiver = near.receivers[k];
+        link.distance = near.distance[k];
+        link.bin = near.bin[k];
+        link.powerDbm = near.dbm[k];
+        link.powerMw = near.mw[k];
+        link.maxInterferenceMw = 0;
+        link.counted = false;
+        link.halfDuplex = false;
+        link.locked = false;
+    }
     const bool fading = settings_.fading != ChannelSettings::Fading::None;
     const bool shadowing = settings_.shadowingSigmaDb > 0;
-    // The pairs are looked up (and made) here, serially; the pool then moves distinct pairs on.
-    if (shadowing_) shadowing_->pairs(stations_.keys[s], near.key, now, pairs_);
+    // The pairs are looked up (and made) here, serially, once a step: a frame's links then only
+    // touch them, and the pool moves distinct pairs on.
+    if (shadowing_ && (near.pairsAt != near.at || near.pairsGeneration != shadowing_->generation())) {
+        shadowing_->pairs(stations_.keys[s], near.fullKey, now, near.pair);
+        near.pairsAt = near.at;
+        near.pairsGeneration = shadowing_->generation();
+    }
     // Each link is a pure function of its ends and its key: any split over threads gives the same.
     pool.run(
-        near.receivers.size(),
+        near.full.size(),
         [&](std::size_t begin, std::size_t end) {
-            for (std::size_t k = begin; k < end; ++k) {
-                const Slot r = near.receivers[k];
-                // Field by field: `link = Link{}` went through a stack temporary whose overlapping
-                // stores stalled store-to-load forwarding (a quarter of this loop's time).
+            for (std::size_t j = begin; j < end; ++j) {
+                const std::size_t k = near.full[j];
                 Link& link = links[k];
-                link.receiver = r;
-                link.distance = near.distance[k];
-                link.bin = near.bin[k];
-                link.maxInterferenceMw = 0;
-                link.counted = false;
-                link.halfDuplex = false;
-                link.locked = false;
+                const Slot r = link.receiver;
                 double dbm = near.meanDbm[k];
                 if (shadowing_) {
-                    if (k + 4 < end) shadowing_->prefetch(pairs_[k + 4]);
-                    dbm += shadowing_->valueDb(pairs_[k], stations_.keys[s], stations_.x[s], stations_.y[s],
-                                               near.key[k], stations_.x[r], stations_.y[r]);
+                    if (j + 4 < end) shadowing_->prefetch(near.pair[j + 4]);
+                    shadowing_->touch(near.pair[j], now);
+                    dbm += shadowing_->valueDb(near.pair[j], stations_.keys[s], stations_.x[s], stations_.y[s],
+                                               near.fullKey[j], stations_.x[r], stations_.y[r]);
                 } else if (shadowing) {
-                    auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Shadowing);
+                    auto random = CounterRandom::ofFrame(frameKey, near.fullKey[j], DrawPurpose::Shadowing);
                     dbm += settings_.shadowingSigmaDb * random.normal();
                 }
                 if (fading) {
-                    auto random = CounterRandom::ofFrame(frameKey, near.key[k], DrawPurpose::Fading);
+                    auto random = CounterRandom::ofFrame(frameKey, near.fullKey[j], DrawPurpose::Fading);
                     dbm += fading_.gainDb(link.distance, random);
                 }
                 link.powerDbm = dbm;
@@ -126,7 +143,9 @@ void LinkBudget::computeLinks(Slot s, std::uint64_t frameKey, kernel::SimTime no
             }
         },
         settings_.linksPerChunk);
-    linksComputed_ += links.size();
+    tiers_.full += near.full.size();
+    tiers_.interference += n - near.full.size();
+    tiers_.skipped += near.skipped;
 }
 
 void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {
@@ -173,58 +192,92 @@ void LinkBudget::computeNeighbourhood(Slot s) {
             if (it != stations_.slotOf.end() && stations_.present[it->second]) near.receivers.push_back(it->second);
         });
     }
-    const std::size_t n = near.receivers.size();
-    near.distance.resize(n);
-    near.meanDbm.resize(n);
-    near.key.resize(n);
-    near.bin.resize(n);
-    const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
-    const bool obstacles = obstacles_ && obstacles_->size() > 0;
-    for (std::size_t k = 0; k < n; ++k) {
-        const Slot r = near.receivers[k];
-        const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
-        near.distance[k] = (to - from).norm();
-        near.meanDbm[k] = settings_.powerDbm - pathLoss_->lossDb(near.distance[k]);
-        near.key[k] = stations_.keys[r];
-        near.bin[k] = static_cast<std::uint32_t>(near.distance[k] / kDistanceBin);
-    }
-    near.obstaclesPending = obstacles && n > 0;
+    // The buildings wait for the sender's frame (applyObstacles): the batch guesses the step's
+    // senders from the last step's, and with CAMs (1 to 10 Hz) half its guesses do not send.
+    near.obstaclesPending = obstacles_ && obstacles_->size() > 0;
+    if (!near.obstaclesPending) classify(s);
 }
 
 void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
-    // Apart from the step's batch: the batch guesses the step's senders from the last step's,
-    // and with CAMs (1 to 10 Hz) half its guesses do not send, so the dearest part waits for the
-    // frame. Within the step the snapshot's positions are those the neighbourhood was made from.
+    // Within the step the snapshot's positions are those the neighbourhood was made from. A pair
+    // whose two stations send in one step is walked once: the loss is the same both ways.
     Neighbourhood& near = near_[s];
     if (obstacleStep_ != step_) {
         obstacleStep_ = step_;
         obstacleDb_.newStep();
     }
+    near.obstacleDb.resize(near.receivers.size());
     obstacleTodo_.clear();
     for (std::size_t k = 0; k < near.receivers.size(); ++k) {
         if (const double* loss = obstacleDb_.find(s, near.receivers[k])) {
-            near.meanDbm[k] -= *loss;
+            near.obstacleDb[k] = *loss;
         } else {
             obstacleTodo_.push_back(k);
         }
     }
-    obstacleTodoDb_.resize(obstacleTodo_.size());
     const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
     pool.run(
         obstacleTodo_.size(),
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
-                const Slot r = near.receivers[obstacleTodo_[i]];
-                obstacleTodoDb_[i] = obstacles_->lossDb(from, {stations_.x[r], stations_.y[r]});
+                const std::size_t k = obstacleTodo_[i];
+                const Slot r = near.receivers[k];
+                near.obstacleDb[k] = obstacles_->lossDb(from, {stations_.x[r], stations_.y[r]});
             }
         },
         kObstacleLinksPerChunk);
-    for (std::size_t i = 0; i < obstacleTodo_.size(); ++i) {
-        const std::size_t k = obstacleTodo_[i];
-        near.meanDbm[k] -= obstacleTodoDb_[i];
-        obstacleDb_.add(s, near.receivers[k], obstacleTodoDb_[i]);
-    }
+    for (const std::size_t k : obstacleTodo_) obstacleDb_.add(s, near.receivers[k], near.obstacleDb[k]);
+    classify(s);
     near.obstaclesPending = false;
+}
+
+void LinkBudget::classify(Slot s) {
+    Neighbourhood& near = near_[s];
+    const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
+    const bool obstacles = obstacles_ && obstacles_->size() > 0;
+    const bool tiers = settings_.linkTiers;
+    // Tiers: below the floor by the cutoff's margin (buildings can put a link there), or below
+    // the sensing threshold by the tier margin.
+    const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
+    const double fullFrom = settings_.sensingDbm - settings_.tierMarginDb;
+    const std::size_t within = near.receivers.size();
+    for (auto* v : {&near.distance, &near.meanDbm, &near.dbm, &near.mw}) v->resize(within);
+    near.key.resize(within);
+    near.bin.resize(within);
+    std::size_t n = 0;
+    near.full.clear();
+    near.fullKey.clear();
+    near.skipped = 0;
+    for (std::size_t k = 0; k < near.receivers.size(); ++k) {
+        const Slot r = near.receivers[k];
+        const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
+        const double distance = (to - from).norm();
+        double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
+        if (obstacles) mean -= near.obstacleDb[k];
+        if (tiers && mean < skipBelow) {
+            ++near.skipped;
+            continue;
+        }
+        near.receivers[n] = r;
+        near.distance[n] = distance;
+        near.meanDbm[n] = mean;
+        near.key[n] = stations_.keys[r];
+        near.bin[n] = static_cast<std::uint32_t>(distance / kDistanceBin);
+        if (tiers && mean < fullFrom) {
+            near.dbm[n] = mean + meanGainDb_;
+            near.mw[n] = dbToLinear(near.dbm[n]);
+        } else {
+            near.dbm[n] = mean;
+            near.mw[n] = 0;
+            near.full.push_back(static_cast<std::uint32_t>(n));
+            near.fullKey.push_back(near.key[n]);
+        }
+        ++n;
+    }
+    near.receivers.resize(n);
+    for (auto* v : {&near.distance, &near.meanDbm, &near.dbm, &near.mw}) v->resize(n);
+    near.key.resize(n);
+    near.bin.resize(n);
 }
 
 }  // namespace sbsim::radio

@@ -21,13 +21,14 @@
 
 namespace sbsim::radio {
 
-/// The received power of every link of a frame: path loss and obstacles (the mean, the same for
-/// all of a sender's frames in one SUMO step, so kept per sender and step), then log-normal
-/// shadowing — per pair of stations, correlated over the distance they moved (CorrelatedShadowing),
-/// or drawn per link and frame with a correlation distance of 0 — and optional Nakagami fading
-/// drawn per link and frame. Links whose mean power plus a
-/// margin falls below the interference floor are not computed (the cutoff range). Per station
-/// its neighbourhood for the step, struct-of-arrays by slot.
+/// The received power of every link of a frame, in tiers (ChannelSettings::linkTiers), cheapest
+/// first as Veins thresholds: the mean power — path loss and obstacles, the same for all of a
+/// sender's frames in one SUMO step, so kept per sender and step — decides whether a link is
+/// skipped (below the interference floor by the cutoff's margin), interference only (below the
+/// sensing threshold by a margin: its mean power, no draw) or drawn in full: log-normal shadowing
+/// — per pair of stations, correlated over the distance they moved (CorrelatedShadowing), or drawn
+/// per link and frame with a correlation distance of 0 — and optional Nakagami fading drawn per
+/// link and frame. Per station its neighbourhood for the step, struct-of-arrays by slot.
 class LinkBudget {
 public:
     using Slot = ChannelStations::Slot;
@@ -54,7 +55,12 @@ public:
     /// (CounterRandom::frameKey), sent at `now`, computing on `pool`: the same whatever its thread count.
     void computeLinks(Slot sender, std::uint64_t frameKey, kernel::SimTime now, std::vector<Link>& links,
                       kernel::ParallelFor& pool);
-    std::uint64_t linksComputed() const { return linksComputed_; }
+    /// Links per tier over the run: drawn in full, interference only, skipped below the floor.
+    struct Tiers {
+        std::uint64_t full = 0, interference = 0, skipped = 0;
+    };
+    const Tiers& tiers() const { return tiers_; }
+    std::uint64_t linksComputed() const { return tiers_.full + tiers_.interference; }
 
 private:
     /// A sender's receivers within the cutoff and their distance and mean power, for one step.
@@ -62,16 +68,28 @@ private:
         std::optional<kernel::SimTime> at;  // the snapshot they were computed for
         std::vector<Slot> receivers;
         std::vector<double> distance, meanDbm;
-        std::vector<std::uint64_t> key;  // the receivers' CounterRandom keys, contiguous
-        std::vector<std::uint32_t> bin;  // distance / kDistanceBin
-        bool obstaclesPending = false;   // meanDbm lacks the buildings' loss until the sender sends
+        std::vector<std::uint64_t> key;      // the receivers' CounterRandom keys, contiguous
+        std::vector<std::uint32_t> bin;      // distance / kDistanceBin
+        std::vector<double> dbm, mw;         // per link, the power of an interference-only link
+        std::vector<std::uint32_t> full;     // the links drawn per frame (every one without tiers)
+        std::vector<std::uint64_t> fullKey;  // their receivers' keys, contiguous
+        std::uint64_t skipped = 0;           // within the cutoff but below the floor (obstacles)
+        /// The full links' shadowing pairs, looked up at the step's first frame (a generation of
+        /// CorrelatedShadowing: a sweep that freed pairs makes them stale).
+        std::vector<CorrelatedShadowing::Index> pair;
+        std::optional<kernel::SimTime> pairsAt;
+        std::uint64_t pairsGeneration = 0;
+        bool obstaclesPending = false;   // receivers found, the buildings' loss not yet walked
+        std::vector<double> obstacleDb;  // per receiver found, the buildings' loss
     };
     void prepareStep(Slot first, kernel::ParallelFor& pool);
     /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
     /// computed on distinct threads.
     void computeNeighbourhood(Slot s);
-    /// Subtracts the buildings' loss from near_[s]'s mean powers, its links spread over `pool`.
+    /// Walks near_[s]'s links through the buildings (its links spread over `pool`), then classify().
     void applyObstacles(Slot s, kernel::ParallelFor& pool);
+    /// near_[s]'s distances, mean powers and tiers from its receivers (and their buildings' loss).
+    void classify(Slot s);
 
     const ChannelSettings& settings_;
     std::shared_ptr<const Obstacles> obstacles_;
@@ -81,8 +99,9 @@ private:
     std::unique_ptr<PathLoss> pathLoss_;
     NakagamiFading fading_;
     std::unique_ptr<CorrelatedShadowing> shadowing_;  // null: drawn per frame
-    std::vector<CorrelatedShadowing::Index> pairs_;   // the current frame's, per link
     double cutoff_ = 0;
+    double floorMarginDb_ = 0;  // the cutoff's margin for shadowing and fading
+    double meanGainDb_ = 0;     // shadowing's linear mean, in dB: σ² ln10 / 20
 
     std::vector<Neighbourhood> near_;
     std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for
@@ -90,13 +109,11 @@ private:
     std::vector<std::uint64_t> sentInStep_;     // per slot, the step_ of its last frame
     std::vector<Slot> sentThisStep_, batch_;
     traffic::NeighbourGrid grid_;
-    std::uint64_t linksComputed_ = 0;
-    // The buildings' loss per pair of slots (lesser first) within the step obstacleStep_: the
-    // same both ways, so a pair whose two stations send in one step is walked once.
+    Tiers tiers_;
+    // The buildings' loss per pair of slots within the step obstacleStep_ (the same both ways).
     PairLosses obstacleDb_;
     std::uint64_t obstacleStep_ = 0;
     std::vector<std::size_t> obstacleTodo_;
-    std::vector<double> obstacleTodoDb_;
 };
 
 }  // namespace sbsim::radio

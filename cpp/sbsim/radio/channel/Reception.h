@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/MessageTrace.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/FrameErrorTable.h"
@@ -16,6 +17,13 @@ namespace sbsim::radio {
 /// it locked onto (the first it detects while not sending), whether it sends (half-duplex); at a
 /// frame's end, whether it decoded it: probability 1 − FER(SINR), the interference being the
 /// largest sum of the other frames overlapping it.
+///
+/// Per station the power it hears is one exact fixed-point sum (units of 2^-64 mW in 128 bits):
+/// a frame adds its link's power when it starts and subtracts the same integer when it ends, so
+/// the sum neither drifts nor depends on the order frames came and went, and no station keeps a
+/// list of the frames it hears (on a saturated channel such lists were tens of frames long, and
+/// walking them per link was a quarter of the run). Only the frame a station decodes needs its
+/// interference, so only that one is updated when another frame starts.
 class Reception {
 public:
     using Slot = std::int32_t;
@@ -37,45 +45,43 @@ public:
     bool sensesBusy(Slot s) const { return sensedBusy_[s] != 0; }
     bool sending(Slot s) const { return sending_[s] != 0; }
 
-    /// Station `s` starts sending frame `id`: whatever it was receiving is lost (half-duplex).
-    void startSending(Slot s, FrameId id);
+    /// Station `s` starts sending frame `id` at `now`: whatever it was receiving is lost
+    /// (half-duplex; frameEnds() tells the frames that overlapped the sending).
+    void startSending(Slot s, FrameId id, kernel::SimTime now);
     void stopSending(Slot s) { sending_[s] = 0; }
     /// Frame `id` reaches the receivers of `links` (which stay where they are until it ends): each
-    /// link above the floor adds to its receiver's power and interference, and may lock it.
+    /// link above the floor adds to its receiver's power and to the interference of the frame it
+    /// decodes, and may lock it (only a locked link's maxInterferenceMw is kept: no other is decoded).
     void frameStarts(FrameId id, std::vector<Link>& links);
-    /// The power station `r` hears once the frame of `links` has left it (summed afresh, so no
-    /// rounding drift accumulates); it takes effect with setSensedPower().
-    double powerWithout(Slot r, const std::vector<Link>& links);
     /// Whether `mw` would change station `r`'s carrier sense.
     bool changesSense(Slot r, double mw) const { return (mw >= sensingMw_) != sensesBusy(r); }
     void setSensedPower(Slot r, double mw);
-    /// Frame `id` ended at station `r`: it no longer decodes it.
-    void unlock(Slot r, FrameId id) {
-        if (locked_[r] == id) locked_[r] = 0;
-    }
+    /// Frame `id`, which started at `start`, ended at `link`'s receiver: it no longer decodes it, a
+    /// counted link leaves the power the receiver hears and is half-duplex if the receiver began
+    /// sending while it was on the air. Returns the power the receiver hears without it (for a
+    /// counted link; it takes effect with setSensedPower()).
+    double frameEnds(FrameId id, kernel::SimTime start, Link& link);
     /// Whether `link`'s receiver decoded the frame (none) or why it lost it; `sinrDb` is set when
     /// it tried. The draw is keyed by the frame and the receiver.
     std::optional<LossReason> decode(const Link& link, std::uint64_t frameKey, std::uint64_t receiverKey,
                                      double& sinrDb) const;
 
 private:
-    /// A frame a station hears: its links (the frame's) and which is the station's.
-    struct Incoming {
-        std::vector<Link>* links;
-        std::uint32_t link;
-        double mw;
-    };
+    __extension__ typedef unsigned __int128 Units;  // GCC and Clang have it on 64-bit targets
+    static Units unitsOf(double mw);
+    static double mwOf(Units units);
 
     Listener& listener_;
     FrameErrorTable fer_;
     double sensingMw_, noiseMw_, floorMw_;
     double ratioDb_;  // Eb/N0 − SINR: bandwidth over bit rate, in dB
 
-    std::vector<double> sensedMw_;
+    std::vector<Units> heard_;  // the power each station hears, in units of 2^-64 mW
     std::vector<std::uint8_t> sensedBusy_;
-    std::vector<FrameId> sending_;  // 0 = not sending
-    std::vector<FrameId> locked_;   // the frame being decoded, 0 = none
-    std::vector<std::vector<Incoming>> incoming_;
+    std::vector<FrameId> sending_;            // 0 = not sending
+    std::vector<FrameId> locked_;             // the frame being decoded, 0 = none
+    std::vector<Link*> lockedLink_;           // its link (valid while locked_ names it)
+    std::vector<kernel::SimTime> sendStart_;  // when each station last began sending
 };
 
 }  // namespace sbsim::radio

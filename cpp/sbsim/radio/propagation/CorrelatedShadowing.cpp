@@ -43,7 +43,7 @@ CorrelatedShadowing::Index CorrelatedShadowing::pair(std::uint64_t a, std::uint6
         states_[slot.index].key = key;
         ++used_;
     }
-    slot.seen = now;
+    states_[slot.index].seen = now;
     return slot.index;
 }
 
@@ -112,13 +112,14 @@ void CorrelatedShadowing::forget(kernel::SimTime now) {
     lastSweep_ = now;
     std::size_t forgotten = 0;
     for (Slot& slot : table_) {
-        if (slot.index != kEmpty && now - slot.seen > kForgetAfter) {
+        if (slot.index != kEmpty && now - states_[slot.index].seen > kForgetAfter) {
             free_.push_back(slot.index);
             slot.index = kEmpty;
             ++forgotten;
         }
     }
     if (forgotten == 0) return;
+    ++generation_;
     used_ -= forgotten;
     // Linear probing cannot just empty slots (a probe would stop early): the table is laid out
     // afresh, at most half full.

@@ -39,6 +39,12 @@ public:
     /// pair(a, others[k], now) for every k into `out`, the table's slots fetched ahead (a frame's
     /// hundreds of lookups are cache misses each). Serial.
     void pairs(std::uint64_t a, const std::vector<std::uint64_t>& others, kernel::SimTime now, std::vector<Index>& out);
+    /// The pair (an index pair() gave) is seen at `now`: what pair() does to a pair it finds, for a
+    /// caller that kept the index. Safe on distinct pairs at once.
+    void touch(Index pair, kernel::SimTime now) { states_[pair].seen = now; }
+    /// Counts the forget() sweeps that freed pairs: an index kept from an earlier generation may
+    /// name another pair now.
+    std::uint64_t generation() const { return generation_; }
     /// Hints that valueDb(pair, …) comes soon.
     void prefetch(Index pair) const { __builtin_prefetch(&states_[pair], 1); }
     /// The pair's shadowing in dB with station `a` at (ax, ay) and `b` at (bx, by), after moving it
@@ -60,7 +66,6 @@ private:
     /// every link of every frame, where a node-based map cost a quarter of the run.
     struct Slot {
         Key key{};
-        kernel::SimTime seen;  // here, not in State: a lookup then touches one cache line
         Index index = kEmpty;
     };
     /// One record per pair: a frame reads and writes all of it at once, so its fields sit together.
@@ -70,6 +75,7 @@ private:
         std::uint64_t draws = 0;                    // values drawn so far: the next one's counter
         double loX = 0, loY = 0, hiX = 0, hiY = 0;  // where its stations were at its last value
         bool fresh = true;                          // no value yet
+        kernel::SimTime seen;                       // the last frame that carried it
     };
     std::size_t slotOf(const Key& key) const;
     /// Lays the live slots out afresh in a table of `slots` (a power of two).
@@ -82,6 +88,7 @@ private:
     std::vector<State> states_;
     std::vector<Index> free_;
     kernel::SimTime lastSweep_;
+    std::uint64_t generation_ = 0;
 };
 
 }  // namespace sbsim::radio

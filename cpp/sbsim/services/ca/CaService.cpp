@@ -16,8 +16,8 @@ void CaService::initialize() {
     settings.headingDelta = numberParameter("headingDelta", settings.headingDelta);
     settings.positionDelta = numberParameter("positionDelta", settings.positionDelta);
     settings.speedDelta = numberParameter("speedDelta", settings.speedDelta);
-    settings.fixedRate = parameter("fixedRate").value_or("false") == "true";
-    dcc_ = parameter("withDccRestriction").value_or("true") != "false";
+    settings.fixedRate = spec().boolean("fixedRate", false);
+    dcc_ = spec().boolean("withDccRestriction", true);
     rules_.emplace(settings);
 }
 

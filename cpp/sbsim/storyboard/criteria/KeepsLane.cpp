@@ -9,7 +9,7 @@ void KeepsLane::observe(const EvaluationContext& ctx) {
     std::unordered_map<std::string, Where> now;
     for (traffic::VehicleSnapshot::Index i = 0; i < s.size(); ++i) {
         const std::string& id = s.ids()[i];
-        if (!vehicles_.contains(id)) continue;
+        if (!vehicles_.admits(ctx, id)) continue;
         Where here{s.roadId(i), s.laneId(i)};
         if (const auto it = last_.find(id);
             it != last_.end() && it->second.road == here.road && it->second.lane != here.lane) {

@@ -20,7 +20,7 @@ void MaxSpeed::observe(const EvaluationContext& ctx) {
     const traffic::VehicleSnapshot& s = ctx.snapshot();
     for (traffic::VehicleSnapshot::Index i = 0; i < s.size(); ++i) {
         // Strictly faster: the first vehicle at the top speed (in id order) is the one named.
-        if (s.speeds()[i] > fastest_ && vehicles_.contains(s.ids()[i])) {
+        if (s.speeds()[i] > fastest_ && vehicles_.admits(ctx, s.ids()[i])) {
             fastest_ = s.speeds()[i];
             who_ = s.ids()[i];
             when_ = ctx.now();

@@ -16,7 +16,7 @@ void NoRedLightRunning::prepare(const EvaluationContext& ctx) {
     now.reserve(s.size());
     for (traffic::VehicleSnapshot::Index i = 0; i < s.size(); ++i) {
         const std::string& id = s.ids()[i];
-        if (!vehicles_.contains(id)) continue;
+        if (!vehicles_.admits(ctx, id)) continue;
         Where here{s.roadId(i), s.laneId(i)};
         // Only a move onto another road can pass a stop line: a lane change on one road cannot.
         if (const auto it = last_.find(id); it != last_.end() && it->second.road != here.road) {

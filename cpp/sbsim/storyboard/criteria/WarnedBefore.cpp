@@ -12,8 +12,15 @@ constexpr std::size_t kNamed = 10;  // vehicles named in the verdict; the rest a
 }
 
 WarnedBefore::WarnedBefore(std::optional<geometry::Polygon> area, std::string edge, std::optional<int> cause,
-                           kernel::SimTime lead, kernel::SimTime since, std::optional<kernel::SimTime> until)
-    : area_(std::move(area)), edge_(std::move(edge)), cause_(cause), lead_(lead), since_(since), until_(until) {
+                           kernel::SimTime lead, kernel::SimTime since, std::optional<kernel::SimTime> until,
+                           bool equippedOnly)
+    : area_(std::move(area)),
+      edge_(std::move(edge)),
+      cause_(cause),
+      lead_(lead),
+      since_(since),
+      until_(until),
+      equippedOnly_(equippedOnly) {
     if (until && *until < since) throw std::invalid_argument("WarnedBefore needs until >= since");
     if (lead < kernel::SimTime::zero()) throw std::invalid_argument("WarnedBefore needs seconds >= 0");
     if (cause && (*cause < 0 || *cause > 255))
@@ -22,14 +29,17 @@ WarnedBefore::WarnedBefore(std::optional<geometry::Polygon> area, std::string ed
 
 std::shared_ptr<WarnedBefore> WarnedBefore::inArea(geometry::Polygon area, std::optional<int> cause,
                                                    kernel::SimTime lead, kernel::SimTime since,
-                                                   std::optional<kernel::SimTime> until) {
-    return std::shared_ptr<WarnedBefore>(new WarnedBefore(std::move(area), {}, cause, lead, since, until));
+                                                   std::optional<kernel::SimTime> until, bool equippedOnly) {
+    return std::shared_ptr<WarnedBefore>(
+        new WarnedBefore(std::move(area), {}, cause, lead, since, until, equippedOnly));
 }
 
 std::shared_ptr<WarnedBefore> WarnedBefore::onEdge(std::string edge, std::optional<int> cause, kernel::SimTime lead,
-                                                   kernel::SimTime since, std::optional<kernel::SimTime> until) {
+                                                   kernel::SimTime since, std::optional<kernel::SimTime> until,
+                                                   bool equippedOnly) {
     if (edge.empty()) throw std::invalid_argument("WarnedBefore needs an edge id or an area, got ''");
-    return std::shared_ptr<WarnedBefore>(new WarnedBefore(std::nullopt, std::move(edge), cause, lead, since, until));
+    return std::shared_ptr<WarnedBefore>(
+        new WarnedBefore(std::nullopt, std::move(edge), cause, lead, since, until, equippedOnly));
 }
 
 void WarnedBefore::check(CheckContext& ctx) const {
@@ -43,6 +53,7 @@ std::string WarnedBefore::describe() const {
     out += fmt::format(", seconds={}", lead_.str());
     if (since_ > kernel::SimTime::zero()) out += fmt::format(", since={}", since_.str());
     if (until_) out += fmt::format(", until={}", until_->str());
+    if (equippedOnly_) out += ", equipped_only=True";
     return out + ")";
 }
 
@@ -72,6 +83,7 @@ void WarnedBefore::observe(const EvaluationContext& ctx) {
     now.reserve(s.size());
     for (traffic::VehicleSnapshot::Index i = 0; i < s.size(); ++i) {
         const std::string& id = s.ids()[i];
+        if (equippedOnly_ && !ctx.equipped(id)) continue;  // never judged, so never tracked
         const auto known = tracks_.find(id);
         Track track = known == tracks_.end() ? Track{} : known->second;
         if (!track.decided) {

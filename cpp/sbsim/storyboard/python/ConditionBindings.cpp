@@ -14,6 +14,7 @@
 #include "sbsim/storyboard/conditions/DeferringCondition.h"
 #include "sbsim/storyboard/conditions/DenmCondition.h"
 #include "sbsim/storyboard/conditions/DistanceCondition.h"
+#include "sbsim/storyboard/conditions/EquippedCondition.h"
 #include "sbsim/storyboard/conditions/HeadwayCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
 #include "sbsim/storyboard/conditions/LaneCondition.h"
@@ -254,6 +255,7 @@ void bindConditions(py::module_& m) {
              }),
              py::arg("distance") = py::none(), py::arg("max_age") = py::none())
         .def("describe", &CamCondition::describe);
+    py::class_<EquippedCondition, Condition, py::smart_holder>(m, "EquippedCondition").def(py::init<>());
     py::class_<HoldCondition, Condition, py::smart_holder>(m, "HoldCondition")
         .def(py::init([](ConditionPtr condition, const py::object& seconds) {
                  const SimTime duration = toSimTime(seconds, "HoldCondition seconds");

@@ -24,10 +24,20 @@ namespace sbsim::storyboard {
 
 namespace {
 
-VehicleSet vehicleSet(const py::object& ids) {
-    if (ids.is_none()) return {};
+/// `equipped_only` as a bool: any other value is a TypeError naming the criterion.
+bool equippedOnly(const py::object& value, const char* criterion) {
+    if (!py::isinstance<py::bool_>(value)) {
+        throw py::type_error(std::string(criterion) + " equipped_only must be True or False, got " +
+                             py::repr(value).cast<std::string>());
+    }
+    return value.cast<bool>();
+}
+
+VehicleSet vehicleSet(const py::object& ids, const py::object& equipped, const char* criterion) {
+    const bool only = equippedOnly(equipped, criterion);
+    if (ids.is_none()) return VehicleSet({}, only);
     const std::set<std::string> set = toIdSet(ids);
-    return VehicleSet(std::vector<std::string>(set.begin(), set.end()));
+    return VehicleSet(std::vector<std::string>(set.begin(), set.end()), only);
 }
 
 }  // namespace
@@ -42,14 +52,15 @@ void bindCriteria(py::module_& m) {
         "the event log (dicts), run.statistics the aggregates per name, run.activations per story.";
     py::class_<NoCollision, Criterion, py::smart_holder>(m, "NoCollision").def(py::init<>());
     py::class_<MaxSpeed, Criterion, py::smart_holder>(m, "MaxSpeed")
-        .def(py::init([](const py::object& mps, const py::object& vehicles) {
+        .def(py::init([](const py::object& mps, const py::object& vehicles, const py::object& equipped) {
                  try {
-                     return std::make_shared<MaxSpeed>(toNumber(mps, "MaxSpeed speed"), vehicleSet(vehicles));
+                     return std::make_shared<MaxSpeed>(toNumber(mps, "MaxSpeed speed"),
+                                                       vehicleSet(vehicles, equipped, "MaxSpeed"));
                  } catch (const std::invalid_argument& e) {
                      throw py::value_error(e.what());
                  }
              }),
-             py::arg("mps"), py::arg("vehicles") = py::none());
+             py::arg("mps"), py::arg("vehicles") = py::none(), py::arg("equipped_only") = false);
     py::class_<ReachedRegion, Criterion, py::smart_holder>(m, "ReachedRegion")
         .def(py::init([](const std::string& vehicle, const py::iterable& area, const py::object& by) {
                  std::vector<Eigen::Vector2d> vertices;
@@ -63,12 +74,15 @@ void bindCriteria(py::module_& m) {
              }),
              py::arg("vehicle"), py::arg("area"), py::arg("by"));
     py::class_<KeepsLane, Criterion, py::smart_holder>(m, "KeepsLane")
-        .def(py::init([](const py::object& vehicles) { return std::make_shared<KeepsLane>(vehicleSet(vehicles)); }),
-             py::arg("vehicles") = py::none());
+        .def(py::init([](const py::object& vehicles, const py::object& equipped) {
+                 return std::make_shared<KeepsLane>(vehicleSet(vehicles, equipped, "KeepsLane"));
+             }),
+             py::arg("vehicles") = py::none(), py::arg("equipped_only") = false);
     py::class_<NoRedLightRunning, Criterion, py::smart_holder>(m, "NoRedLightRunning")
-        .def(py::init(
-                 [](const py::object& vehicles) { return std::make_shared<NoRedLightRunning>(vehicleSet(vehicles)); }),
-             py::arg("vehicles") = py::none());
+        .def(py::init([](const py::object& vehicles, const py::object& equipped) {
+                 return std::make_shared<NoRedLightRunning>(vehicleSet(vehicles, equipped, "NoRedLightRunning"));
+             }),
+             py::arg("vehicles") = py::none(), py::arg("equipped_only") = false);
     py::class_<StoryActivated, Criterion, py::smart_holder>(m, "StoryActivated")
         .def(py::init([](const std::string& story, std::int64_t atLeast) {
                  try {
@@ -80,7 +94,8 @@ void bindCriteria(py::module_& m) {
              py::arg("story"), py::arg("at_least") = 1);
     py::class_<WarnedBefore, Criterion, py::smart_holder>(m, "WarnedBefore")
         .def(py::init([](const py::object& place, const py::object& cause, const py::object& seconds,
-                         const py::object& since, const py::object& until) {
+                         const py::object& since, const py::object& until, const py::object& equipped) {
+                 const bool only = equippedOnly(equipped, "WarnedBefore");
                  std::optional<int> code;
                  if (!cause.is_none()) {
                      if (!py::isinstance<py::int_>(cause) || py::isinstance<py::bool_>(cause))
@@ -94,7 +109,7 @@ void bindCriteria(py::module_& m) {
                  if (!until.is_none()) to = toSimTime(until, "WarnedBefore until");
                  try {
                      if (py::isinstance<py::str>(place))
-                         return WarnedBefore::onEdge(place.cast<std::string>(), code, lead, from, to);
+                         return WarnedBefore::onEdge(place.cast<std::string>(), code, lead, from, to, only);
                      if (!py::isinstance<py::iterable>(place))
                          throw py::type_error("WarnedBefore needs an edge id or an area (points), got " +
                                               py::repr(place).cast<std::string>());
@@ -104,13 +119,13 @@ void bindCriteria(py::module_& m) {
                          throw py::value_error("WarnedBefore needs an area of 3 or more points, got " +
                                                std::to_string(vertices.size()));
                      }
-                     return WarnedBefore::inArea(geometry::Polygon(std::move(vertices)), code, lead, from, to);
+                     return WarnedBefore::inArea(geometry::Polygon(std::move(vertices)), code, lead, from, to, only);
                  } catch (const std::invalid_argument& e) {
                      throw py::value_error(e.what());
                  }
              }),
              py::arg("area_or_edge"), py::arg("cause") = py::none(), py::arg("seconds") = 0, py::arg("since") = 0,
-             py::arg("until") = py::none());
+             py::arg("until") = py::none(), py::arg("equipped_only") = false);
 }
 
 }  // namespace sbsim::storyboard

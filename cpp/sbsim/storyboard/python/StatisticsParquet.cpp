@@ -19,7 +19,8 @@ import json, sys
 import pyarrow as pa, pyarrow.parquet as pq
 c = json.load(sys.stdin)
 t = pa.table({k: pa.array(c[k], type=pa.string()) for k in ("vehicle", "source", "name")}
-             | {k: pa.array(c[k], type=pa.float64()) for k in ("time", "value")})
+             | {k: pa.array(c[k], type=pa.float64()) for k in ("time", "value")}
+             | {"equipped": pa.array(c["equipped"], type=pa.bool_())})
 sink = pa.BufferOutputStream()
 pq.write_table(t, sink)
 sys.stdout.buffer.write(sink.getvalue().to_pybytes())
@@ -48,12 +49,14 @@ std::string runChild(const char* code, const std::string& input) {
 
 StatisticsParquet::StatisticsParquet() { (void)runChild(kCheck, ""); }
 
-std::string StatisticsParquet::bytes(const kernel::Statistics& s) const {
-    const nlohmann::json columns = {{"vehicle", s.vehicles()},
-                                    {"source", s.sources()},
-                                    {"name", s.names()},
-                                    {"time", s.times()},
-                                    {"value", s.values()}};
+std::string StatisticsParquet::bytes(const kernel::Statistics& s, const Equipped& equipped) const {
+    nlohmann::json marks = nlohmann::json::array();
+    for (const std::string& vehicle : s.vehicles()) {
+        const std::optional<bool> mark = vehicle.empty() ? std::nullopt : equipped(vehicle);
+        marks.push_back(mark ? nlohmann::json(*mark) : nlohmann::json(nullptr));
+    }
+    const nlohmann::json columns = {{"vehicle", s.vehicles()}, {"source", s.sources()}, {"name", s.names()},
+                                    {"time", s.times()},       {"value", s.values()},   {"equipped", std::move(marks)}};
     return runChild(kWrite, columns.dump());
 }
 

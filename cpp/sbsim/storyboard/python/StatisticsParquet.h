@@ -1,7 +1,10 @@
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Statistics.h"
@@ -21,9 +24,14 @@ public:
     /// Checks that pyarrow.parquet can be imported, so that a missing pyarrow fails before the run starts.
     StatisticsParquet();
 
+    /// Whether a row's vehicle carries V2X equipment; none for a row of no vehicle (a roadside
+    /// unit, a story's own value).
+    using Equipped = std::function<std::optional<bool>(std::string_view vehicle)>;
+
     /// One Parquet file's bytes: columns vehicle, source, name (strings), time (s), value (floats),
-    /// a row per recorded value in the order recorded.
-    std::string bytes(const kernel::Statistics& statistics) const;
+    /// equipped (booleans, null where `equipped` says none), a row per recorded value in the order
+    /// recorded.
+    std::string bytes(const kernel::Statistics& statistics, const Equipped& equipped) const;
 };
 
 }  // namespace sbsim::storyboard

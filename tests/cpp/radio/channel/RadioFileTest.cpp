@@ -95,5 +95,31 @@ TEST_F(RadioFileTest, RefusalsNameFileLineKeyAndProblem) {
     EXPECT_EQ(refusal("", model).first, "--param radio_path_loss: must be " + PathLossModels::names());
 }
 
+// Issue 29: keys took inf, NaN and absurd sizes, truncated fractions (queue_limit = nan was an
+// undefined cast), and an integer a double cannot hold exactly ended in "bad optional access".
+TEST_F(RadioFileTest, EveryNumberHasAKindAndARange) {
+    EXPECT_EQ(refusal("[mac]\nqueue_limit = nan\n").first,
+              "FILE:2: [mac] queue_limit: must be a whole number from 1 to 1e+06, got nan");
+    EXPECT_EQ(refusal("[mac]\ncontention_window = 15.5\n").first,
+              "FILE:2: [mac] contention_window: must be a whole number from 0 to 1023, got 15.5");
+    EXPECT_EQ(refusal("[latency]\ndelay_s = inf\n").first,
+              "FILE:2: [latency] delay_s: must be a number from 0 to 1000, got inf");
+    EXPECT_EQ(refusal("[phy]\npower_dbm = 9007199254740993\n").first,
+              "FILE:2: [phy] power_dbm: must be a number from -300 to 100, got 9.0072e+15");
+    EXPECT_EQ(refusal("[obstacles]\nwall_db = -inf\n").first,
+              "FILE:2: [obstacles] wall_db: must be a number from 0 to 1000, got -inf");
+    EXPECT_EQ(refusal("[propagation]\npath_loss = \"log-distance\"\nexponent = nan\n").first,
+              "FILE:3: [propagation] exponent: must be a number from -1e+09 to 1e+09, got nan");
+    EXPECT_EQ(refusal("[fer]\ntable = [[0, 1], [10, 2]]\n").first,
+              "FILE: [fer] table: each row is [Eb/N0 dB, FER], FER from 0 to 1");
+    EXPECT_EQ(refusal("[phy]\npower_dbm = 20\n[mac]\naifsn = 3\nqueue_limit = 1000000\n").first, "accepted");
+
+    kernel::StudyParameters fraction;
+    fraction.add("radio_queue_limit=2.5");
+    EXPECT_EQ(refusal("", fraction),
+              std::make_pair(std::string("--param radio_queue_limit: must be a whole number from 1 to 1e+06, got 2.5"),
+                             true));
+}
+
 }  // namespace
 }  // namespace sbsim::radio

@@ -3,6 +3,7 @@
 #include <utility>
 #include <vector>
 
+#include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/Decibels.h"
 #include "sbsim/radio/channel/Reception.h"
 
@@ -14,6 +15,8 @@ struct SenseLog : Reception::Listener {
     std::vector<std::pair<Reception::Slot, bool>> changes;
     void channelSensed(Reception::Slot s, bool busy) override { changes.emplace_back(s, busy); }
 };
+
+using kernel::SimTime;
 
 Link linkTo(Reception::Slot receiver, double dbm) {
     Link link;
@@ -36,34 +39,33 @@ protected:
 TEST_F(ReceptionTest, TheFirstFrameDetectedIsLockedAndTheSecondInterferes) {
     std::vector<Link> first{linkTo(1, -60)};
     std::vector<Link> second{linkTo(1, -70)};
-    reception.startSending(0, 1);
+    reception.startSending(0, 1, SimTime::zero());
     reception.frameStarts(1, first);
     EXPECT_TRUE(first[0].counted && first[0].locked);
     EXPECT_TRUE(reception.sensesBusy(1));
     ASSERT_EQ(log.changes.size(), 1U);
     EXPECT_EQ(log.changes[0], std::make_pair(Reception::Slot{1}, true));
 
-    reception.startSending(2, 2);
+    reception.startSending(2, 2, SimTime::zero());
     reception.frameStarts(2, second);
     EXPECT_FALSE(second[0].locked);
-    EXPECT_NEAR(second[0].maxInterferenceMw, dbToLinear(-60), 1e-15);
-    EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-70), 1e-15);
-    EXPECT_EQ(log.changes.size(), 1U);  // busy already
+    EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-70), 1e-15);  // only the decoded frame's is kept
+    EXPECT_EQ(log.changes.size(), 1U);                                // busy already
 
     double sinrDb = 0;
     EXPECT_EQ(reception.decode(second[0], 7, 8, sinrDb), LossReason::Collision);
     // 10 dB over the interferer: Eb/N0 ≈ 12 dB at 6 Mbit/s, a FER of about 0.2; the draw decides,
     // and the SINR is the one the link had.
     (void)reception.decode(first[0], 7, 8, sinrDb);
-    EXPECT_NEAR(sinrDb, linearToDb(dbToLinear(-60) / (dbToLinear(-95) + dbToLinear(-70))), 1e-12);
+    // (Within 1e-9 dB: the heard power is summed in units of 2^-64 mW.)
+    EXPECT_NEAR(sinrDb, linearToDb(dbToLinear(-60) / (dbToLinear(-95) + dbToLinear(-70))), 1e-9);
 
-    const double left = reception.powerWithout(1, first);
+    const double left = reception.frameEnds(1, SimTime::zero(), first[0]);
     EXPECT_NEAR(left, dbToLinear(-70), 1e-15);
     reception.setSensedPower(1, left);
-    reception.unlock(1, 1);
     EXPECT_TRUE(reception.sensesBusy(1));
-    const double none = reception.powerWithout(1, second);
-    EXPECT_EQ(none, 0.0);
+    const double none = reception.frameEnds(2, SimTime::zero(), second[0]);
+    EXPECT_EQ(none, 0.0);  // the fixed-point sum returns to exactly nothing
     EXPECT_TRUE(reception.changesSense(1, none));
     reception.setSensedPower(1, none);
     EXPECT_FALSE(reception.sensesBusy(1));
@@ -77,14 +79,39 @@ TEST_F(ReceptionTest, ASenderLosesWhatItHearsAndFramesBelowTheFloorAreNotCounted
     EXPECT_FALSE(frame[1].counted);  // below −105 dBm: no part of the sensed power
     EXPECT_FALSE(reception.sensesBusy(2));
 
-    reception.startSending(1, 2);  // station 1 sends while receiving: half-duplex
+    reception.startSending(1, 2, SimTime::fromMilliseconds(1));  // station 1 sends while receiving
+    reception.frameEnds(1, SimTime::zero(), frame[0]);
+    reception.frameEnds(1, SimTime::zero(), frame[1]);
     EXPECT_TRUE(frame[0].halfDuplex);
+    EXPECT_FALSE(frame[1].halfDuplex);  // not counted: lost below the sensing threshold
     EXPECT_TRUE(reception.sending(1));
     double sinrDb = 0;
     EXPECT_EQ(reception.decode(frame[0], 1, 2, sinrDb), LossReason::HalfDuplex);
     EXPECT_EQ(reception.decode(frame[1], 1, 3, sinrDb), LossReason::Sensing);
     reception.stopSending(1);
     EXPECT_FALSE(reception.sending(1));
+}
+
+TEST_F(ReceptionTest, ASendingThatEndedBeforeTheFrameStartedCostsNothing) {
+    reception.startSending(1, 5, SimTime::zero());
+    reception.stopSending(1);
+    std::vector<Link> frame{linkTo(1, -50)};
+    reception.frameStarts(1, frame);
+    reception.frameEnds(1, SimTime::fromMilliseconds(2), frame[0]);
+    EXPECT_FALSE(frame[0].halfDuplex);
+    EXPECT_TRUE(frame[0].locked);
+}
+
+TEST_F(ReceptionTest, TheHeardPowerIsExactWhateverTheOrderFramesLeave) {
+    // Powers thirteen orders of magnitude apart: a floating sum that adds and subtracts drifts,
+    // the fixed-point one returns to exactly zero.
+    std::vector<Link> frames[4] = {{linkTo(1, -30)}, {linkTo(1, -104)}, {linkTo(1, -61.7)}, {linkTo(1, -99.3)}};
+    for (std::uint64_t k = 0; k < 4; ++k) reception.frameStarts(k + 1, frames[k]);
+    EXPECT_NEAR(reception.frameEnds(1, SimTime::zero(), frames[0][0]),
+                dbToLinear(-104) + dbToLinear(-61.7) + dbToLinear(-99.3), 1e-18);
+    reception.frameEnds(3, SimTime::zero(), frames[2][0]);
+    EXPECT_NEAR(reception.frameEnds(2, SimTime::zero(), frames[1][0]), dbToLinear(-99.3), 1e-18);
+    EXPECT_EQ(reception.frameEnds(4, SimTime::zero(), frames[3][0]), 0.0);
 }
 
 TEST_F(ReceptionTest, AStrongLoneFrameIsDecoded) {

@@ -1,0 +1,95 @@
+"""The link budget in tiers against the exact model (issue "fast radio"): Sepulcre et al.'s highway at
+its loaded setting (β = 0.12 veh/m, 25 Hz, bench/radio.py's `dense` configuration), every seed run
+twice, `[performance] link_budget = "exact"` and the default tiers, and the delivery ratio per 25 m
+bin of both printed with their difference (bound: 0.01 per bin), then the interference the model
+neglects: the mean power at a receiver from every station beyond the cutoff range (the only links
+neither tier computes), from the model's own WINNER+ B1 law, against the noise.
+
+    PYTHONPATH=python:tools .venv/bin/python bench/tiers.py [--seconds 4] [--seeds 3]
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from closed_form import NOISE, POWER, RATE, SIGMA, winner_b1  # noqa: E402
+from radio import CONFIGS, DISTANCES, LENGTH, pooled, run  # noqa: E402
+
+FLOOR = -105.0  # dBm, the default interference floor
+FRAME_BYTES = 220  # radio.py's beacon with its headers
+
+
+def cutoff_m() -> float:
+    """Where the mean power plus the cutoff's margin (2 σ, no fading) falls to the floor."""
+    lo, hi = 1.0, 2.0
+    while POWER - winner_b1(hi) + 2 * SIGMA >= FLOOR:
+        lo, hi = hi, hi * 2
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if POWER - winner_b1(mid) + 2 * SIGMA >= FLOOR else (lo, mid)
+    return hi
+
+
+def neglected_dbm(density: float, hz: float) -> float:
+    """The mean interference from stations beyond the cutoff at a receiver in the road's middle:
+    each sends hz frames of FRAME_BYTES a second (its share of time on air), its mean power in mW
+    (shadowing's linear mean), summed over a metre grid of the road both ways."""
+    airtime = 40e-6 + math.ceil((16 + 8 * FRAME_BYTES + 6) / (RATE * 8e-6)) * 8e-6
+    duty = hz * airtime
+    gain = math.exp((SIGMA * math.log(10) / 10) ** 2 / 2)
+    start = cutoff_m()
+    total = 0.0
+    d = start
+    while d < LENGTH / 2:
+        total += 2 * density * duty * gain * 10 ** ((POWER - winner_b1(d)) / 10)
+        d += 1.0
+    return 10 * math.log10(total) if total > 0 else -math.inf
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--seconds", type=float, default=4.0, help="simulated seconds per run (default 4)")
+    parser.add_argument("--seeds", type=int, default=3, help="seeds per mode, pooled (default 3)")
+    parser.add_argument("--threads", type=int, default=1)
+    args = parser.parse_args()
+
+    c = CONFIGS["dense"]
+    curves: dict[str, list[dict]] = {"exact": [], "tiers": []}
+    seconds: dict[str, float] = {"exact": 0.0, "tiers": 0.0}
+    with tempfile.TemporaryDirectory() as tmp:
+        for seed in range(1, args.seeds + 1):
+            for mode in curves:
+                began = time.perf_counter()
+                extra = ("--param", f"radio_link_budget={mode}")
+                curves[mode].append(run(c, args.seconds, Path(tmp), args.threads, seed, extra))
+                seconds[mode] += time.perf_counter() - began
+    exact, tiers = pooled(curves["exact"]), pooled(curves["tiers"])
+    print(
+        f"β = {c.density} veh/m, {c.hz:g} Hz, {args.seconds:g} s x {args.seeds} seeds; mean CBR exact "
+        f"{exact['cbr']:.3f}, tiers {tiers['cbr']:.3f}"
+    )
+    print(f"\n{'metres':>6} {'exact':>7} {'tiers':>7} {'diff':>7} {'links':>9}")
+    worst = 0.0
+    for k, d in enumerate(DISTANCES):
+        a, b = exact["pdr"][k], tiers["pdr"][k]
+        if a is None or b is None:
+            continue
+        worst = max(worst, abs(a - b))
+        print(f"{d:6.0f} {a:7.4f} {b:7.4f} {b - a:+7.4f} {exact['links'][k]:9d}")
+    print(f"\nlargest difference per 25 m bin: {worst:.4f} (bound 0.01): {'within' if worst <= 0.01 else 'OUTSIDE'}")
+    neglected = neglected_dbm(c.density, c.hz)
+    print(
+        f"cutoff {cutoff_m():.0f} m; neglected interference beyond it: {neglected:.1f} dBm, "
+        f"{NOISE - neglected:.1f} dB below the noise ({NOISE:g} dBm; bound: more than 10 dB)"
+    )
+    print(f"wall seconds of all runs: exact {seconds['exact']:.1f}, tiers {seconds['tiers']:.1f}")
+
+
+if __name__ == "__main__":
+    main()
