@@ -216,13 +216,25 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
         }
     }
     const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
+    // With tiers, a link is skipped once its mean power is below skipBelow, whatever else it
+    // crosses: its walk stops two walls past that (each wall only lowers it; two keep a wall's
+    // worth of margin over rounding). classify() skips it exactly as with the whole walk.
+    const double wallDb = obstacles_->perWallDb();
+    const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
+    const bool stop = settings_.linkTiers && wallDb > 0;
     pool.run(
         obstacleTodo_.size(),
         [&](std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 const std::size_t k = obstacleTodo_[i];
                 const Slot r = near.receivers[k];
-                near.obstacleDb[k] = obstacles_->lossDb(from, {stations_.x[r], stations_.y[r]});
+                const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
+                int stopAt = Obstacles::kNoStop;
+                if (stop) {
+                    const double headroom = settings_.powerDbm - pathLoss_->lossDb((to - from).norm()) - skipBelow;
+                    stopAt = static_cast<int>(std::clamp(std::floor(headroom / wallDb) + 2, 1.0, 1e6));
+                }
+                near.obstacleDb[k] = obstacles_->lossDb(from, to, stopAt);
             }
         },
         kObstacleLinksPerChunk);

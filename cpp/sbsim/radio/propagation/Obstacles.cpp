@@ -255,8 +255,8 @@ Obstacles::Crossing Obstacles::crossingEveryBuilding(const Eigen::Vector2d& a, c
     return total;
 }
 
-Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
-    if (reversed(a, b)) return crossing(b, a);
+Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b, int stopAtWalls) const {
+    if (reversed(a, b)) return crossing(b, a, stopAtWalls);
     linksEvaluated_.fetch_add(1, std::memory_order_relaxed);
     Crossing total;
     if (boxes_.empty()) return total;
@@ -289,6 +289,7 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
     const Eigen::Vector4d* boxes = boxes_.data();
     std::uint32_t* stamp = seen.stamp.data();
     const std::uint32_t serial = seen.serial;
+    int wallsFound = 0;
     // Band by band of cells across the line's lesser extent (rows for a line more along x than
     // y, else columns), the stretch of the other axis it covers within the band, widened by the
     // margin: a cell's index along an axis as the grid placed the boxes by.
@@ -327,7 +328,11 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
                 if (!ray.meets(boxes[k])) continue;
                 Crossing one;
                 addCrossing(k, a, b, length, seen.ts, one);
-                if (one.walls > 0 || one.insideMetres != 0) seen.hits.emplace_back(k, one);
+                if (one.walls > 0 || one.insideMetres != 0) {
+                    seen.hits.emplace_back(k, one);
+                    wallsFound += one.walls;
+                    if (wallsFound >= stopAtWalls) return {wallsFound, 0};  // partial: see the header
+                }
             }
         }
     }
@@ -343,8 +348,8 @@ Obstacles::Crossing Obstacles::crossing(const Eigen::Vector2d& a, const Eigen::V
     return total;
 }
 
-double Obstacles::lossDb(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const {
-    const Crossing c = crossing(a, b);
+double Obstacles::lossDb(const Eigen::Vector2d& a, const Eigen::Vector2d& b, int stopAtWalls) const {
+    const Crossing c = crossing(a, b, stopAtWalls);
     return c.walls * perWallDb_ + c.insideMetres * perMetreDb_;
 }
 

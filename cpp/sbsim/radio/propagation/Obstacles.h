@@ -40,12 +40,16 @@ public:
     /// Walls crossed and metres inside, over every building, on the straight line from a to b:
     /// the buildings summed in the order they were added, so the result is exactly that of
     /// crossingEveryBuilding(); walked from the lesser end, so the same from either end.
-    Crossing crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+    /// With `stopAtWalls`, the walk may stop once it has found that many walls: then the
+    /// result has at least that many and its depth is partial (for a link whose walls alone put
+    /// it below what counts, the rest of its loss changes nothing); with fewer, it is exact.
+    Crossing crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b, int stopAtWalls = kNoStop) const;
     /// The same by walking every building's walls, no grid, no culling: the reference the grid
     /// must equal (tests and checks).
     Crossing crossingEveryBuilding(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
     /// The loss in dB of the link from a to b.
-    double lossDb(const Eigen::Vector2d& a, const Eigen::Vector2d& b) const;
+    double lossDb(const Eigen::Vector2d& a, const Eigen::Vector2d& b, int stopAtWalls = kNoStop) const;
+    static constexpr int kNoStop = 1 << 30;
 
     /// Links asked for so far (crossing() and lossDb() calls): the run summary prints it.
     std::uint64_t linksEvaluated() const { return linksEvaluated_.load(std::memory_order_relaxed); }

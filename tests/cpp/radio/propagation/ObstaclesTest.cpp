@@ -97,12 +97,27 @@ TEST(Obstacles, TheGridGivesExactlyTheLossOfWalkingEveryBuilding) {
             ASSERT_NO_FATAL_FAILURE(expectSame(o, a, b));
             crossed += o.crossingEveryBuilding(a, b).walls > 0;
         }
+        // Stopped at some walls: exact below them, at least that many walls from them on.
+        for (int k = 0; k < 500; ++k) {
+            const Eigen::Vector2d a(coordinate(rng), coordinate(rng));
+            const Eigen::Vector2d b(coordinate(rng), coordinate(rng));
+            const Obstacles::Crossing every = o.crossingEveryBuilding(a, b);
+            const int stop = 1 + k % 8;
+            const Obstacles::Crossing stopped = o.crossing(a, b, stop);
+            if (every.walls < stop) {
+                ASSERT_EQ(stopped.walls, every.walls);
+                ASSERT_EQ(stopped.insideMetres, every.insideMetres);
+            } else {
+                ASSERT_GE(stopped.walls, stop);
+                ASSERT_LE(stopped.walls, every.walls);
+            }
+        }
         ASSERT_NO_FATAL_FAILURE(expectSame(o, {-100, 25}, {6000, 25}));  // along the shared walls' row
         ASSERT_NO_FATAL_FAILURE(expectSame(o, {50, -10}, {50, 60}));     // along a shared wall
         ASSERT_NO_FATAL_FAILURE(expectSame(o, {0, 0}, {5005, 5005}));    // to the far one
         // The segments do cross buildings (most of them several): the comparison is not vacuous.
         EXPECT_GT(crossed, 4500) << "cell " << cell;
-        EXPECT_EQ(o.linksEvaluated(), 2 * 6003u);
+        EXPECT_EQ(o.linksEvaluated(), 2 * 6003u + 500);
     }
 }
 
