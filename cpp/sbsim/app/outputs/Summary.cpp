@@ -70,6 +70,8 @@ void printSummary(const RunFigures& f) {
         if (f.services->roadsideUnits() > 0) fmt::print("roadside units: {}\n", f.services->roadsideUnits());
         if (f.obstacles != nullptr)
             fmt::print("obstacles: {} (polygon type '{}')\n", f.obstacles->count, f.obstacles->polygonType);
+        if (f.obstacles != nullptr && f.obstacles->model && f.obstacles->count > 0)
+            fmt::print("obstacle links: {} evaluated\n", f.obstacles->model->linksEvaluated());
         if (f.services->signalsWithoutServices() > 0)
             fmt::print("signals without services: {}\n", f.services->signalsWithoutServices());
         for (const auto& [type, counts] : f.medium->counts()) {
@@ -171,6 +173,8 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         if (f.services->roadsideUnits() > 0) out["roadside_units"] = f.services->roadsideUnits();
         if (f.obstacles != nullptr)
             out["obstacles"] = {{"polygon_type", f.obstacles->polygonType}, {"count", f.obstacles->count}};
+        if (f.obstacles != nullptr && f.obstacles->model && f.obstacles->count > 0)
+            out["obstacle_links"] = f.obstacles->model->linksEvaluated();
         out["signals_without_services"] = f.services->signalsWithoutServices();
         for (const auto& [type, counts] : f.medium->counts()) {
             ordered_json bins = ordered_json::array();

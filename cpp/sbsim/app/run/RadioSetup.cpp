@@ -61,7 +61,8 @@ radio::Medium& makeMedium(const CommandLine& cl, kernel::Simulation& sim, const 
                         "polygon types: {})",
                         cl.radio->string(), settings.obstacleType, fmt::join(types, ", ")));
     }
-    if (obstacleFigures != nullptr) *obstacleFigures = ObstacleFigures{settings.obstacleType, obstacles->size()};
+    if (obstacleFigures != nullptr)
+        *obstacleFigures = ObstacleFigures{settings.obstacleType, obstacles->size(), obstacles};
     return sim.emplaceModule<radio::ChannelMedium>(std::move(settings), snapshot, std::move(directory),
                                                    std::move(obstacles));
 }

@@ -7,6 +7,7 @@
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/Medium.h"
+#include "sbsim/radio/propagation/Obstacles.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::app {
@@ -17,6 +18,7 @@ struct CommandLine;
 struct ObstacleFigures {
     std::string polygonType;
     std::size_t count = 0;
+    std::shared_ptr<const radio::Obstacles> model;  // its links evaluated, read at the run's end
 };
 
 /// The run's medium, added to `sim`: the 802.11p channel model when --radio is given (the file

@@ -14,6 +14,8 @@ namespace sbsim::radio {
 namespace {
 /// A neighbourhood is hundreds of links: a few stations make a chunk worth a worker's wake-up.
 constexpr std::size_t kStationsPerChunk = 4;
+/// A building-crossing test is a few hundred ns: a few links make a chunk worth a wake-up.
+constexpr std::size_t kObstacleLinksPerChunk = 8;
 constexpr double kDistanceBin = Medium::kDistanceBin;
 }  // namespace
 
@@ -84,6 +86,7 @@ std::shared_ptr<const StepLinks> LinkBudget::computeLinks(Slot s, std::uint64_t 
     if (batchedAt_ != stations_.refreshedAt) prepareStep(s, pool);
     Neighbourhood& near = near_[s];
     if (near.at != stations_.refreshedAt) computeNeighbourhood(s);
+    if (near.obstaclesPending) applyObstacles(s, pool);
     if (sentInStep_[s] != step_) {
         sentInStep_[s] = step_;
         sentThisStep_.push_back(s);
@@ -195,9 +198,7 @@ void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {
 void LinkBudget::computeNeighbourhood(Slot s) {
     Neighbourhood& near = near_[s];
     near.at = stations_.refreshedAt;
-    // The grid's answer, per thread (neighbourhoods are computed on the pool): per station it
-    // would be a few kB times every station.
-    thread_local std::vector<Slot> candidates;
+    std::vector<Slot>& candidates = near.candidates;
     candidates.clear();
     const auto index = snapshot_.indexOf(stations_.ids[s]);
     // The grid's order (by cell, then vehicle index) is the same whatever the thread count,
@@ -218,6 +219,60 @@ void LinkBudget::computeNeighbourhood(Slot s) {
             if (it != stations_.slotOf.end() && stations_.present[it->second]) candidates.push_back(it->second);
         });
     }
+    // The buildings wait for the sender's frame (applyObstacles): the batch guesses the step's
+    // senders from the last step's, and with CAMs (1 to 10 Hz) half its guesses do not send.
+    near.obstaclesPending = obstacles_ && obstacles_->size() > 0;
+    if (!near.obstaclesPending) classify(s);
+}
+
+void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
+    // Within the step the snapshot's positions are those the neighbourhood was made from. A pair
+    // whose two stations send in one step is walked once: the loss is the same both ways.
+    Neighbourhood& near = near_[s];
+    if (obstacleStep_ != step_) {
+        obstacleStep_ = step_;
+        obstacleDb_.newStep();
+    }
+    near.obstacleDb.resize(near.candidates.size());
+    obstacleTodo_.clear();
+    for (std::size_t k = 0; k < near.candidates.size(); ++k) {
+        if (const double* loss = obstacleDb_.find(s, near.candidates[k])) {
+            near.obstacleDb[k] = *loss;
+        } else {
+            obstacleTodo_.push_back(k);
+        }
+    }
+    const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
+    // With tiers, a link is skipped once its mean power is below skipBelow, whatever else it
+    // crosses: its walk stops two walls past that (each wall only lowers it; two keep a wall's
+    // worth of margin over rounding). classify() skips it exactly as with the whole walk.
+    const double wallDb = obstacles_->perWallDb();
+    const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
+    const bool stop = settings_.linkTiers && wallDb > 0;
+    pool.run(
+        obstacleTodo_.size(),
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const std::size_t k = obstacleTodo_[i];
+                const Slot r = near.candidates[k];
+                const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
+                int stopAt = Obstacles::kNoStop;
+                if (stop) {
+                    const double headroom = settings_.powerDbm - pathLoss_->lossDb((to - from).norm()) - skipBelow;
+                    stopAt = static_cast<int>(std::clamp(std::floor(headroom / wallDb) + 2, 1.0, 1e6));
+                }
+                near.obstacleDb[k] = obstacles_->lossDb(from, to, stopAt);
+            }
+        },
+        kObstacleLinksPerChunk);
+    for (const std::size_t k : obstacleTodo_) obstacleDb_.add(s, near.candidates[k], near.obstacleDb[k]);
+    classify(s);
+    near.obstaclesPending = false;
+}
+
+void LinkBudget::classify(Slot s) {
+    Neighbourhood& near = near_[s];
+    const std::vector<Slot>& candidates = near.candidates;
     // A frame still on the air keeps the last step's links: a fresh set then, else this one anew.
     if (!near.links || near.links.use_count() > 1) near.links = std::make_shared<StepLinks>();
     StepLinks& step = *near.links;
@@ -234,11 +289,12 @@ void LinkBudget::computeNeighbourhood(Slot s) {
     // be detected).
     const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
     const double fullFrom = std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
-    for (const Slot r : candidates) {
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+        const Slot r = candidates[c];
         const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
         const double distance = (to - from).norm();
         double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
-        if (obstacles) mean -= obstacles_->lossDb(from, to);
+        if (obstacles) mean -= near.obstacleDb[c];
         if (tiers && mean < skipBelow) {
             ++near.skipped;
             continue;

@@ -11,6 +11,7 @@
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/ChannelStations.h"
 #include "sbsim/radio/channel/Link.h"
+#include "sbsim/radio/channel/PairLosses.h"
 #include "sbsim/radio/channel/StepLinks.h"
 #include "sbsim/radio/propagation/CorrelatedShadowing.h"
 #include "sbsim/radio/propagation/NakagamiFading.h"
@@ -67,7 +68,9 @@ private:
     /// A sender's receivers within the cutoff and their links for one step.
     struct Neighbourhood {
         std::optional<kernel::SimTime> at;   // the snapshot they were computed for
-        std::vector<Slot> candidates;        // scratch: the grid's answer
+        std::vector<Slot> candidates;        // the grid's answer, until classify()
+        bool obstaclesPending = false;       // candidates found, the buildings' loss not yet walked
+        std::vector<double> obstacleDb;      // per candidate, the buildings' loss
         std::shared_ptr<StepLinks> links;    // shared with the frames on the air
         std::vector<std::uint32_t> full;     // the links drawn per frame (every one without tiers)
         std::vector<std::uint64_t> fullKey;  // their receivers' keys, contiguous
@@ -89,6 +92,10 @@ private:
     /// Fills near_[s] for the current step; touches nothing else, so distinct stations may be
     /// computed on distinct threads.
     void computeNeighbourhood(Slot s);
+    /// Walks near_[s]'s links through the buildings (its links spread over `pool`), then classify().
+    void applyObstacles(Slot s, kernel::ParallelFor& pool);
+    /// near_[s]'s links and their tiers from its candidates (and their buildings' loss).
+    void classify(Slot s);
 
     const ChannelSettings& settings_;
     std::shared_ptr<const Obstacles> obstacles_;
@@ -110,6 +117,10 @@ private:
     std::vector<Slot> sentThisStep_, batch_;
     traffic::NeighbourGrid grid_;
     Tiers tiers_;
+    // The buildings' loss per pair of slots within the step obstacleStep_ (the same both ways).
+    PairLosses obstacleDb_;
+    std::uint64_t obstacleStep_ = 0;
+    std::vector<std::size_t> obstacleTodo_;
 };
 
 }  // namespace sbsim::radio
