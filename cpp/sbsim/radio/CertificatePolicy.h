@@ -3,11 +3,12 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <unordered_map>
+#include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/FrameSize.h"
+#include "sbsim/radio/StationIds.h"
 
 namespace sbsim::radio {
 
@@ -21,38 +22,67 @@ namespace sbsim::radio {
 /// Memory: a station remembers the stations it heard for kForgetAfter (20 s, GeoNetworking's
 /// location table entry lifetime itsGnLifetimeLocTE); one heard again after that counts as new.
 /// Stations silent that long are dropped entirely (their state then equals a fresh one's).
+///
+/// Stations are known by index (index(): interned once for the run), so a reception, which the
+/// medium reports with the indices it already has, costs no string hashing.
 class SBSIM_API CertificatePolicy {
 public:
     static constexpr kernel::SimTime kCertificateInterval = kernel::SimTime::fromMilliseconds(950);
     static constexpr kernel::SimTime kForgetAfter = kernel::SimTime::fromMilliseconds(20'000);
+    using Index = StationIds::Index;
 
     /// `secured` false: every message goes unsecured (the radio file's `security = "none"`).
     explicit CertificatePolicy(bool secured = true) : secured_(secured) {}
     void setSecured(bool secured) { secured_ = secured; }
     bool secured() const { return secured_; }
 
+    /// The index of `station` here, for the run.
+    Index index(std::string_view station) { return ids_.intern(station); }
+
     /// How `station`'s message of `profile`, signed `now`, names its signer; records a certificate.
     SignerIdentifier sign(std::string_view station, SecurityProfile profile, kernel::SimTime now);
     /// `station` received a message of `sender` at `now`.
-    void heard(std::string_view station, std::string_view sender, SecurityProfile profile, kernel::SimTime now);
+    void heard(Index station, Index sender, SecurityProfile profile, kernel::SimTime now);
+    void heard(std::string_view station, std::string_view sender, SecurityProfile profile, kernel::SimTime now) {
+        if (secured_) heard(index(station), index(sender), profile, now);
+    }
 
     /// Stations with state, for tests of the memory bound.
-    std::size_t stations() const { return stations_.size(); }
+    std::size_t stations() const { return active_; }
 
 private:
+    /// Sender index -> when it was last heard: open addressing, linear probing, at most half full.
+    class KnownSenders {
+    public:
+        /// The last time `sender` was heard (inserted as `now` if it was not known).
+        std::pair<kernel::SimTime*, bool> tryEmplace(Index sender, kernel::SimTime now);
+        /// Keeps only the senders heard at or after `since`.
+        void keepSince(kernel::SimTime since);
+
+    private:
+        struct Slot {
+            std::uint32_t key = 0;  // sender + 1; 0: empty
+            kernel::SimTime heard;
+        };
+        std::size_t home(Index sender) const;
+        void rehash(std::size_t capacity);
+        std::vector<Slot> slots_;
+        std::size_t size_ = 0;
+    };
     struct Station {
+        bool active = false;                             // has state (else as a fresh station)
         std::optional<kernel::SimTime> nextCertificate;  // none: the next CAM carries it
         bool requested = false;                          // a new station was heard
         kernel::SimTime lastActive;
-        std::unordered_map<std::uint64_t, kernel::SimTime> known;  // sender's key -> last heard
+        KnownSenders known;
     };
-    Station& of(std::string_view station, kernel::SimTime now);
+    Station& of(Index station, kernel::SimTime now);
     void forgetOld(kernel::SimTime now);
 
     bool secured_;
-    // By CounterRandom::keyOf(id): asked once per reception, where building a string key cost more
-    // than the reception.
-    std::unordered_map<std::uint64_t, Station> stations_;
+    StationIds ids_;
+    std::vector<Station> stations_;  // by index
+    std::size_t active_ = 0;
     kernel::SimTime lastSweep_;
 };
 
