@@ -12,27 +12,31 @@ std::size_t LocalDynamicMap::home(StationIndex station) const {
 
 std::size_t LocalDynamicMap::slotOf(StationIndex station) const {
     const std::size_t mask = slots_.size() - 1;
+    const std::uint32_t key = station + 1;
     std::size_t slot = home(station);
-    while (slots_[slot] != 0 && items_[slots_[slot] - 1].second.stationIndex != station) slot = (slot + 1) & mask;
+    while (slots_[slot].key != 0 && slots_[slot].key != key) slot = (slot + 1) & mask;
     return slot;
 }
 
 void LocalDynamicMap::grow() {
-    slots_.assign(std::max<std::size_t>(16, slots_.size() * 2), 0);
-    for (std::size_t k = 0; k < items_.size(); ++k) slots_[slotOf(items_[k].second.stationIndex)] = k + 1;
+    slots_.assign(std::max<std::size_t>(16, slots_.size() * 2), Slot{});
+    for (std::size_t k = 0; k < items_.size(); ++k) {
+        const StationIndex station = items_[k].second.stationIndex;
+        slots_[slotOf(station)] = {station + 1, static_cast<std::uint32_t>(k)};
+    }
 }
 
 void LocalDynamicMap::update(StationIndex station, const CamContent& cam, kernel::SimTime now) {
     if (cam.generationTime + kLifetime < now) return;
     if (2 * (items_.size() + 1) > slots_.size()) grow();
     const std::size_t slot = slotOf(station);
-    if (slots_[slot] == 0) {
+    if (slots_[slot].key == 0) {
+        slots_[slot] = {station + 1, static_cast<std::uint32_t>(items_.size())};
         items_.emplace_back(cam.station, Entry{cam, now, station});
-        slots_[slot] = static_cast<std::uint32_t>(items_.size());
         due_.emplace(items_.back().second.expiry(), station);
         return;
     }
-    Entry& entry = items_[slots_[slot] - 1].second;
+    Entry& entry = items_[slots_[slot].position].second;
     if (entry.cam.generationTime <= cam.generationTime) {
         entry.cam = cam;  // assigned in place: the strings and path history reuse their storage
         entry.receivedAt = now;
@@ -41,25 +45,24 @@ void LocalDynamicMap::update(StationIndex station, const CamContent& cam, kernel
 
 void LocalDynamicMap::erase(std::size_t slot) {
     const std::size_t mask = slots_.size() - 1;
-    const std::size_t position = slots_[slot] - 1;
-    // Backward-shift deletion: a later item of the probe run moves into the hole unless its home
-    // lies cyclically within (hole, its slot].
+    const std::size_t position = slots_[slot].position;
+    // Backward-shift deletion: a later slot of the probe run moves into the hole unless its home
+    // lies cyclically within (hole, its place].
     std::size_t hole = slot;
-    for (std::size_t next = (slot + 1) & mask; slots_[next] != 0; next = (next + 1) & mask) {
-        const std::size_t h = home(items_[slots_[next] - 1].second.stationIndex);
+    for (std::size_t next = (slot + 1) & mask; slots_[next].key != 0; next = (next + 1) & mask) {
+        const std::size_t h = home(slots_[next].key - 1);
         const bool stays = hole <= next ? (hole < h && h <= next) : (hole < h || h <= next);
         if (!stays) {
             slots_[hole] = slots_[next];
             hole = next;
         }
     }
-    slots_[hole] = 0;
+    slots_[hole] = Slot{};
     // The last item fills the erased one's place in items_.
     const std::size_t last = items_.size() - 1;
     if (position != last) {
-        const std::size_t moved = slotOf(items_[last].second.stationIndex);
+        slots_[slotOf(items_[last].second.stationIndex)].position = static_cast<std::uint32_t>(position);
         items_[position] = std::move(items_[last]);
-        slots_[moved] = static_cast<std::uint32_t>(position + 1);
     }
     items_.pop_back();
 }
@@ -70,8 +73,8 @@ void LocalDynamicMap::dropExpired(kernel::SimTime now) {
         due_.pop();
         if (slots_.empty()) continue;
         const std::size_t slot = slotOf(item.second);
-        if (slots_[slot] == 0) continue;
-        const Entry& entry = items_[slots_[slot] - 1].second;
+        if (slots_[slot].key == 0) continue;
+        const Entry& entry = items_[slots_[slot].position].second;
         if (entry.expiry() < now) {
             erase(slot);
         } else {
@@ -84,7 +87,7 @@ void LocalDynamicMap::dropExpired(kernel::SimTime now) {
 const LocalDynamicMap::Entry* LocalDynamicMap::find(StationIndex station) const {
     if (slots_.empty()) return nullptr;
     const std::size_t slot = slotOf(station);
-    return slots_[slot] == 0 ? nullptr : &items_[slots_[slot] - 1].second;
+    return slots_[slot].key == 0 ? nullptr : &items_[slots_[slot].position].second;
 }
 
 const LocalDynamicMap::Entry* LocalDynamicMap::find(std::string_view station) const {

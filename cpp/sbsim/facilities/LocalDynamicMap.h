@@ -64,8 +64,13 @@ private:
     void erase(std::size_t slot);
 
     std::vector<Item> items_;
-    // Open addressing with linear probing over items_: position + 1, 0 empty; at most half full.
-    std::vector<std::uint32_t> slots_;
+    // Open addressing with linear probing over items_, at most half full. The slot holds the
+    // station too, so a probe past other stations reads no item (each a cache miss away).
+    struct Slot {
+        std::uint32_t key = 0;       // station + 1; 0: empty
+        std::uint32_t position = 0;  // in items_
+    };
+    std::vector<Slot> slots_;
     // One item per entry, keyed by an expiry at or before the entry's (a CAM only moves its
     // sender's expiry later): dropExpired() pops what is due and erases the entry, or queues it
     // again at its later expiry. So each entry is visited about once per lifetime, not the whole
