@@ -11,8 +11,12 @@ std::size_t Cam::byteSize() const {
     return bytes;
 }
 
-void Cam::store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const {
-    stations.of(station).ldm.update(content_, now);
+void Cam::store(StationRegistry& stations, radio::StationIds::Index station, kernel::SimTime now) const {
+    if (indexedIn_ != stations.identity()) {
+        index_ = stations.intern(content_.station);
+        indexedIn_ = stations.identity();
+    }
+    stations.of(station).ldm.update(index_, content_, now);
 }
 
 }  // namespace sbsim::facilities

@@ -53,7 +53,10 @@ public:
     /// zones (1): kRoadSideUnitBytes.
     std::size_t byteSize() const override;
     radio::SecurityProfile securityProfile() const override { return radio::SecurityProfile::Cam; }
-    void store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const override;
+    using ItsMessage::store;
+    /// Into the receiver's LDM, under the index of content().station (looked up once per frame:
+    /// the receivers of one frame share the message).
+    void store(StationRegistry& stations, radio::StationIds::Index station, kernel::SimTime now) const override;
     void dispatch(ItsMessageHandler& handler) const override { handler.indicateCam(*this); }
 
     static constexpr std::size_t kHighFrequencyBytes = 45;
@@ -61,6 +64,9 @@ public:
 
 private:
     CamContent content_;
+    // content_.station's index in the registry it was last stored through.
+    mutable std::uint64_t indexedIn_ = 0;  // the registry's identity(); 0: none
+    mutable radio::StationIds::Index index_ = 0;
 };
 
 }  // namespace sbsim::facilities

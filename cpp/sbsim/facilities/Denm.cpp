@@ -16,9 +16,9 @@ std::vector<radio::TraceField> Denm::traceFields() const {
             {"action", content_.action.str()}};
 }
 
-void Denm::store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const {
+void Denm::store(StationRegistry& stations, radio::StationIds::Index station, kernel::SimTime now) const {
     const auto phase = stations.of(station).denms.received(content_, now);
-    if (phase) stations.report({now, *phase, station, content_.action, content_.cause});
+    if (phase) stations.report({now, *phase, stations.name(station), content_.action, content_.cause});
 }
 
 }  // namespace sbsim::facilities

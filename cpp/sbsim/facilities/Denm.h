@@ -64,7 +64,8 @@ public:
     std::vector<radio::TraceField> traceFields() const override;
     /// Stations inside the destination circle take it (GeoNetworking's geo-broadcast).
     bool reaches(const Eigen::Vector2d& position) const override { return content_.destination.contains(position); }
-    void store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const override;
+    using ItsMessage::store;
+    void store(StationRegistry& stations, radio::StationIds::Index station, kernel::SimTime now) const override;
     void dispatch(ItsMessageHandler& handler) const override { handler.indicateDenm(*this); }
     /// Forwarders rebroadcast a copy.
     std::unique_ptr<radio::V2xMessage> clone() const override { return std::make_unique<Denm>(*this); }

@@ -6,6 +6,7 @@
 #include "sbsim/facilities/ItsMessageHandler.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/radio/StationIds.h"
 #include "sbsim/radio/V2xMessage.h"
 
 namespace sbsim::facilities {
@@ -19,8 +20,11 @@ class SBSIM_API ItsMessage : public radio::V2xMessage {
 public:
     /// Whether a station at `position` passes the message up (single-hop broadcast: always).
     virtual bool reaches(const Eigen::Vector2d& /*position*/) const { return true; }
-    /// Stores what station `station` keeps of it (its LDM, its DENM memory) at `now`.
-    virtual void store(StationRegistry& stations, const std::string& station, kernel::SimTime now) const = 0;
+    /// Stores what station `station` (its index in `stations`) keeps of it (its LDM, its DENM
+    /// memory) at `now`. Called on the simulation's thread only.
+    virtual void store(StationRegistry& stations, radio::StationIds::Index station, kernel::SimTime now) const = 0;
+    /// The same for the station called `station`.
+    void store(StationRegistry& stations, std::string_view station, kernel::SimTime now) const;
     /// Calls the handler's method for this message type.
     virtual void dispatch(ItsMessageHandler& handler) const = 0;
 };

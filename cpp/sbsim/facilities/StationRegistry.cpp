@@ -1,29 +1,45 @@
 #include "sbsim/facilities/StationRegistry.h"
 
+#include <atomic>
+
 namespace sbsim::facilities {
 
-StationFacilities& StationRegistry::of(const std::string& station) {
-    auto it = stations_.find(station);
-    if (it == stations_.end()) it = stations_.emplace(station, std::make_unique<StationFacilities>()).first;
-    return *it->second;
+std::uint64_t StationRegistry::nextIdentity() {
+    static std::atomic<std::uint64_t> next{1};
+    return next++;
+}
+
+StationFacilities& StationRegistry::of(Index station) {
+    if (station >= byIndex_.size()) byIndex_.resize(station + 1);
+    auto& slot = byIndex_[station];
+    if (!slot) {
+        slot = std::make_unique<StationFacilities>();
+        ++size_;
+    }
+    return *slot;
 }
 
 const StationFacilities* StationRegistry::find(std::string_view station) const {
-    const auto it = stations_.find(station);
-    return it == stations_.end() ? nullptr : it->second.get();
+    const auto index = ids_.find(station);
+    return index ? find(*index) : nullptr;
 }
 
 void StationRegistry::remove(std::string_view station) {
-    const auto it = stations_.find(station);
-    if (it != stations_.end()) stations_.erase(it);
+    const auto index = ids_.find(station);
+    if (!index || *index >= byIndex_.size() || !byIndex_[*index]) return;
+    byIndex_[*index].reset();
+    --size_;
 }
 
-void StationRegistry::dropExpired(const std::string& station, kernel::SimTime now) {
-    const auto it = stations_.find(station);
-    if (it == stations_.end()) return;
-    for (const DenmMemory::Entry& e : it->second->dropExpired(now)) {
-        report({now, DenmPhase::Expired, station, e.denm.action, e.denm.cause});
+void StationRegistry::dropExpired(Index station, kernel::SimTime now) {
+    if (station >= byIndex_.size() || !byIndex_[station]) return;
+    for (const DenmMemory::Entry& e : byIndex_[station]->dropExpired(now)) {
+        report({now, DenmPhase::Expired, name(station), e.denm.action, e.denm.cause});
     }
+}
+
+void StationRegistry::dropExpired(std::string_view station, kernel::SimTime now) {
+    if (const auto index = ids_.find(station)) dropExpired(*index, now);
 }
 
 void StationRegistry::report(const DenmPhaseEvent& event) const {

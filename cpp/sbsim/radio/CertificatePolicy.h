@@ -3,12 +3,13 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <unordered_map>
+#include <vector>
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/FrameSize.h"
 #include "sbsim/radio/LastHeard.h"
+#include "sbsim/radio/StationIds.h"
 
 namespace sbsim::radio {
 
@@ -21,49 +22,55 @@ namespace sbsim::radio {
 ///
 /// Memory: a station remembers the stations it heard for kForgetAfter (20 s, GeoNetworking's
 /// location table entry lifetime itsGnLifetimeLocTE); one heard again after that counts as new.
-/// What was heard is kept by sender — per sender, when each station last heard it — so the
-/// receptions of one frame touch one small table instead of one table per receiver (on a full
-/// city a cache miss per reception, two thirds of the disc model's run). A station that signed
-/// nothing for that long is dropped (its next CAM carries the certificate either way).
+/// What was heard is kept by sender — per sender, when each station last heard it (LastHeard) — so
+/// the receptions of one frame touch one small table instead of one per receiver (on a full city a
+/// cache miss per reception, two thirds of the disc model's run). A station that signed nothing
+/// for that long is dropped (its next CAM carries the certificate either way).
+///
+/// Stations are known by index (index(): interned once for the run), so a reception, which the
+/// medium reports with the indices it already has, costs no string hashing.
 class SBSIM_API CertificatePolicy {
 public:
     static constexpr kernel::SimTime kCertificateInterval = kernel::SimTime::fromMilliseconds(950);
     static constexpr kernel::SimTime kForgetAfter = kernel::SimTime::fromMilliseconds(20'000);
+    using Index = StationIds::Index;
 
     /// `secured` false: every message goes unsecured (the radio file's `security = "none"`).
     explicit CertificatePolicy(bool secured = true) : secured_(secured) {}
     void setSecured(bool secured) { secured_ = secured; }
     bool secured() const { return secured_; }
 
+    /// The index of `station` here, for the run.
+    Index index(std::string_view station) { return ids_.intern(station); }
+
     /// How `station`'s message of `profile`, signed `now`, names its signer; records a certificate.
     SignerIdentifier sign(std::string_view station, SecurityProfile profile, kernel::SimTime now);
     /// `station` received a message of `sender` at `now`.
-    void heard(std::string_view station, std::string_view sender, SecurityProfile profile, kernel::SimTime now);
-    /// The same, by the stations' keys (CounterRandom::keyOf): a frame's receivers share its sender's.
-    void heard(std::uint64_t station, std::uint64_t sender, SecurityProfile profile, kernel::SimTime now);
+    void heard(Index station, Index sender, SecurityProfile profile, kernel::SimTime now);
+    void heard(std::string_view station, std::string_view sender, SecurityProfile profile, kernel::SimTime now) {
+        if (secured_) heard(index(station), index(sender), profile, now);
+    }
 
     /// Stations with state, for tests of the memory bound.
-    std::size_t stations() const { return stations_.size(); }
+    std::size_t stations() const { return active_; }
     /// Receptions remembered (one per station and sender heard), for tests of the memory bound.
     std::size_t remembered() const;
 
 private:
     struct Station {
+        bool active = false;                             // has state (else as a fresh station)
         std::optional<kernel::SimTime> nextCertificate;  // none: the next CAM carries it
         bool requested = false;                          // a new station was heard
         kernel::SimTime lastActive;
     };
-    Station& of(std::uint64_t station, kernel::SimTime now);
+    Station& of(Index station, kernel::SimTime now);
     void forgetOld(kernel::SimTime now);
 
     bool secured_;
-    // By CounterRandom::keyOf(id): asked once per reception, where building a string key cost more
-    // than the reception.
-    std::unordered_map<std::uint64_t, Station> stations_;
-    std::unordered_map<std::uint64_t, LastHeard> heardBy_;  // by sender: who heard it, when
-    // The last sender asked about (a frame's receptions come one after the other).
-    std::uint64_t lastSender_ = 0;
-    LastHeard* lastHeardBy_ = nullptr;
+    StationIds ids_;
+    std::vector<Station> stations_;   // by index
+    std::vector<LastHeard> heardBy_;  // by sender's index: who heard it, when
+    std::size_t active_ = 0;
     kernel::SimTime lastSweep_;
 };
 

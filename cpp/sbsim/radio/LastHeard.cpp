@@ -35,6 +35,10 @@ void LastHeard::forgetBefore(kernel::SimTime before) {
     }
     if (kept == used_) return;
     used_ = kept;
+    if (used_ == 0) {
+        std::vector<Entry>().swap(table_);  // a station gone for good holds no table
+        return;
+    }
     // Linear probing cannot just empty slots (a probe would stop early): laid out afresh.
     std::size_t slots = 16;
     while (slots < 2 * used_) slots *= 2;

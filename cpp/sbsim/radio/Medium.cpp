@@ -48,14 +48,15 @@ void Medium::handleMessage(kernel::Message& msg) {
     Counts* counts = countsOf(*frame.message);  // one lookup per frame, not per reception
     const V2xMessage& message = *frame.message;
     const bool secured = certificates_.secured();
-    const std::uint64_t sender = secured ? CounterRandom::keyOf(message.sender()) : 0;
+    const SecurityProfile profile = message.securityProfile();
+    // The sender's index once per frame, each receiver's once per station (Receiver::mediumIndex_).
+    const CertificatePolicy::Index sender = secured ? certificates_.index(message.sender()) : 0;
     if (simulation().moduleChanges() == frame.moduleChanges) {
         for (std::size_t k = 0; k < frame.receivers.size(); ++k) {
             if (counts != nullptr) ++counts->delivered;
-            if (secured) {
-                certificates_.heard(CounterRandom::keyOf(frame.stations[k]), sender, message.securityProfile(),
+            if (secured)
+                certificates_.heard(certificateIndex(*frame.receivers[k], frame.stations[k]), sender, profile,
                                     simTime());
-            }
             frame.receivers[k]->receive(message);
         }
         return;
@@ -64,9 +65,14 @@ void Medium::handleMessage(kernel::Message& msg) {
         Receiver* receiver = receivingSide(station);
         if (receiver == nullptr) continue;  // it left
         if (counts != nullptr) ++counts->delivered;
-        if (secured) certificates_.heard(station, message.sender(), message.securityProfile(), simTime());
+        if (secured) certificates_.heard(certificateIndex(*receiver, station), sender, profile, simTime());
         receiver->receive(message);
     }
+}
+
+CertificatePolicy::Index Medium::certificateIndex(Receiver& receiver, const std::string& station) {
+    if (!receiver.mediumIndex_) receiver.mediumIndex_ = certificates_.index(station);
+    return *receiver.mediumIndex_;
 }
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {

@@ -102,6 +102,9 @@ protected:
                       std::vector<std::string> stations, kernel::SimTime delay);
 
 private:
+    /// `receiver`'s index in certificates_ (`station` names it), looked up once per station.
+    CertificatePolicy::Index certificateIndex(Receiver& receiver, const std::string& station);
+
     Directory directory_;
     std::map<std::string, Counts, std::less<>> counts_;
     std::unordered_map<std::string, std::uint64_t> sequences_;  // next per sender

@@ -15,6 +15,7 @@ Middleware::Middleware(ServiceManager& manager, std::string vehicleId)
     : kernel::Module(vehicleId + ".middleware"),
       manager_(manager),
       vehicleId_(std::move(vehicleId)),
+      station_(manager.stations().intern(vehicleId_)),
       vehicle_(manager.registry().of(vehicleId_)),
       router_(vehicleId_, manager.geoNetworking()) {}
 
@@ -34,12 +35,21 @@ ServiceVehicle& Middleware::vehicleOf(const Service& service) {
     throw std::logic_error("the service is not hosted here");
 }
 
+std::optional<traffic::VehicleSnapshot::Index> Middleware::selfIndex() const {
+    const auto& snapshot = manager_.snapshot();
+    // Ids are unique: finding ours at the remembered index is finding our index.
+    if (selfHint_ < snapshot.size() && snapshot.ids()[static_cast<std::size_t>(selfHint_)] == vehicleId_)
+        return selfHint_;
+    const auto index = snapshot.indexOf(vehicleId_);
+    if (index) selfHint_ = *index;
+    return index;
+}
+
 Eigen::Vector2d Middleware::position() const {
     if (fixedPosition_) return *fixedPosition_;
-    const auto& snapshot = manager_.snapshot();
-    const auto index = snapshot.indexOf(vehicleId_);
+    const auto index = selfIndex();
     if (!index) return Eigen::Vector2d::Zero();
-    return snapshot.positions().col(*index);
+    return manager_.snapshot().positions().col(*index);
 }
 
 kernel::SimTime Middleware::clockPhase(std::uint64_t seed, std::string_view station, kernel::SimTime interval) {
@@ -52,14 +62,14 @@ kernel::SimTime Middleware::clockPhase(std::uint64_t seed, std::string_view stat
 }
 
 void Middleware::initialize() {
-    (void)manager_.stations().of(vehicleId_);  // the station's facilities, empty, from its departure on
+    (void)manager_.stations().of(station_);  // the station's facilities, empty, from its departure on
     scheduleAfter(clockPhase(simulation().seed(), vehicleId_, manager_.interval()), triggerTimer_);
 }
 
-facilities::StationFacilities& Middleware::facilities() const { return manager_.stations().of(vehicleId_); }
+facilities::StationFacilities& Middleware::facilities() const { return manager_.stations().of(station_); }
 
 void Middleware::trigger() {
-    manager_.stations().dropExpired(vehicleId_, simTime());
+    manager_.stations().dropExpired(station_, simTime());
     for (Service* s : services_) {
         try {
             s->trigger();
@@ -86,6 +96,8 @@ std::vector<radio::geonet::Neighbour> Middleware::neighbours() const {
     for (const auto& [station, entry] : facilities().ldm.entries()) {
         if (entry.expiry() >= now) out.push_back({station, entry.cam.position});
     }
+    // In ascending id order, whatever the LDM's: greedy forwarding takes the first of equals.
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.station < b.station; });
     return out;
 }
 
@@ -125,7 +137,7 @@ void Middleware::receive(const radio::V2xMessage& message) {
     const facilities::ItsMessage* its = itsPart(message);
     if (its != nullptr) {
         if (!its->reaches(position())) return;
-        its->store(manager_.stations(), vehicleId_, simTime());
+        its->store(manager_.stations(), station_, simTime());
     }
     for (Service* s : services_) {
         try {

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "sbsim/facilities/StationFacilities.h"
+#include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/radio/Receiver.h"
@@ -50,6 +51,12 @@ public:
     /// Where the station is: a roadside unit's fixed position, else its vehicle's in the current
     /// snapshot (the origin if it is not in it).
     Eigen::Vector2d position() const;
+    /// The vehicle's index in the current snapshot, if it is in it (none for a roadside unit).
+    /// Remembered from the last call and checked by one id comparison: a vehicle keeps its index
+    /// while no other departs or arrives, so the binary search runs about once per step.
+    std::optional<traffic::VehicleSnapshot::Index> selfIndex() const;
+    /// The station's index for the run (facilities::StationRegistry, radio::StationIds).
+    facilities::StationRegistry::Index stationIndex() const { return station_; }
     /// Makes this a stationary station (a roadside unit) at `position`.
     void setFixedPosition(const Eigen::Vector2d& position) { fixedPosition_ = position; }
     /// This station's facilities (in the manager's station registry).
@@ -86,6 +93,8 @@ private:
 
     ServiceManager& manager_;
     std::string vehicleId_;
+    facilities::StationRegistry::Index station_;
+    mutable traffic::VehicleSnapshot::Index selfHint_ = 0;        // where the vehicle was last found
     std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle_;  // the storyboard's as well
     std::vector<Service*> services_;
     std::vector<std::unique_ptr<ServiceVehicle>> vehicles_;  // per service, as services_

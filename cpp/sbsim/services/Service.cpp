@@ -22,7 +22,7 @@ const std::string& Service::vehicleId() const { return hostOf(middleware_).vehic
 ServiceVehicle& Service::vehicle() { return hostOf(middleware_).vehicleOf(*this); }
 const traffic::VehicleSnapshot& Service::snapshot() const { return hostOf(middleware_).manager().snapshot(); }
 
-std::optional<traffic::VehicleSnapshot::Index> Service::selfIndex() const { return snapshot().indexOf(vehicleId()); }
+std::optional<traffic::VehicleSnapshot::Index> Service::selfIndex() const { return hostOf(middleware_).selfIndex(); }
 
 Eigen::Vector2d Service::position() const { return hostOf(middleware_).position(); }
 const facilities::StationFacilities& Service::facilities() const { return hostOf(middleware_).facilities(); }

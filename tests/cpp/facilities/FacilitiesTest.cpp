@@ -29,6 +29,12 @@ CamContent cam(const std::string& station, double t, double x = 0) {
     return c;
 }
 
+// The station indices of the LDM tests (a registry's in a run).
+radio::StationIds ids;
+
+/// Takes `c` into `ldm` under its station's index.
+void update(LocalDynamicMap& ldm, const CamContent& c, SimTime now) { ldm.update(ids.intern(c.station), c, now); }
+
 DenmContent denm(const std::string& station, std::uint32_t seq, double detection, double reference,
                  std::optional<double> validity = std::nullopt) {
     DenmContent d;
@@ -42,10 +48,10 @@ DenmContent denm(const std::string& station, std::uint32_t seq, double detection
 
 TEST(LocalDynamicMap, KeepsTheNewestCamPerStationForItsLifetime) {
     LocalDynamicMap ldm;
-    ldm.update(cam("a", 1.0, 10), secs(1.001));
-    ldm.update(cam("b", 1.2, 20), secs(1.201));
-    ldm.update(cam("a", 1.5, 15), secs(1.501));
-    ldm.update(cam("a", 1.4, 99), secs(1.6));  // older than the one kept: ignored
+    update(ldm, cam("a", 1.0, 10), secs(1.001));
+    update(ldm, cam("b", 1.2, 20), secs(1.201));
+    update(ldm, cam("a", 1.5, 15), secs(1.501));
+    update(ldm, cam("a", 1.4, 99), secs(1.6));  // older than the one kept: ignored
     ASSERT_EQ(ldm.size(), 2u);
     EXPECT_DOUBLE_EQ(ldm.find("a")->cam.position.x(), 15);
     EXPECT_EQ(ldm.find("a")->age(secs(2.0)), secs(0.5));
@@ -57,7 +63,7 @@ TEST(LocalDynamicMap, KeepsTheNewestCamPerStationForItsLifetime) {
     EXPECT_NE(ldm.find("a"), nullptr);
     EXPECT_EQ(ldm.count(secs(2.5), [](const auto&) { return true; }), 1u);
     EXPECT_EQ(ldm.count(secs(2.7), [](const auto&) { return true; }), 0u);  // past its lifetime, not yet dropped
-    ldm.update(cam("c", 0.0), secs(2.0));                                   // already past its lifetime
+    update(ldm, cam("c", 0.0), secs(2.0));                                  // already past its lifetime
     EXPECT_EQ(ldm.find("c"), nullptr);
 }
 
@@ -75,7 +81,7 @@ TEST(LocalDynamicMap, DropsExactlyWhatABruteForceMapDrops) {
         t += gap(rng);
         const std::string id = "s" + std::to_string(station(rng) * (k < 10000 ? 1 : 2));
         const double generated = t - gap(rng);  // a little older than its reception
-        ldm.update(cam(id, generated), secs(t));
+        update(ldm, cam(id, generated), secs(t));
         if (generated + 1.1 >= t && (!last.count(id) || last[id] <= secs(generated))) last[id] = secs(generated);
         if (k % 7 == 0) {
             ldm.dropExpired(secs(t));
@@ -88,7 +94,11 @@ TEST(LocalDynamicMap, DropsExactlyWhatABruteForceMapDrops) {
                 }
             }
             ASSERT_EQ(ldm.size(), last.size()) << "t=" << t;
-            for (const auto& [id, generated] : last) ASSERT_EQ(ldm.find(id)->cam.generationTime, generated);
+            for (const auto& [id, generated] : last) {
+                ASSERT_EQ(ldm.find(id)->cam.generationTime, generated);
+                ASSERT_EQ(ldm.find(ids.intern(id)), ldm.find(id));
+            }
+            for (const auto& [id, entry] : ldm.entries()) ASSERT_EQ(ldm.find(entry.stationIndex), &entry);
         }
     }
     EXPECT_GT(dropped, 100u);  // not vacuous

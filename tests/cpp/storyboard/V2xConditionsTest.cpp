@@ -133,9 +133,9 @@ TEST(CamCondition, KnowsStationsWithinDistanceAndAge) {
         c.generationTime = secs(t);
         return c;
     };
-    stations->of("ego").ldm.update(cam("near", 30, 9.5), secs(9.5));
-    stations->of("ego").ldm.update(cam("far", 200, 9.9), secs(9.9));
-    stations->of("ego").ldm.update(cam("rsu", 10, 9.9), secs(9.9));
+    stations->of("ego").ldm.update(stations->intern("near"), cam("near", 30, 9.5), secs(9.5));
+    stations->of("ego").ldm.update(stations->intern("far"), cam("far", 200, 9.9), secs(9.9));
+    stations->of("ego").ldm.update(stations->intern("rsu"), cam("rsu", 10, 9.9), secs(9.9));
     Scene scene({car("ego", 0, 0), car("near", 35, 0), car("far", 205, 0)}, secs(10), 100, stations.get());
     CamCondition within50(50.0, std::nullopt);
     EXPECT_EQ(scene.test(within50, "ego").others(), others(scene, {"near"}));

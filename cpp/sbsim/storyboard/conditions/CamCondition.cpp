@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace sbsim::storyboard {
 
 CamCondition::CamCondition(std::optional<double> distance, std::optional<kernel::SimTime> maxAge)
@@ -15,7 +17,7 @@ ConditionResult CamCondition::test(const EvaluationContext& ctx, VehicleIndex eg
     const kernel::SimTime now = ctx.now();
     const Eigen::Vector2d here = snapshot.positions().col(ego);
     bool any = false;
-    std::vector<VehicleIndex> known;  // ascending: the LDM is in ascending id order, as the snapshot
+    std::vector<VehicleIndex> known;
     for (const auto& [id, entry] : station->ldm.entries()) {
         if (entry.expiry() < now) continue;
         if (maxAge_ && entry.age(now) > *maxAge_) continue;
@@ -26,6 +28,7 @@ ConditionResult CamCondition::test(const EvaluationContext& ctx, VehicleIndex eg
     }
     if (!any) return false;
     if (known.empty()) return true;
+    std::sort(known.begin(), known.end());  // ascending, as the snapshot (the LDM has no order)
     return ConditionResult::ofOthers(std::move(known));
 }
 
