@@ -194,8 +194,7 @@ nlohmann::ordered_json summaryJson(const RunFigures& f) {
         if (const auto load = f.medium->loadFigures())
             out["channel_busy_ratio"] = {{"mean", load->meanCbr}, {"max", load->maxCbr}, {"samples", load->samples}};
         if (const auto links = f.medium->linkFigures()) {
-            out["links"] = {
-                {"full", links->full}, {"interference", links->interference}, {"skipped", links->skipped}};
+            out["links"] = {{"full", links->full}, {"interference", links->interference}, {"skipped", links->skipped}};
         }
     }
     out["messages"] = std::move(messages);
