@@ -256,3 +256,36 @@ def test_the_command_refuses_a_radio_value_before_making_any_folder(
         r"study: radio_aifsn=99: --param radio_aifsn: must be a whole number from 1 to 15, got 99", line
     )
     assert not (tmp_path / "results").exists()
+
+
+def test_check_reads_the_whole_study_file_and_runs_nothing(
+    trips_cfg: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Issue "results at scale": a study file is checked like a run's inputs — here a story parameter whose
+    # value the story refuses only for one combination of the sweep.
+    write_story(
+        tmp_path,
+        """
+        import storyboard
+
+        def createStories(board):
+            if board.parameter("mode") == "broken":
+                raise ValueError("mode 'broken' has no stories")
+        """,
+    )
+    (tmp_path / "study.toml").write_text(
+        f'sumocfg = "{trips_cfg}"\nstory = "story.py"\nseeds = [1, 2, 3]\nend = 10\n'
+        '[parameters]\nmode = ["fine", "other"]\n',
+        encoding="utf-8",
+    )
+    assert study.main([str(tmp_path / "study.toml"), "--check"]) == 0
+    assert capsys.readouterr().out.strip().endswith("6 runs, every parameter combination checked")
+    assert not (tmp_path / "results").exists()
+    (tmp_path / "study.toml").write_text(
+        f'sumocfg = "{trips_cfg}"\nstory = "story.py"\nseeds = [1]\n[parameters]\nmode = ["fine", "broken"]\n',
+        encoding="utf-8",
+    )
+    assert study.main([str(tmp_path / "study.toml"), "--check"]) == 2
+    [line] = capsys.readouterr().err.splitlines()
+    assert line.startswith("study: run mode-broken") and "mode 'broken' has no stories" in line, line
+    assert not (tmp_path / "results").exists()

@@ -12,7 +12,7 @@ from pathlib import Path
 
 from sbsim.extras import missing_message
 from sbsim.runner import executable
-from sbsim.study.execution import StudyInterrupted, check_radio, run
+from sbsim.study.execution import StudyInterrupted, check_radio, check_study, run
 from sbsim.study.spec import StudyError, StudySpec
 from sbsim.study.tables import plot, plot_column
 
@@ -46,6 +46,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         action="store_true",
         help="exit with 3 when a run's criterion failed (all runs complete; junit.xml says which); default 0",
     )
+    parser.add_argument(
+        "--check",
+        action="store_true",
+        help="check the study file and every parameter combination with sbsim check; run nothing",
+    )
     args = parser.parse_args(argv)
     # Before any run: the sweep (Dask), the tables (pandas, pyarrow), the progress bar and the plots.
     message = missing_message("study", ("dask", "distributed", "pandas", "pyarrow", "tqdm", "matplotlib"))
@@ -63,6 +68,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             raise StudyError(f"--timeout must be > 0 seconds, not {args.timeout}")
         if args.scheduler is not None and not SCHEDULER_ADDRESS.fullmatch(args.scheduler):
             raise StudyError(f"--scheduler '{args.scheduler}' is not an address like tcp://host:8786")
+        if args.check:
+            total = check_study(spec, str(executable().resolve()))
+            print(f"study: {args.study}: {total} runs, every parameter combination checked")
+            return 0
         # Before anything is made: a mistake in the study file leaves no results folder behind.
         check_radio(spec, str(executable().resolve()))
         try:

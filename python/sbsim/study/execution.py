@@ -75,6 +75,34 @@ def check_radio(spec: StudySpec, program: str) -> None:
                 raise StudyError(f"{' '.join(variant[1:]) or str(spec.radio)}: {message}")
 
 
+def check_study(spec: StudySpec, program: str) -> int:
+    """The whole study file as sbsim reads it, running nothing: the radio settings of every sweep value
+    (:func:`check_radio`), then ``sbsim check`` on each distinct combination of the parameters (the first seed):
+    story, services, radio file, plugins and the run's arguments. Returns the number of runs the study has;
+    raises StudyError with sbsim's one line for the first combination it refuses."""
+    check_radio(spec, program)
+    runs = spec.runs()
+    first_seed = {run.parameters: run for run in runs}
+    with tempfile.TemporaryDirectory(prefix="sbsim-study-check-") as scratch:
+        for run in first_seed.values():
+            cmd = spec.command(run, Path(scratch), program)
+            done = subprocess.run(
+                [cmd[0], "check", *cmd[1:]],
+                cwd=scratch,
+                env=_environment(),
+                stdin=subprocess.DEVNULL,
+                capture_output=True,
+                text=True,
+                errors="replace",
+                check=False,
+            )
+            if done.returncode not in (0, 3):
+                lines = [line for line in done.stderr.splitlines() if line.strip() and "warning" not in line]
+                message = lines[-1].removeprefix("sbsim: ") if lines else f"sbsim check exited {done.returncode}"
+                raise StudyError(f"run {run.id}: {message}")
+    return len(runs)
+
+
 def outputs(spec: StudySpec) -> tuple[str, ...]:
     """The files sbsim writes into each run's folder for the study (checked when the study resumes)."""
     kept = (("messages.parquet",) if spec.messages else ()) + (("statistics.parquet",) if spec.statistics else ())
