@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import os
 import subprocess
-import time
 from pathlib import Path
 
 import pandas as pd
@@ -296,7 +295,7 @@ def test_an_interrupted_parquet_trace_is_left_closed_and_readable(grid: Path, tm
     import signal
 
     import pyarrow.parquet as pq
-    from sbsim_helpers import write_story
+    from sbsim_helpers import wait_for_file, write_story
 
     marker = tmp_path / "ready"
     # At its 12th step the story says it is under way, then waits for the signal (KeyboardInterrupt).
@@ -314,7 +313,7 @@ def test_an_interrupted_parquet_trace_is_left_closed_and_readable(grid: Path, tm
                 Waits.steps += 1
                 if Waits.steps == 12:
                     open({str(marker)!r}, "w").close()
-                    while True:
+                    while True:  # until the signal's KeyboardInterrupt (Python checks between sleeps)
                         time.sleep(0.01)
                 return np.zeros(len(snapshot), bool)
 
@@ -327,10 +326,7 @@ def test_an_interrupted_parquet_trace_is_left_closed_and_readable(grid: Path, tm
     args += ["--services", str(grid.parent / "services.xml"), "--messages", str(out)]
     proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
-        deadline = time.monotonic() + 120
-        while not marker.exists() and proc.poll() is None and time.monotonic() < deadline:
-            time.sleep(0.05)  # polling for the marker, not waiting for a guess of the run's speed
-        assert marker.exists(), "the story never got under way"
+        wait_for_file(proc, marker, timeout=120)
         proc.send_signal(signal.SIGINT)
         _, err = proc.communicate(timeout=60)
     finally:
