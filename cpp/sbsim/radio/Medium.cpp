@@ -97,13 +97,7 @@ void Medium::countLink(const V2xMessage& message, double distance, bool received
 
 void Medium::countLink(Counts& c, double distance, bool received) {
     if (!(distance >= 0)) return;
-    const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
-    if (c.linkStations.size() <= bin) {
-        c.linkStations.resize(bin + 1);
-        c.linkReceptions.resize(bin + 1);
-    }
-    ++c.linkStations[bin];
-    if (received) ++c.linkReceptions[bin];
+    c.countLink(static_cast<std::size_t>(distance / kDistanceBin), received);
 }
 
 }  // namespace sbsim::radio

@@ -34,6 +34,15 @@ public:
         /// Per 50 m of sender–receiver distance (bin k: [50k, 50k + 50) m): the stations the
         /// medium considered, and those that received the message.
         std::vector<std::uint64_t> linkStations, linkReceptions;
+        /// One link of distance bin `bin` (distance / kDistanceBin), received or not. Inline: it runs per link.
+        void countLink(std::size_t bin, bool received) {
+            if (linkStations.size() <= bin) {
+                linkStations.resize(bin + 1);
+                linkReceptions.resize(bin + 1);
+            }
+            ++linkStations[bin];
+            if (received) ++linkReceptions[bin];
+        }
     };
     static constexpr double kDistanceBin = 50;
     /// Channel busy ratio over every station's 100 ms samples.

@@ -252,17 +252,11 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             const Slot r = step.receivers[k];
             const bool counted = step.tier[k] == StepLinks::kInterference;
             if (counted) {
-                const double total = reception_.quietEnds(r, step.units[k]);
+                const double total = reception_.leave(r, step.units[k]);
                 if (access_.contending(r) && reception_.changesSense(r, total)) flush();
                 reception_.setSensedPower(r, total);
             }
-            if (counts != nullptr) {
-                if (counts->linkStations.size() <= step.bin[k]) {
-                    counts->linkStations.resize(step.bin[k] + 1);
-                    counts->linkReceptions.resize(step.bin[k] + 1);
-                }
-                ++counts->linkStations[step.bin[k]];
-            }
+            if (counts != nullptr) counts->countLink(step.bin[k], false);
             if (trace() != nullptr && stations_.receiver[r] != nullptr && step.distance[k] <= settings_.traceRange) {
                 const bool half = (counted && reception_.sentSince(r, tx->start)) ||
                                   std::find(tx->halfAtStart.begin(), tx->halfAtStart.end(), k) != tx->halfAtStart.end();
@@ -283,15 +277,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         double sinrDb = 0;
         const std::optional<LossReason> loss = reception_.decode(link, frameKey, stations_.keys[r], sinrDb);
         Receiver* receiver = stations_.receiver[r];
-        if (counts != nullptr) {
-            // Medium::countLink inline, the bin computed once per step: this runs per link.
-            if (counts->linkStations.size() <= link.bin) {
-                counts->linkStations.resize(link.bin + 1);
-                counts->linkReceptions.resize(link.bin + 1);
-            }
-            ++counts->linkStations[link.bin];
-            if (!loss && receiver != nullptr) ++counts->linkReceptions[link.bin];
-        }
+        if (counts != nullptr) counts->countLink(link.bin, !loss && receiver != nullptr);  // the bin computed per step
         if (receiver == nullptr) continue;  // left the simulation during the frame
         if (loss) {
             if (trace() != nullptr && link.distance <= settings_.traceRange) traceLost(*tx, r, link.distance, *loss);

@@ -57,15 +57,11 @@ public:
     std::optional<kernel::SimTime> dccInterval(const std::string& station) const override;
     std::optional<double> channelBusyRatio(const std::string& station) const override;
     std::optional<LoadFigures> loadFigures() const override { return load_.figures(); }
-    std::optional<LinkFigures> linkFigures() const override {
-        const LinkBudget::Tiers& t = budget_.tiers();
-        return LinkFigures{t.full, t.interference, t.skipped};
-    }
+    std::optional<LinkFigures> linkFigures() const override { return budget_.tiers(); }
 
     /// Figures for tests and benchmarks.
     std::uint64_t transmissions() const { return transmissions_; }
     std::uint64_t receptions() const { return receptions_; }
-    std::uint64_t linksComputed() const { return budget_.linksComputed(); }
 
 private:
     struct Transmission;

@@ -314,7 +314,6 @@ void LinkBudget::classify(Slot s) {
             near.fullMeanDbm.push_back(mean);
         }
     }
-    step.drawnCount = near.full.size();
 }
 
 }  // namespace sbsim::radio

@@ -8,6 +8,7 @@
 #include "sbsim/kernel/ParallelFor.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/FixedStations.h"
+#include "sbsim/radio/Medium.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/ChannelStations.h"
 #include "sbsim/radio/channel/Link.h"
@@ -58,11 +59,7 @@ public:
     std::shared_ptr<const StepLinks> computeLinks(Slot sender, std::uint64_t frameKey, kernel::SimTime now,
                                                   std::vector<Link>& drawn, kernel::ParallelFor& pool);
     /// Links per tier over the run: drawn in full, interference only, skipped below the floor.
-    struct Tiers {
-        std::uint64_t full = 0, interference = 0, skipped = 0;
-    };
-    const Tiers& tiers() const { return tiers_; }
-    std::uint64_t linksComputed() const { return tiers_.full + tiers_.interference; }
+    const Medium::LinkFigures& tiers() const { return tiers_; }
 
 private:
     /// A sender's receivers within the cutoff and their links for one step.
@@ -116,7 +113,7 @@ private:
     std::vector<std::uint64_t> sentInStep_;     // per slot, the step_ of its last frame
     std::vector<Slot> sentThisStep_, batch_;
     traffic::NeighbourGrid grid_;
-    Tiers tiers_;
+    Medium::LinkFigures tiers_;
     // The buildings' loss per pair of slots within the step obstacleStep_ (the same both ways).
     PairLosses obstacleDb_;
     std::uint64_t obstacleStep_ = 0;

@@ -50,14 +50,18 @@ void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>
         const Slot r = step.receivers[k];
         if (halfAtStart != nullptr && sending_[r] != 0) halfAtStart->push_back(static_cast<std::uint32_t>(k));
         if (step.tier[k] == StepLinks::kBelowFloor) continue;
-        const Units total = heard_[r] + step.units[k];
-        heard_[r] = total;
-        if (locked_[r] != 0) {
-            Link& decoding = *lockedLink_[r];
-            decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, mwOf(total - unitsOf(decoding.powerMw)));
-        }
-        setSensedPower(r, mwOf(total));
+        setSensedPower(r, mwOf(hear(r, step.units[k])));
     }
+}
+
+Reception::Units Reception::hear(Slot r, Units units) {
+    const Units total = heard_[r] + units;
+    heard_[r] = total;
+    if (locked_[r] != 0) {
+        Link& decoding = *lockedLink_[r];
+        decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, mwOf(total - unitsOf(decoding.powerMw)));
+    }
+    return total;
 }
 
 void Reception::linkStarts(FrameId id, Link& link) {
@@ -66,12 +70,9 @@ void Reception::linkStarts(FrameId id, Link& link) {
     if (link.powerMw < floorMw_) return;
     link.counted = true;
     const Units others = heard_[r];
-    const Units total = others + unitsOf(link.powerMw);
-    heard_[r] = total;
-    if (locked_[r] != 0) {
-        Link& decoding = *lockedLink_[r];
-        decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, mwOf(total - unitsOf(decoding.powerMw)));
-    } else if (sending_[r] == 0 && link.powerMw >= sensingMw_) {
+    const bool decoding = locked_[r] != 0;
+    const Units total = hear(r, unitsOf(link.powerMw));
+    if (!decoding && sending_[r] == 0 && link.powerMw >= sensingMw_) {
         locked_[r] = id;
         lockedLink_[r] = &link;
         link.locked = true;
@@ -84,9 +85,8 @@ double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {
     const Slot r = link.receiver;
     if (locked_[r] == id) locked_[r] = 0;
     if (!link.counted) return 0;
-    if (sendStart_[r] >= start) link.halfDuplex = true;
-    heard_[r] -= unitsOf(link.powerMw);
-    return mwOf(heard_[r]);
+    if (sentSince(r, start)) link.halfDuplex = true;
+    return leave(r, unitsOf(link.powerMw));
 }
 
 void Reception::setSensedPower(Slot s, double mw) {

@@ -57,8 +57,8 @@ public:
     /// links (by index in `step`) whose receiver was sending are added to it.
     void frameStarts(FrameId id, const StepLinks& step, std::vector<Link>& drawn,
                      std::vector<std::uint32_t>* halfAtStart = nullptr);
-    /// An interference-only link of `units` (counted) left station `r`: the power it hears without it.
-    double quietEnds(Slot r, StepLinks::Units units) {
+    /// A counted link of `units` left station `r`: the power it hears without it.
+    double leave(Slot r, StepLinks::Units units) {
         heard_[r] -= units;
         return mwOf(heard_[r]);
     }
@@ -91,6 +91,8 @@ public:
 private:
     static double mwOf(Units units);
     void linkStarts(FrameId id, Link& link);
+    /// Adds `units` to what station `r` hears, and to the interference of the frame it decodes; the new sum.
+    Units hear(Slot r, Units units);
 
     Listener& listener_;
     FrameErrorTable fer_;

@@ -27,7 +27,6 @@ struct StepLinks {
     };
     std::vector<std::uint8_t> tier;
     std::vector<Units> units;  // an interference-only link's power (0 for a drawn one)
-    std::size_t drawnCount = 0;
 
     std::size_t size() const { return receivers.size(); }
     void clear() {
@@ -36,7 +35,6 @@ struct StepLinks {
         distance.clear();
         tier.clear();
         units.clear();
-        drawnCount = 0;
     }
 };
 

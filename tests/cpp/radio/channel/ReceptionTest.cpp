@@ -36,7 +36,6 @@ StepLinks allDrawn(const std::vector<Link>& links) {
         step.tier.push_back(StepLinks::kDrawn);
         step.units.push_back(0);
     }
-    step.drawnCount = links.size();
     return step;
 }
 
@@ -147,8 +146,8 @@ TEST_F(ReceptionTest, AnInterferenceOnlyLinkAddsItsPowerButIsNeverDetected) {
     EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
     EXPECT_FALSE(reception.sensesBusy(2));
     EXPECT_TRUE(half.empty());
-    EXPECT_EQ(reception.quietEnds(2, quiet.units[1]), 0.0);
-    EXPECT_NEAR(reception.quietEnds(1, quiet.units[0]), dbToLinear(-60), 1e-15);
+    EXPECT_EQ(reception.leave(2, quiet.units[1]), 0.0);
+    EXPECT_NEAR(reception.leave(1, quiet.units[0]), dbToLinear(-60), 1e-15);
 }
 
 TEST_F(ReceptionTest, AStrongLoneFrameIsDecoded) {
