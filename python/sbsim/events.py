@@ -46,18 +46,27 @@ def read_json_lines(
     objects: list[dict[str, Any]] = []
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, start=1):
-            if not line.strip():
+            obj = json_line(path, number, line)
+            if obj is None:
                 continue
-            try:
-                obj = json.loads(line)
-            except json.JSONDecodeError as e:
-                raise EventLogError(path, number, f"bad JSON: {e.msg} (column {e.colno})") from e
-            if not isinstance(obj, dict):
-                raise EventLogError(path, number, "not a JSON object")
             if check is not None:
                 check(number, obj)
             objects.append(obj)
     return objects
+
+
+def json_line(path: str | os.PathLike[str], number: int, line: str) -> dict[str, Any] | None:
+    """Line ``number`` of a JSON Lines file as its object; None for a blank line. Raises
+    :class:`EventLogError` naming the line for one that is not a JSON object."""
+    if not line.strip():
+        return None
+    try:
+        obj = json.loads(line)
+    except json.JSONDecodeError as e:
+        raise EventLogError(path, number, f"bad JSON: {e.msg} (column {e.colno})") from e
+    if not isinstance(obj, dict):
+        raise EventLogError(path, number, "not a JSON object")
+    return obj
 
 
 def require_fields(

@@ -11,13 +11,12 @@ follows the table, not the file; :func:`read_message_lines` gives a JSON Lines t
 from __future__ import annotations
 
 import itertools
-import json
 import os
 from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from sbsim.events import EventLogError, read_json_lines, require_fields
+from sbsim.events import EventLogError, json_line, read_json_lines, require_fields
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -215,14 +214,9 @@ def _chunks(path: str | os.PathLike[str]) -> Iterator[tuple[int, list[dict[str, 
             objects = []
             for text in lines:
                 number += 1
-                if not text.strip():
+                obj = json_line(path, number, text)
+                if obj is None:
                     continue
-                try:
-                    obj = json.loads(text)
-                except json.JSONDecodeError as e:
-                    raise EventLogError(path, number, f"bad JSON: {e.msg} (column {e.colno})") from e
-                if not isinstance(obj, dict):
-                    raise EventLogError(path, number, "not a JSON object")
                 _check_line(path, number, obj)
                 objects.append(obj)
             yield first, objects

@@ -59,20 +59,27 @@ def check_radio(spec: StudySpec, program: str) -> None:
             variants += [Run(((name, v),), 0).arguments()[2:] for v in dict.fromkeys(values)]
     with tempfile.TemporaryDirectory(prefix="sbsim-study-check-") as scratch:
         for variant in variants:
-            done = subprocess.run(
-                base + variant,
-                cwd=scratch,
-                env=_environment(),
-                stdin=subprocess.DEVNULL,
-                capture_output=True,
-                text=True,
-                errors="replace",
-                check=False,
-            )
-            if done.returncode == 2:
-                lines = [line for line in done.stderr.splitlines() if line.strip() and "warning" not in line]
-                message = lines[-1].removeprefix("sbsim: ") if lines else "sbsim check refused it"
+            if (message := _refused(base + variant, scratch)) is not None:
                 raise StudyError(f"{' '.join(variant[1:]) or str(spec.radio)}: {message}")
+
+
+def _refused(check: list[str], scratch: str) -> str | None:
+    """Runs an ``sbsim check`` command line in `scratch`: None if it passed (criteria aside), else sbsim's
+    last line (the reason)."""
+    done = subprocess.run(
+        check,
+        cwd=scratch,
+        env=_environment(),
+        stdin=subprocess.DEVNULL,
+        capture_output=True,
+        text=True,
+        errors="replace",
+        check=False,
+    )
+    if done.returncode in (0, 3):
+        return None
+    lines = [line for line in done.stderr.splitlines() if line.strip() and "warning" not in line]
+    return lines[-1].removeprefix("sbsim: ") if lines else f"sbsim check exited {done.returncode}"
 
 
 def check_study(spec: StudySpec, program: str) -> int:
@@ -86,19 +93,7 @@ def check_study(spec: StudySpec, program: str) -> int:
     with tempfile.TemporaryDirectory(prefix="sbsim-study-check-") as scratch:
         for run in first_seed.values():
             cmd = spec.command(run, Path(scratch), program)
-            done = subprocess.run(
-                [cmd[0], "check", *cmd[1:]],
-                cwd=scratch,
-                env=_environment(),
-                stdin=subprocess.DEVNULL,
-                capture_output=True,
-                text=True,
-                errors="replace",
-                check=False,
-            )
-            if done.returncode not in (0, 3):
-                lines = [line for line in done.stderr.splitlines() if line.strip() and "warning" not in line]
-                message = lines[-1].removeprefix("sbsim: ") if lines else f"sbsim check exited {done.returncode}"
+            if (message := _refused([cmd[0], "check", *cmd[1:]], scratch)) is not None:
                 raise StudyError(f"run {run.id}: {message}")
     return len(runs)
 
