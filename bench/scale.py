@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -34,9 +35,12 @@ def saved_state(cfg: Path, begin: float) -> Path:
     state = cfg.parent / f"state{begin:g}.xml.gz"
     if not state.exists():
         print(f"saving the SUMO state at {begin:g} s into {state} ...", flush=True)
-        os.system(
-            f"{sumo()} -c {cfg} --end {begin + 1:g} --save-state.times {begin:g} "
-            f"--save-state.files {state} > /dev/null 2>&1"
+        subprocess.run(
+            [sumo(), "-c", str(cfg), "--end", f"{begin + 1:g}", "--save-state.times", f"{begin:g}"]
+            + ["--save-state.files", str(state)],
+            stdout=subprocess.DEVNULL,
+            stderr=subprocess.DEVNULL,
+            check=False,
         )
         if not state.exists():
             sys.exit(f"sumo saved no state at {begin:g} s (does the scenario run that long?)")
