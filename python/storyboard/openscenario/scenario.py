@@ -283,7 +283,8 @@ class Importer:
         if reference is not None:
             vehicle, local = self.from_catalog(reference, scope)
         if vehicle is None:
-            self.problems.add(obj, "only Vehicle entities")
+            if reference is None and not any(c.tag not in ("Vehicle", "ObjectController") for c in obj):
+                self.problems.add(obj, "only Vehicle entities")
             return
         local = local.declare(vehicle.find("ParameterDeclarations"), self.path)
         self.only(vehicle, {"ParameterDeclarations", "Performance", "BoundingBox", "Axles", "Properties"})

@@ -1,0 +1,215 @@
+"""sbsim --scenario: OpenSCENARIO files of tests/openscenario/ run as stories, on a straight
+two-lane road netgenerate makes (A0B0, B0C0, C0D0: 3 x 500 m, 33.33 m/s) or on the OpenDRIVE highway
+of the corpus; every expected time is worked out in the scenario's comment. SUMO steps 0.1 s; an
+entity's speed changes by at most its maxAcceleration / maxDeceleration per second (SUMO's setSpeed)."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+from sbsim.events import read_events
+from sbsim.runner import run
+from sbsim_helpers import FcdTrace, assert_bad_input, assert_no_crash, read_fcd
+
+CORPUS = Path(__file__).resolve().parents[1] / "openscenario"
+
+
+@pytest.fixture(scope="module")
+def road(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The straight road and a sumocfg (0.1 s steps, 60 s); veh0 drives it from t = 0 (for --bind)."""
+    import sumo
+
+    out = tmp_path_factory.mktemp("xosc-road")
+    subprocess.run(
+        [
+            str(Path(sumo.SUMO_HOME) / "bin" / "netgenerate"),
+            "--grid",
+            "--grid.x-number=4",
+            "--grid.y-number=1",
+            "--grid.length=500",
+            "--default.lanenumber=2",
+            "--default.speed=33.33",
+            "--no-turnarounds=true",
+            "--seed=1",
+            "-o",
+            str(out / "line.net.xml"),
+        ],
+        check=True,
+        capture_output=True,
+    )
+    (out / "veh0.rou.xml").write_text(
+        '<routes><vehicle id="veh0" depart="0" departSpeed="10" departPos="20">'
+        '<route edges="A0B0 B0C0 C0D0"/></vehicle></routes>\n'
+    )
+    (out / "line.sumocfg").write_text(
+        '<configuration><input><net-file value="line.net.xml"/></input>'
+        '<time><begin value="0"/><end value="60"/><step-length value="0.1"/></time></configuration>\n'
+    )
+    (out / "bound.sumocfg").write_text(
+        '<configuration><input><net-file value="line.net.xml"/><route-files value="veh0.rou.xml"/></input>'
+        '<time><begin value="0"/><end value="60"/><step-length value="0.1"/></time></configuration>\n'
+    )
+    return out
+
+
+def scenario(tmp_path: Path, name: str) -> Path:
+    """A copy of the corpus (the importer writes its files into .sbsim/ beside the scenario)."""
+    shutil.copytree(CORPUS, tmp_path / "corpus")
+    return tmp_path / "corpus" / name
+
+
+def run_xosc(xosc: Path, *extra: str, sumocfg: Path | None = None) -> tuple[list[dict[str, Any]], FcdTrace]:
+    events = xosc.with_suffix(".events.jsonl")
+    fcd = xosc.with_suffix(".fcd.xml")
+    result = run(
+        sumocfg,
+        events=events,
+        sumo_options=[f"--fcd-output {fcd} --precision 4"],
+        extra=["--scenario", str(xosc), *extra],
+        timeout=120,
+    )
+    assert_no_crash(result)
+    assert result.returncode == 0, result.stderr
+    return read_events(events), read_fcd(fcd, step=0.1)
+
+
+def starts(events: list[dict[str, Any]], story: str) -> list[float]:
+    return [e["t"] for e in events if e["type"] == "activate" and e["story"] == story]
+
+
+def test_step_speed_with_parameters_and_the_stop_trigger(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "step-speed.xosc")
+    events, fcd = run_xosc(xosc, sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Brake") == [5.1], "SimulationTime > 5 is first true at 5.1"
+    assert fcd.speed["Ego"][5.0] == pytest.approx(20.0)  # EgoSpeed
+    assert fcd.speed["Ego"][8.0] == pytest.approx(10.0)  # SlowSpeed = ${$EgoSpeed / 2}
+    assert max(fcd.times) == pytest.approx(12.1), "the storyboard's stop trigger (t > 12) ends the run"
+    # --param overrides EgoSpeed, and the expression over it follows.
+    xosc2 = xosc.with_name("step-speed-25.xosc")
+    shutil.copy(xosc, xosc2)
+    events, fcd = run_xosc(xosc2, "--param", "EgoSpeed=25", sumocfg=road / "line.sumocfg")
+    assert fcd.speed["Ego"][5.0] == pytest.approx(25.0)
+    assert fcd.speed["Ego"][8.0] == pytest.approx(12.5)
+
+
+def test_maximum_execution_count_two_fires_twice(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "twice.xosc"), sumocfg=road / "line.sumocfg")
+    up, down = starts(events, "S/A/Up"), starts(events, "S/A/Down")
+    assert len(up) == 2 and len(down) == 2
+    # Up: Ego appears at 10 m/s (< 11: a rising edge); +4 m/s2 passes 19 m/s after 23 steps.
+    assert up[0] == 0.2 and down[0] == pytest.approx(0.2 + 2.3)
+    # Each start finds the speed just past its threshold, the step before not.
+    for t in up:
+        assert fcd.speed["Ego"][t] < 11 and (t == 0.2 or fcd.speed["Ego"][round(t - 0.1, 1)] >= 11)
+    for t in down:
+        assert fcd.speed["Ego"][t] > 19 and fcd.speed["Ego"][round(t - 0.1, 1)] <= 19
+    assert fcd.speed["Ego"][29.0] == pytest.approx(10.0), "after the second Down, Up is complete"
+
+
+def test_falling_edge_and_storyboard_element_state(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "falling.xosc"), sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Brake") == [3.1]
+    assert starts(events, "S/A/Fell") == [3.8], "speed > 15 turns false at 3.8 (14.4 m/s)"
+    assert fcd.speed["Ego"][3.7] == pytest.approx(15.2) and fcd.speed["Ego"][3.8] == pytest.approx(14.4)
+    signals = [(e["t"], e["cause"]) for e in events if e["type"] == "signal"]
+    assert signals == [(3.8, "fell"), (3.9, "after")], "After starts on Fell's endTransition"
+
+
+def test_overwrite_stops_the_running_event(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "overwrite.xosc"), sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Slow") == []
+    assert starts(events, "S/A/Fast") == [2.1]
+    assert fcd.speed["Ego"][7.0] == pytest.approx(25.0)
+
+
+def test_opendrive_highway_and_a_catalog_vehicle(tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "slow-lead.xosc")
+    events, fcd = run_xosc(xosc)
+    # OpenDRIVE road 1, lane -1 (next to the centre line) is SUMO's leftmost lane of edge -1.
+    assert fcd.lane["Ego"][0.2] == "-1_1" and fcd.pos["Ego"][0.2][0] == pytest.approx(50.0)
+    assert fcd.pos["Lead"][0.2][0] == pytest.approx(150.0)
+    assert fcd.type["Lead"][0.2] == "xosc_Lead"
+    (follow,) = starts(events, "S/A/Follow")
+    gap = fcd.pos["Lead"][follow][0] - fcd.pos["Ego"][follow][0]
+    before = round(follow - 0.1, 1)
+    assert gap <= 40 < fcd.pos["Lead"][before][0] - fcd.pos["Ego"][before][0]
+    cache = xosc.parent / ".sbsim"
+    assert "origId" in (cache / "highway.net.xml").read_text(), "converted with --output.original-names"
+    (types,) = cache.glob("*.vtypes.add.xml")
+    assert '<vType id="xosc_Lead" vClass="truck" length="12" width="2.5"' in types.read_text()
+
+
+def test_bind_makes_a_sumo_vehicle_the_entity(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "step-speed.xosc"), "--bind", "Ego=veh0", sumocfg=road / "bound.sumocfg")
+    assert "Ego" not in fcd.speed
+    assert starts(events, "S/A/Brake") == [5.1]
+    assert [e["vehicle"] for e in events if e["story"] == "S/A/Brake" and e["type"] == "activate"] == ["veh0"]
+    assert fcd.speed["veh0"][5.0] == pytest.approx(20.0) and fcd.speed["veh0"][8.0] == pytest.approx(10.0)
+
+
+def test_check_prints_the_imported_stories(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "falling.xosc")
+    result = run(road / "line.sumocfg", extra=["check", "--scenario", str(xosc)], timeout=120)
+    assert result.returncode == 0, result.stderr
+    assert "story 'S/A/Fell'" in result.stdout
+    assert "ElementCondition(Event 'Fell', actors Ego; start (fast falling))" in result.stdout
+    assert "EntityCondition(Ego)" in result.stdout
+    assert "SignalEffect" in result.stdout
+
+
+def test_unsupported_elements_are_one_error_with_their_lines(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "unsupported.xosc")
+    result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
+    line = assert_bad_input(result, "3 unsupported OpenSCENARIO elements", "<Pedestrian> (line 18)")
+    assert "<LateralAction> (line 42): LaneChangeAction" in line
+    assert "<TrafficSignalCondition> (line 59)" in line
+
+
+@pytest.mark.parametrize(
+    ("edit", "needles"),
+    [
+        (lambda s: s.replace("</Storyboard>", "</Storybord>"), ["not well-formed XML"]),
+        (
+            lambda s: s.replace('conditionEdge="rising"', 'conditionEdge="sometimes"', 1),
+            ["fails the ASAM schema", "conditionEdge"],
+        ),
+        (lambda s: s.replace('value="$EgoSpeed"', 'value="$Nope"'), ["no parameter 'Nope' is declared"]),
+        (lambda s: s.replace('roadId="A0B0"', 'roadId="Z9"'), ["road 'Z9' lane 0 maps to no SUMO lane"]),
+    ],
+)
+def test_malformed_scenarios_are_one_line_with_their_place(
+    road: Path, tmp_path: Path, edit: Callable[[str], str], needles: list[str]
+) -> None:
+    xosc = scenario(tmp_path, "step-speed.xosc")
+    xosc.write_text(edit(xosc.read_text()))
+    result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
+    line = assert_bad_input(result, str(xosc), *needles)
+    assert re.search(re.escape(str(xosc)) + r":\d+:", line), "the line of the element"
+
+
+def test_param_of_the_wrong_type_and_bind_of_no_entity(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "step-speed.xosc")
+    cfg = road / "line.sumocfg"
+    assert_bad_input(
+        run(cfg, extra=["--scenario", str(xosc), "--param", "EgoSpeed=fast"]), "--param EgoSpeed", "double"
+    )
+    assert_bad_input(run(cfg, extra=["--scenario", str(xosc), "--bind", "Nobody=veh0"]), "no entity 'Nobody'")
+    assert_bad_input(run(cfg, extra=["--bind", "Ego=veh0"]), "--bind", "--scenario")
+
+
+def test_the_prepared_files_are_reused(road: Path, tmp_path: Path) -> None:
+    from storyboard.openscenario.prepare import prepare
+
+    xosc = scenario(tmp_path, "step-speed.xosc")
+    first = prepare(xosc, road / "line.sumocfg", {}, {})
+    second = prepare(xosc, road / "line.sumocfg", {}, {})
+    assert first == second
+    other = prepare(xosc, road / "line.sumocfg", {"EgoSpeed": "30"}, {})
+    assert json.dumps(other) == json.dumps(first), "types do not depend on EgoSpeed below the limit"
