@@ -129,9 +129,9 @@ std::size_t ScenarioMachine::add(ElementSpec spec) {
                             kindName(elements_[*spec.parent].spec.kind), elements_[*spec.parent].spec.name));
         }
     }
-    const bool triggered = spec.kind == Kind::act || spec.kind == Kind::event;
+    const bool triggered = spec.kind == Kind::act || spec.kind == Kind::event || spec.kind == Kind::storyboard;
     if (!triggered && !spec.start.empty())
-        throw std::invalid_argument(who + ": only acts and events have a start trigger");
+        throw std::invalid_argument(who + ": only the storyboard, acts and events have a start trigger");
     if (spec.kind != Kind::act && spec.kind != Kind::storyboard && !spec.stop.empty()) {
         throw std::invalid_argument(who + ": only acts and the storyboard have a stop trigger");
     }
@@ -251,7 +251,8 @@ void ScenarioMachine::step(const EvaluationContext& given) {
         const bool justMoved = e.transitionTime == now;
         // A start trigger is evaluated every step its element may start again (running included),
         // so that its edges compare consecutive steps; it acts only on an element in standby.
-        const bool triggered = e.spec.kind == Kind::act || e.spec.kind == Kind::event;
+        const bool triggered =
+            e.spec.kind == Kind::act || e.spec.kind == Kind::event || e.spec.kind == Kind::storyboard;
         bool fired = !triggered || e.spec.start.empty();
         if (triggered && !e.spec.start.empty() && e.state != State::complete && parentRunning(e)) {
             fired = fires(e.spec.start, e.startMemory, *ctx, ego);

@@ -25,7 +25,8 @@ namespace sbsim::storyboard {
 /// The machine advances once per step, on the step's snapshot, before any story acts:
 /// elements in the order they were added (parents first), then completions bottom up.
 /// - Story, ManeuverGroup, Maneuver start when their parent runs; an Act or Event starts when its
-///   parent runs and its start trigger fires (no trigger: at once).
+///   parent runs and its start trigger fires (no trigger: at once). The storyboard starts at the
+///   first step its start trigger fires (the end of its Init: its entities are on the road).
 /// - A trigger is an OR of AND groups of conditions; each condition has its own edge (rising,
 ///   falling, risingOrFalling, none; the value before its first evaluation counts as false) and
 ///   delay (its edge-processed value is seen `delay` s later). A start trigger is evaluated every

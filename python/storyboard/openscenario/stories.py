@@ -59,13 +59,26 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
     # Indices first, so that a StoryboardElementStateCondition may name any element.
     for n, (e, _) in enumerate(elements):
         build.index.setdefault((e.kind, e.name), n)
+    # The storyboard starts when its Init is done: every entity it puts on the road (or binds) runs.
+    on_road = [
+        scenario.entities[s.entity].sumo_id
+        for s in scenario.starts
+        if s.lane is not None or scenario.entities[s.entity].bound
+    ]
+    on_road += [e.sumo_id for e in scenario.entities.values() if e.bound and e.sumo_id not in on_road]
+    if on_road:
+        init = [sb.EntityCondition(v, sb.TimeCondition(0)) for v in on_road]
+        ready = init[0] if len(init) == 1 else sb.AllCondition(*init)
+        start_trigger = [[("Init done", ready, "none", 0.0)]]
+    else:
+        start_trigger = []
     indices: dict[int, int] = {}
     for e, parent in elements:
         indices[id(e)] = machine.add(
             e.name,
             e.kind,
             parent=None if parent is None else indices[id(parent)],
-            start=_trigger(e.start, build),
+            start=start_trigger if parent is None else _trigger(e.start, build),
             stop=_trigger(e.stop, build),
             max_executions=e.max_executions,
             priority=e.priority,

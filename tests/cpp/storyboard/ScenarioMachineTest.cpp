@@ -237,6 +237,24 @@ TEST_F(Machine, ConditionsAreEvaluatedOnAWorldRowWhenNoVehicleRuns) {
     EXPECT_TRUE(step(e));
 }
 
+TEST_F(Machine, TheStoryboardWaitsForItsStartTrigger) {
+    auto ready = std::make_shared<Switch>();
+    auto m2 = std::make_shared<M>();
+    m2->add({"Storyboard", M::Kind::storyboard, std::nullopt, when(ready)});
+    m2->add({"S", M::Kind::story, 0});
+    const std::size_t a = m2->add({"A", M::Kind::act, 1});
+    m = m2;
+    EXPECT_FALSE(step(a));
+    EXPECT_EQ(m->state(0), M::State::standby);
+    ready->on = true;
+    step(a);
+    EXPECT_EQ(m->state(0), M::State::running);
+    EXPECT_TRUE(m->transitionedAt(a, M::Transition::start, SimTime::fromSeconds(2)) ||
+                m->transitionedAt(a, M::Transition::end, SimTime::fromSeconds(2)))
+        << "the act started with it (and, having no maneuver group, ended at once)";
+    EXPECT_EQ(m->executions(a), 1u);
+}
+
 TEST_F(Machine, AddRefusesWhatTheStandardDoesNotAllow) {
     auto sw = std::make_shared<Switch>();
     EXPECT_THROW(m->add({"E", M::Kind::event, act}), std::invalid_argument) << "an event's parent is a maneuver";
