@@ -213,3 +213,46 @@ def test_the_prepared_files_are_reused(road: Path, tmp_path: Path) -> None:
     assert first == second
     other = prepare(xosc, road / "line.sumocfg", {"EgoSpeed": "30"}, {})
     assert json.dumps(other) == json.dumps(first), "types do not depend on EgoSpeed below the limit"
+
+
+def test_every_mapped_condition(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "conditions.xosc")
+    events, fcd = run_xosc(xosc, sumocfg=road / "line.sumocfg")
+    fired = {e["cause"]: e["t"] for e in events if e["type"] == "signal"}
+    assert fired["Rel"] == 0.2 and fired["Param"] == 0.2, "true when the storyboard starts"
+    assert "Stand" not in fired and "Crash" not in fired, "Ego never stands, nobody collides"
+
+    def x(vehicle: str, t: float) -> float:
+        return fcd.pos[vehicle][round(t, 1)][0]
+
+    def before(t: float) -> float:
+        return round(t - 0.1, 1)
+
+    # Each fired at the first step its condition held (front bumpers, 0.1 s steps).
+    reach = fired["Reach"]
+    assert abs(x("Ego", reach) - 150) <= 2 < abs(x("Ego", before(reach)) - 150)
+    near = fired["Near"]
+    assert x("Other", near) - x("Ego", near) <= 30 < x("Other", before(near)) - x("Ego", before(near))
+    point = fired["Point"]
+    assert abs(x("Ego", point) - 300) <= 10 < abs(x("Ego", before(point)) - 300)
+    brake = fired["Brake"]
+    assert fcd.speed["Ego"][brake] - fcd.speed["Ego"][before(brake)] < -0.2  # < -2 m/s2 over 0.1 s
+    assert {lane[-2:] for lane in fcd.lane["Ego"].values()} == {"_0"}, "an entity keeps its lane (behind Other)"
+    # AddEntityAction at t > 3 s: Late departs at the next step, where the action put it.
+    assert min(fcd.speed["Late"]) == 3.2 and fcd.lane["Late"][3.2] == "B0C0_1"
+    assert fcd.pos["Late"][3.2][0] == pytest.approx(510.0)
+
+    result = run(road / "line.sumocfg", extra=["check", "--scenario", str(xosc)], timeout=120)
+    assert result.returncode == 0, result.stderr
+    for mapped in (
+        "SpeedDifferenceConditionFaster(5 m/s)",
+        "HeadwayCondition(1.5 s)",
+        "TtcCondition(4 s",
+        "AccelerationConditionLess(-2",
+        "StandstillCondition(1 s)",
+        "CollisionCondition",
+        "DistanceCondition(vehicle Other, 30 m)",
+        "SpawnEffect('Late', route B0C0 C0D0, type xosc_Late)",
+        "story 'S/A/Add (world)'",
+    ):
+        assert mapped in result.stdout, f"{mapped!r} not in:\n{result.stdout}"

@@ -64,7 +64,10 @@ def vehicle_types(scenario: Scenario) -> str:
         lines.append(
             f'    <vType id={quoteattr(e.vtype)} vClass={quoteattr(e.vclass)} length="{e.length:g}" '
             f'width="{e.width:g}" height="{e.height:g}" maxSpeed="{e.max_speed:g}" accel="{e.max_accel:g}" '
-            f'decel="{e.max_decel:g}" speedFactor="{factor:g}" speedDev="0"/>'
+            f'decel="{e.max_decel:g}" speedFactor="{factor:g}" speedDev="0" '
+            # An entity keeps its lane unless a LaneChangeAction moves it, as the standard's do:
+            # SUMO's lane changes for speed, keeping right and cooperation are off for it.
+            'lcSpeedGain="0" lcKeepRight="0" lcCooperative="0"/>'
         )
     lines.append("</additional>")
     return "\n".join(lines) + "\n"

@@ -798,6 +798,8 @@ def _compare_time(sb: Any, value: float, rule: str) -> Any:
 
 
 def _compare_values(a: Any, b: Any, rule: str) -> bool:
+    if isinstance(a, bool):  # a boolean parameter against "true"/"false"
+        b = str(b).lower() in ("true", "1")
     try:
         x, y = float(a), float(b)
     except (TypeError, ValueError):
