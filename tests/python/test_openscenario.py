@@ -15,7 +15,7 @@ from typing import Any
 
 import pytest
 from sbsim.events import read_events
-from sbsim.runner import run
+from sbsim.runner import executable, run
 from sbsim_helpers import FcdTrace, assert_bad_input, assert_no_crash, read_fcd
 
 CORPUS = Path(__file__).resolve().parents[1] / "openscenario"
@@ -256,3 +256,28 @@ def test_every_mapped_condition(road: Path, tmp_path: Path) -> None:
         "story 'S/A/Add (world)'",
     ):
         assert mapped in result.stdout, f"{mapped!r} not in:\n{result.stdout}"
+
+
+def test_a_study_sweeps_a_declared_parameter(road: Path, tmp_path: Path) -> None:
+    from sbsim import study
+
+    xosc = scenario(tmp_path, "step-speed.xosc")
+    spec = study.StudySpec.from_dict(
+        {
+            "sumocfg": str(road / "line.sumocfg"),
+            "scenario": str(xosc),
+            "seeds": [1],
+            "args": ["--", "--fcd-output", "{run_dir}/fcd.xml"],
+            "parameters": {"EgoSpeed": [16, 24]},
+            "outputs": {"directory": str(tmp_path / "results")},
+        },
+        base=tmp_path,
+    )
+    slow = {}
+    for r in spec.runs():
+        row = study.execute(spec, r, str(executable()))
+        assert row["exit_code"] == 0, row["stderr_tail"]
+        folder = spec.directory / "runs" / r.id
+        assert "warning" not in (folder / "stderr.txt").read_text(), "the parameter was read"
+        slow[r.parameters[0][1]] = read_fcd(folder / "fcd.xml", step=0.1).speed["Ego"][8.0]
+    assert slow == {16: pytest.approx(8.0), 24: pytest.approx(12.0)}, "SlowSpeed = EgoSpeed / 2 in each run"

@@ -10,6 +10,7 @@ right of it, ...; a `laneId` >= 0 is SUMO's lane index (0: the rightmost)."""
 from __future__ import annotations
 
 import math
+import os
 import shutil
 import subprocess
 from dataclasses import dataclass, field
@@ -202,8 +203,12 @@ def convert_opendrive(xodr: Path, cache: Path) -> tuple[Path, list[str]]:
     if net.exists() and net.stat().st_mtime >= xodr.stat().st_mtime:
         return net, command
     cache.mkdir(parents=True, exist_ok=True)
-    result = subprocess.run(command, capture_output=True, text=True, check=False)
+    # Written under another name and renamed: runs of a study may convert the same file at once.
+    partial = cache / f".{net.name}.{os.getpid()}"
+    result = subprocess.run([*command[:-1], str(partial)], capture_output=True, text=True, check=False)
     if result.returncode != 0:
+        partial.unlink(missing_ok=True)
         lines = [line for line in result.stderr.splitlines() if line.strip() and "SUMO_HOME" not in line]
         raise ScenarioError(f"{xodr}: netconvert failed: {lines[-1] if lines else result.returncode}")
+    partial.replace(net)
     return net, command
