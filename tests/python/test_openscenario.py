@@ -281,3 +281,27 @@ def test_a_study_sweeps_a_declared_parameter(road: Path, tmp_path: Path) -> None
         assert "warning" not in (folder / "stderr.txt").read_text(), "the parameter was read"
         slow[r.parameters[0][1]] = read_fcd(folder / "fcd.xml", step=0.1).speed["Ego"][8.0]
     assert slow == {16: pytest.approx(8.0), 24: pytest.approx(12.0)}, "SlowSpeed = EgoSpeed / 2 in each run"
+
+
+def test_an_event_raises_a_denm_through_a_custom_command(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "emergency-brake.xosc")
+    messages = tmp_path / "messages.jsonl"
+    events, fcd = run_xosc(
+        xosc,
+        "--services",
+        str(xosc.with_name("emergency-brake.services.xml")),
+        "--messages",
+        str(messages),
+        sumocfg=road / "line.sumocfg",
+    )
+    signals = [(e["t"], e["vehicle"], e["cause"]) for e in events if e["type"] == "signal"]
+    assert signals == [(5.1, "Lead", "hard braking")]
+    lines = [json.loads(line) for line in messages.read_text().splitlines()]
+    denms = [m for m in lines if m.get("type") == "DENM"]
+    first = next(m for m in denms if m["event"] == "tx")
+    assert first["station"] == "Lead" and first["cause"] == 99 and 5.1 <= first["t"] < 5.2
+    assert any(m["event"] == "rx" and m["station"] == "Ego" and m["sender"] == "Lead" for m in denms)
+    assert {m["station"] for m in lines if m.get("type") == "CAM" and m["event"] == "tx"} == {"Ego", "Lead"}
+    # Lead stops (20 m/s at 9 m/s2: in 2.3 s); Ego brakes for it by itself and stays behind.
+    assert fcd.speed["Lead"][8.0] == 0.0
+    assert fcd.pos["Ego"][15.0][0] < fcd.pos["Lead"][15.0][0] - 5
