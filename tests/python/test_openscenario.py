@@ -134,7 +134,8 @@ def test_opendrive_highway_and_a_catalog_vehicle(tmp_path: Path) -> None:
     events, fcd = run_xosc(xosc)
     # OpenDRIVE road 1, lane -1 (next to the centre line) is SUMO's leftmost lane of edge -1.
     assert fcd.lane["Ego"][0.2] == "-1_1" and fcd.pos["Ego"][0.2][0] == pytest.approx(50.0)
-    assert fcd.pos["Lead"][0.2][0] == pytest.approx(150.0)
+    assert fcd.pos["Lead"][0.2][0] == pytest.approx(150.0)  # RoadPosition s=150, t=-1.75: lane -1
+    assert fcd.lane["Lead"][0.2] == "-1_1"
     assert fcd.type["Lead"][0.2] == "xosc_Lead"
     (follow,) = starts(events, "S/A/Follow")
     gap = fcd.pos["Lead"][follow][0] - fcd.pos["Ego"][follow][0]
@@ -228,6 +229,7 @@ def test_every_mapped_condition(road: Path, tmp_path: Path) -> None:
     def before(t: float) -> float:
         return round(t - 0.1, 1)
 
+    assert x("Other", 0.2) == pytest.approx(110.0), "RelativeLanePosition: 100 m ahead of Ego"
     # Each fired at the first step its condition held (front bumpers, 0.1 s steps).
     reach = fired["Reach"]
     assert abs(x("Ego", reach) - 150) <= 2 < abs(x("Ego", before(reach)) - 150)
@@ -305,3 +307,17 @@ def test_an_event_raises_a_denm_through_a_custom_command(road: Path, tmp_path: P
     # Lead stops (20 m/s at 9 m/s2: in 2.3 s); Ego brakes for it by itself and stays behind.
     assert fcd.speed["Lead"][8.0] == 0.0
     assert fcd.pos["Ego"][15.0][0] < fcd.pos["Lead"][15.0][0] - 5
+
+
+def test_road_positions_find_their_lane_from_the_opendrive_widths() -> None:
+    from storyboard.openscenario.errors import ScenarioError
+    from storyboard.openscenario.opendrive import lane_at
+
+    xodr = CORPUS / "highway.xodr"  # road 1: two right lanes of 3.5 m
+    assert lane_at(xodr, "1", 500, -1.75, "here") == -1
+    assert lane_at(xodr, "1", 500, -3.5, "here") == -1
+    assert lane_at(xodr, "1", 500, -5.0, "here") == -2
+    with pytest.raises(ScenarioError, match="t=-7.1 is off road '1' at s=500"):
+        lane_at(xodr, "1", 500, -7.1, "here")
+    with pytest.raises(ScenarioError, match="no road '9'"):
+        lane_at(xodr, "9", 0, -1, "here")

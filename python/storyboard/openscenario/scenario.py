@@ -15,6 +15,7 @@ from lxml import etree
 
 from .errors import Problems, ScenarioError, where
 from .network import Lane, Network
+from .opendrive import lane_at
 from .parameters import Scope
 
 # vehicleCategory -> SUMO vehicle class.
@@ -175,6 +176,7 @@ class Importer:
         network: Network,
         overrides: Mapping[str, Any],
         binds: Mapping[str, str],
+        xodr: Path | None = None,
     ) -> None:
         self.path = path
         self.network = network
@@ -185,6 +187,8 @@ class Importer:
         self.entities: dict[str, Entity] = {}
         self.catalog_dirs: dict[str, Path] = {}
         self.added: set[str] = set()  # entities an AddEntityAction puts on the road
+        self.placed: dict[str, tuple[Lane, float]] = {}  # Init positions so far (for relative ones)
+        self.xodr = xodr
 
     # -- helpers ---------------------------------------------------------------------------
     def value(self, element: Any, name: str, scope: Scope, default: str | None = None) -> Any:
@@ -367,6 +371,7 @@ class Importer:
             lane, pos = self.position(action.find("Position"), scope, what)
             if lane is not None:
                 start.lane, start.pos = lane, pos
+                self.placed[start.entity] = (lane, pos)
         elif action.tag == "LongitudinalAction" and action.find("SpeedAction") is not None:
             speed = action.find("SpeedAction")
             target = speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
@@ -406,6 +411,33 @@ class Importer:
             )
         if p.tag == "WorldPosition":
             return self.network.world_position(self.number(p, "x", scope), self.number(p, "y", scope), here)
+        if p.tag == "RoadPosition":
+            if self.xodr is None:
+                raise ScenarioError(
+                    f"{here}: a RoadPosition needs the scenario's OpenDRIVE file (RoadNetwork/LogicFile)"
+                )
+            road, s = self.text(p, "roadId", scope), self.number(p, "s", scope)
+            lane_id = lane_at(self.xodr, road, s, self.number(p, "t", scope), here)
+            return self.network.lane_position(road, lane_id, s, here)
+        if p.tag == "RelativeLanePosition":
+            entity = self.text(p, "entityRef", scope)
+            reference = self.placed.get(entity)
+            if reference is None:
+                raise ScenarioError(f"{here}: entity '{entity}' has no lane position before this one")
+            if abs(self.number(p, "offset", scope, "0")) > 1e-9 or p.get("dsLane") is not None:
+                self.problems.add(p, "a lateral offset or dsLane")
+                return None, 0.0
+            lane, pos = reference
+            lanes = self.network.edges[lane.edge]
+            # dLane counts to the left in the reference entity's direction: SUMO's index goes up.
+            index = lane.index + int(self.number(p, "dLane", scope))
+            if not 0 <= index < len(lanes):
+                raise ScenarioError(f"{here}: dLane leaves edge '{lane.edge}' ({len(lanes)} lanes)")
+            target = lanes[index]
+            s = pos + self.number(p, "ds", scope, "0")
+            if not 0 <= s <= target.length:
+                raise ScenarioError(f"{here}: ds puts it off edge '{lane.edge}' (length {target.length:g} m)")
+            return target, s
         self.problems.add(p)
         return None, 0.0
 
@@ -818,7 +850,8 @@ def read(path: Path, network: Network, overrides: Mapping[str, Any], binds: Mapp
     """Reads and checks `path` (schema when available, then every element) on `network`."""
     tree = parse_file(path)
     validate(path, tree)
-    return Importer(path, network, overrides, binds).read(tree)
+    xodr = logic_file(path)
+    return Importer(path, network, overrides, binds, xodr if xodr is not None and xodr.is_file() else None).read(tree)
 
 
 def logic_file(path: Path) -> Path | None:
