@@ -321,3 +321,10 @@ def test_road_positions_find_their_lane_from_the_opendrive_widths() -> None:
         lane_at(xodr, "1", 500, -7.1, "here")
     with pytest.raises(ScenarioError, match="no road '9'"):
         lane_at(xodr, "9", 0, -1, "here")
+
+
+def test_a_storyboard_element_state_of_no_element_is_one_line(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "falling.xosc")
+    xosc.write_text(xosc.read_text().replace('storyboardElementRef="Fell"', 'storyboardElementRef="Fall"'))
+    result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
+    assert_bad_input(result, f"{xosc}:", "<StoryboardElementStateCondition>", "no event named 'Fall'")

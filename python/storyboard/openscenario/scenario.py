@@ -189,6 +189,7 @@ class Importer:
         self.added: set[str] = set()  # entities an AddEntityAction puts on the road
         self.placed: dict[str, tuple[Lane, float]] = {}  # Init positions so far (for relative ones)
         self.xodr = xodr
+        self.references: list[tuple[tuple[str, str], str]] = []  # StoryboardElementState targets
 
     # -- helpers ---------------------------------------------------------------------------
     def value(self, element: Any, name: str, scope: Scope, default: str | None = None) -> Any:
@@ -266,6 +267,10 @@ class Importer:
             elif child.tag != "Init":
                 self.problems.add(child)
         self.problems.raise_if_any()
+        named = {(e.kind, e.name) for e in _elements(storyboard)}
+        for key, missing in self.references:
+            if key not in named:
+                raise ScenarioError(missing)
         positioned = {s.entity for s in starts if s.lane is not None}
         for e in self.entities.values():
             if not e.bound and e.name not in positioned and e.name not in self.added:
@@ -653,11 +658,9 @@ class Importer:
                 self.problems.add(c, f"element type '{kind}' or state '{state}'")
                 return None
             key = (ELEMENT_KINDS[kind], ref)
-            line = c.sourceline
+            self.references.append((key, f"{where(self.path, c)}: no {kind} named '{ref}' in the storyboard"))
 
             def element_state(b: Build) -> Any:
-                if key not in b.index:
-                    raise ScenarioError(f"{self.path}:{line}: no {kind} named '{ref}' in the storyboard")
                 return b.sb.ElementStateCondition(b.machine, b.index[key], state)
 
             return element_state
@@ -797,6 +800,13 @@ class Importer:
             return within if rule.startswith("less") else b.sb.NotCondition(within)
 
         return build
+
+
+def _elements(root: Element) -> list[Element]:
+    out = [root]
+    for child in root.children:
+        out += _elements(child)
+    return out
 
 
 def _compare(sb: Any, greater: Any, less: Any, value: float, rule: str) -> Any:
