@@ -328,3 +328,10 @@ def test_a_storyboard_element_state_of_no_element_is_one_line(road: Path, tmp_pa
     xosc.write_text(xosc.read_text().replace('storyboardElementRef="Fell"', 'storyboardElementRef="Fall"'))
     result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
     assert_bad_input(result, f"{xosc}:", "<StoryboardElementStateCondition>", "no event named 'Fall'")
+
+
+def test_parameters_change_in_the_run(road: Path, tmp_path: Path) -> None:
+    events, _ = run_xosc(scenario(tmp_path, "parameters.xosc"), sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Bump (world)") == [2.1, 2.3, 2.5, 2.7, 2.9]
+    signals = [(e["t"], e["cause"]) for e in events if e["type"] == "signal"]
+    assert signals == [(2.6, "three"), (4.2, "storm")], "a change is seen the step after"

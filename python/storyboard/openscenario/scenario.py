@@ -52,11 +52,13 @@ ELEMENT_KINDS = {
 
 @dataclass
 class Build:
-    """What recipes build with inside sbsim: the storyboard module and the element indices."""
+    """What recipes build with inside sbsim: the storyboard module, the machine and its element
+    indices, the run's parameter store."""
 
     sb: Any
     machine: Any
     index: dict[tuple[str, str], int]  # (kind, name) -> machine element
+    params: Any = None
 
 
 Recipe = Callable[[Build], Any]
@@ -131,7 +133,7 @@ class Scenario:
     entities: dict[str, Entity]
     starts: list[Start]
     storyboard: Element
-    parameters: dict[str, Any]
+    parameters: dict[str, Any]  # the global ones
 
 
 def schema_for(root: Any) -> Path | None:
@@ -190,6 +192,7 @@ class Importer:
         self.placed: dict[str, tuple[Lane, float]] = {}  # Init positions so far (for relative ones)
         self.xodr = xodr
         self.references: list[tuple[tuple[str, str], str]] = []  # StoryboardElementState targets
+        self.globals: dict[str, Any] = {}  # the global parameters, as declared (or --param)
 
     # -- helpers ---------------------------------------------------------------------------
     def value(self, element: Any, name: str, scope: Scope, default: str | None = None) -> Any:
@@ -230,6 +233,7 @@ class Importer:
             root, {"FileHeader", "ParameterDeclarations", "CatalogLocations", "RoadNetwork", "Entities", "Storyboard"}
         )
         scope = Scope().declare(root.find("ParameterDeclarations"), self.path, self.overrides, self.used)
+        self.globals = dict(scope.values)
         catalogs = root.find("CatalogLocations")
         if catalogs is not None:
             for location in catalogs:
@@ -278,7 +282,7 @@ class Importer:
                     f"{self.path}: entity '{e.name}' has no position in Init (a TeleportAction) and is not "
                     f"bound to a SUMO vehicle (--bind {e.name}=VEHICLE)"
                 )
-        return Scenario(self.path, self.network, self.entities, starts, storyboard, scope.all())
+        return Scenario(self.path, self.network, self.entities, starts, storyboard, dict(self.globals))
 
     def read_object(self, obj: Any, scope: Scope) -> None:
         name = self.text(obj, "name", scope)
@@ -553,6 +557,8 @@ class Importer:
             if not cause:
                 raise ScenarioError(f"{where(self.path, command)}: a SignalEffect needs its cause as the text")
             return Action(name, False, f"SignalEffect('{cause}')", lambda b: b.sb.SignalEffect(cause))
+        if kind.tag == "GlobalAction" and len(kind) == 1 and kind[0].tag == "ParameterAction":
+            return self.read_parameter_action(kind[0], scope, name)
         if kind.tag == "GlobalAction" and kind.find("EntityAction/AddEntityAction") is not None:
             entity_action = kind.find("EntityAction")
             entity = self.text(entity_action, "entityRef", scope)
@@ -573,6 +579,28 @@ class Importer:
             )
         self.problems.add(kind, self.later(kind))
         return None
+
+    def read_parameter_action(self, action: Any, scope: Scope, name: str) -> Action | None:
+        ref = self.text(action, "parameterRef", scope)
+        here = where(self.path, action)
+        if ref not in self.globals:
+            raise ScenarioError(f"{here}: '{ref}' is no global parameter (only those may change in a run)")
+        op: str
+        operand: Any
+        if len(action) == 1 and action[0].tag == "SetAction":
+            op, operand = "set", _as_stored(self.globals[ref], self.value(action[0], "value", scope), here)
+        elif len(action) == 1 and action[0].tag == "ModifyAction" and len(action[0]) == 1 and len(action[0][0]) == 1:
+            rule = action[0][0][0]
+            if rule.tag not in ("AddValue", "MultiplyByValue") or isinstance(self.globals[ref], str):
+                self.problems.add(rule, "AddValue or MultiplyByValue of a number")
+                return None
+            op, operand = ("add" if rule.tag == "AddValue" else "multiply"), self.number(rule, "value", scope)
+        else:
+            self.problems.add(action)
+            return None
+        return Action(
+            name, True, f"ParameterEffect({ref} {op})", lambda b: b.sb.ParameterEffect(b.params, ref, op, operand)
+        )
 
     def later(self, element: Any) -> str:
         """Why an action is unsupported, for the actions another part of sbsim brings."""
@@ -642,13 +670,17 @@ class Importer:
             value, rule = self.number(c, "value", scope), self.rule(c, scope)
             return lambda b: _compare_time(b.sb, value, rule)
         if c.tag == "ParameterCondition":
-            # Parameters do not change during a run (ParameterSetAction is not supported), so the
-            # condition is decided now; it is a constant condition in the run.
             ref = self.text(c, "parameterRef", scope)
+            rule = self.rule(c, scope)
             values = scope.all()
             if ref not in values:
                 raise ScenarioError(f"{where(self.path, c)}: no parameter '{ref}' is declared")
-            holds = _compare_values(values[ref], self.value(c, "value", scope), self.rule(c, scope))
+            if ref in self.globals:
+                # A global parameter may change during the run (ParameterSetAction): asked each step.
+                value = _as_stored(self.globals[ref], self.value(c, "value", scope), where(self.path, c))
+                return lambda b: b.sb.ParameterCondition(b.params, ref, rule, value)
+            # A parameter of a Story or Maneuver never changes: decided now.
+            holds = _compare_values(values[ref], self.value(c, "value", scope), rule)
             return lambda b: b.sb.TimeCondition(0) if holds else b.sb.NotCondition(b.sb.TimeCondition(0))
         if c.tag == "StoryboardElementStateCondition":
             kind = self.text(c, "storyboardElementType", scope)
@@ -837,6 +869,18 @@ def _compare_time(sb: Any, value: float, rule: str) -> Any:
     if rule == "equalTo":
         return sb.TimeCondition(value, value)
     return sb.NotCondition(sb.TimeCondition(value, value))
+
+
+def _as_stored(declared: Any, value: Any, what: str) -> Any:
+    """`value` as ScenarioParameters keeps a parameter declared as `declared`: text, or a number."""
+    if isinstance(declared, str):
+        return str(value)
+    if isinstance(declared, bool):
+        return 1.0 if str(value).lower() in ("true", "1") else 0.0
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise ScenarioError(f"{what}: '{value}' is not a number") from None
 
 
 def _compare_values(a: Any, b: Any, rule: str) -> bool:

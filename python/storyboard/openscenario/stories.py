@@ -54,7 +54,10 @@ def _trigger(trigger: Trigger, build: Build) -> list[list[tuple[str, Any, str, f
 def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.ScenarioMachine:
     scenario = read(Path(xosc), Network.read(Path(net)), _BoardParameters(board), binds)
     machine = sb.ScenarioMachine()
-    build = Build(sb, machine, {})
+    params = sb.ScenarioParameters()
+    for name, value in scenario.parameters.items():
+        params.declare(name, value)
+    build = Build(sb, machine, {}, params)
     elements = list(_walk(scenario.storyboard))
     # Indices first, so that a StoryboardElementStateCondition may name any element.
     for n, (e, _) in enumerate(elements):

@@ -9,9 +9,11 @@
 
 #include "StoryboardTestSupport.h"
 #include "sbsim/storyboard/ScenarioMachine.h"
+#include "sbsim/storyboard/ScenarioParameters.h"
 #include "sbsim/storyboard/conditions/ElementCondition.h"
 #include "sbsim/storyboard/conditions/ElementStateCondition.h"
 #include "sbsim/storyboard/conditions/EntityCondition.h"
+#include "sbsim/storyboard/conditions/ParameterCondition.h"
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 
 namespace sbsim::storyboard::test {
@@ -296,6 +298,45 @@ TEST_F(Machine, ElementConditionHoldsForTheActorsWhileTheElementRuns) {
     EXPECT_FALSE(forA.timeOnly());
     EXPECT_TRUE(world.timeOnly());
     EXPECT_EQ(forA.describe(), "ElementCondition(Event 'E', actors a; start (c rising))");
+}
+
+}  // namespace
+}  // namespace sbsim::storyboard::test
+
+namespace sbsim::storyboard::test {
+namespace {
+
+using R = ScenarioParameters::Rule;
+
+TEST(ScenarioParameters, SetModifyAndCompare) {
+    ScenarioParameters p;
+    p.declare("Count", 0.0);
+    p.declare("Mode", std::string("calm"));
+    p.modify("Count", 2, false);
+    p.modify("Count", 3, true);
+    EXPECT_EQ(std::get<double>(p.get("Count")), 6.0);
+    EXPECT_TRUE(p.compare("Count", R::greaterOrEqual, 6.0));
+    EXPECT_FALSE(p.compare("Count", R::greaterThan, 6.0));
+    p.set("Mode", std::string("storm"));
+    EXPECT_TRUE(p.compare("Mode", R::equalTo, std::string("storm")));
+    EXPECT_TRUE(p.compare("Mode", R::notEqualTo, 1.0)) << "a text is no number";
+    EXPECT_FALSE(p.compare("Mode", R::equalTo, 1.0));
+    EXPECT_THROW(p.set("Mode", 1.0), std::invalid_argument);
+    EXPECT_THROW(p.modify("Mode", 1, false), std::invalid_argument);
+    EXPECT_THROW(p.get("Nope"), std::out_of_range);
+}
+
+TEST(ParameterCondition, ReadsTheParameterAsItStandsNow) {
+    auto p = std::make_shared<ScenarioParameters>();
+    p->declare("Count", 0.0);
+    ParameterCondition three(p, "Count", R::greaterOrEqual, 3.0);
+    Scene scene{{car("a", 0)}};
+    EXPECT_FALSE(scene.test(three, "a"));
+    p->modify("Count", 3, false);
+    EXPECT_TRUE(scene.test(three, "a"));
+    EXPECT_TRUE(three.timeOnly());
+    EXPECT_EQ(three.describe(), "ParameterCondition(Count >= 3)");
+    EXPECT_THROW(ParameterCondition(p, "Nope", R::equalTo, 1.0), std::invalid_argument);
 }
 
 }  // namespace

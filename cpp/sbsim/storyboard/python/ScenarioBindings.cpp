@@ -2,9 +2,13 @@
 
 #include <map>
 #include <string>
+#include <variant>
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/ScenarioMachine.h"
+#include "sbsim/storyboard/ScenarioParameters.h"
+#include "sbsim/storyboard/conditions/ParameterCondition.h"
+#include "sbsim/storyboard/effects/ParameterEffect.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/Bindings.h"
 #include "sbsim/storyboard/python/ScriptContext.h"
@@ -59,9 +63,60 @@ M::Trigger toTrigger(const py::handle& groups, const char* what) {
     return trigger;
 }
 
+/// A parameter value from Python: bool, int or float as a number (true: 1), str as a text.
+ScenarioParameters::Value toValue(const py::handle& v, const char* what) {
+    if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+    if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? 1.0 : 0.0;
+    return toNumber(v, what);
+}
+
+const std::map<std::string, ScenarioParameters::Rule> rules{
+    {"greaterThan", ScenarioParameters::Rule::greaterThan},
+    {"lessThan", ScenarioParameters::Rule::lessThan},
+    {"equalTo", ScenarioParameters::Rule::equalTo},
+    {"greaterOrEqual", ScenarioParameters::Rule::greaterOrEqual},
+    {"lessOrEqual", ScenarioParameters::Rule::lessOrEqual},
+    {"notEqualTo", ScenarioParameters::Rule::notEqualTo}};
+const std::map<std::string, ParameterEffect::Op> ops{
+    {"set", ParameterEffect::Op::set}, {"add", ParameterEffect::Op::add}, {"multiply", ParameterEffect::Op::multiply}};
+
+py::object toPython(const ScenarioParameters::Value& v) {
+    if (const double* d = std::get_if<double>(&v)) return py::float_(*d);
+    return py::str(std::get<std::string>(v));
+}
+
 }  // namespace
 
 void bindScenario(py::module_& m) {
+    py::class_<ScenarioParameters, py::smart_holder>(m, "ScenarioParameters",
+                                                     "an OpenSCENARIO storyboard's global parameters while it runs")
+        .def(py::init<>())
+        .def(
+            "declare",
+            [](ScenarioParameters& self, const std::string& name, const py::object& value) {
+                self.declare(name, toValue(value, "ScenarioParameters value"));
+            },
+            py::arg("name"), py::arg("value"))
+        .def("__contains__", &ScenarioParameters::has)
+        .def(
+            "get", [](const ScenarioParameters& self, const std::string& name) { return toPython(self.get(name)); },
+            py::arg("name"));
+    py::class_<ParameterCondition, Condition, py::smart_holder>(m, "ParameterCondition")
+        .def(py::init([](std::shared_ptr<ScenarioParameters> parameters, const std::string& name,
+                         const std::string& rule, const py::object& value) {
+                 return std::make_shared<ParameterCondition>(std::move(parameters), name,
+                                                             named(rules, rule, "ParameterCondition rule"),
+                                                             toValue(value, "ParameterCondition value"));
+             }),
+             py::arg("parameters"), py::arg("name"), py::arg("rule"), py::arg("value"));
+    py::class_<ParameterEffect, WorldEffect, py::smart_holder>(m, "ParameterEffect")
+        .def(py::init([](std::shared_ptr<ScenarioParameters> parameters, const std::string& name, const std::string& op,
+                         const py::object& value) {
+                 return std::make_shared<ParameterEffect>(std::move(parameters), name,
+                                                          named(ops, op, "ParameterEffect op"),
+                                                          toValue(value, "ParameterEffect value"));
+             }),
+             py::arg("parameters"), py::arg("name"), py::arg("op"), py::arg("value"));
     py::class_<M, py::smart_holder>(
         m, "ScenarioMachine", "OpenSCENARIO's storyboard state machine; ElementCondition stories show its elements")
         .def(py::init([] {
