@@ -462,3 +462,10 @@ class ParameterEffect(WorldEffect):
     """Once, at activation: the parameter is set to `value`, or has it added or multiplied in."""
 
     def __init__(self, parameters: ScenarioParameters, name: str, op: str, value: float | str) -> None: ...
+
+class RemoveVehicleEffect(WorldEffect):
+    """Once, at activation: the vehicle leaves the simulation (OpenSCENARIO's DeleteEntityAction)."""
+
+    def __init__(self, id: str) -> None: ...
+    @property
+    def id(self) -> str: ...

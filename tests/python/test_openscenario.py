@@ -335,3 +335,18 @@ def test_parameters_change_in_the_run(road: Path, tmp_path: Path) -> None:
     assert starts(events, "S/A/Bump (world)") == [2.1, 2.3, 2.5, 2.7, 2.9]
     signals = [(e["t"], e["cause"]) for e in events if e["type"] == "signal"]
     assert signals == [(2.6, "three"), (4.2, "storm")], "a change is seen the step after"
+
+
+def test_delete_entity_takes_the_vehicle_out(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "step-speed.xosc")
+    delete = '<GlobalAction><EntityAction entityRef="Ego"><DeleteEntityAction/></EntityAction></GlobalAction>'
+    text = xosc.read_text()
+    slow = text[text.index("<PrivateAction>", text.index('<Action name="slow">')) : text.index("</Action>")]
+    xosc.write_text(text.replace(slow, delete))
+    # veh0 (bound.sumocfg's) keeps the run going once Ego is gone.
+    events, fcd = run_xosc(xosc, sumocfg=road / "bound.sumocfg")
+    assert starts(events, "S/A/Brake (world)") == [5.1]
+    assert max(fcd.speed["Ego"]) == 5.1, "removed in the step of 5.1 s: not in the FCD after"
+    left = [e for e in events if e["type"] == "deactivate" and e["vehicle"] == "Ego"]
+    assert [(e["t"], e["story"], e["reason"]) for e in left] == [(5.2, "Init/Ego", "vehicle_left")]
+    assert max(fcd.speed["veh0"]) == 12.1

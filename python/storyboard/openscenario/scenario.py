@@ -559,6 +559,10 @@ class Importer:
             return Action(name, False, f"SignalEffect('{cause}')", lambda b: b.sb.SignalEffect(cause))
         if kind.tag == "GlobalAction" and len(kind) == 1 and kind[0].tag == "ParameterAction":
             return self.read_parameter_action(kind[0], scope, name)
+        if kind.tag == "GlobalAction" and kind.find("EntityAction/DeleteEntityAction") is not None:
+            entity_action = kind.find("EntityAction")
+            sumo_id = self.sumo_id(self.text(entity_action, "entityRef", scope), entity_action)
+            return Action(name, True, f"RemoveVehicleEffect({sumo_id})", lambda b: b.sb.RemoveVehicleEffect(sumo_id))
         if kind.tag == "GlobalAction" and kind.find("EntityAction/AddEntityAction") is not None:
             entity_action = kind.find("EntityAction")
             entity = self.text(entity_action, "entityRef", scope)
