@@ -350,3 +350,18 @@ def test_delete_entity_takes_the_vehicle_out(road: Path, tmp_path: Path) -> None
     left = [e for e in events if e["type"] == "deactivate" and e["vehicle"] == "Ego"]
     assert [(e["t"], e["story"], e["reason"]) for e in left] == [(5.2, "Init/Ego", "vehicle_left")]
     assert max(fcd.speed["veh0"]) == 12.1
+
+
+def test_delay_skip_and_an_acts_stop_trigger(road: Path, tmp_path: Path) -> None:
+    events, _ = run_xosc(scenario(tmp_path, "timing.xosc"), sumocfg=road / "line.sumocfg")
+    signals = [(e["t"], e["cause"]) for e in events if e["type"] == "signal"]
+    assert signals == [
+        (3.1, "Late"),  # t > 1 first at 1.1, seen 2 s later
+        (4.1, "Busy"),
+        (4.2, "Polite"),  # skipped at 4.1 (Busy runs), starts as Busy ends
+        (4.3, "Busy"),
+        (4.4, "Polite"),
+        (4.5, "Busy"),
+    ], "the act's stop trigger (t > 4.5) ends both at 4.6"
+    (act_end,) = [e for e in events if e["type"] == "deactivate" and e["story"] == "S/A"]
+    assert act_end["t"] == 4.6
