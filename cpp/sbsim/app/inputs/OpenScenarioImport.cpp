@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "sbsim/app/cli/BadInput.h"
+#include "sbsim/app/run/Interruption.h"
 
 extern char** environ;
 
@@ -88,6 +89,7 @@ std::string runCapturing(const std::vector<std::string>& argv, const std::option
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
+    Interruption::checkpoint("while the scenario was imported");  // Ctrl-C reached the importer too
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         throw InputError(
             fmt::format("--scenario: the OpenSCENARIO importer ({} -m storyboard.openscenario) failed", argv[0]));
