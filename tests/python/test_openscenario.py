@@ -6,6 +6,7 @@ entity's speed changes by at most its maxAcceleration / maxDeceleration per seco
 from __future__ import annotations
 
 import json
+import os
 import re
 import shutil
 import subprocess
@@ -307,6 +308,38 @@ def test_an_event_raises_a_denm_through_a_custom_command(road: Path, tmp_path: P
     # Lead stops (20 m/s at 9 m/s2: in 2.3 s); Ego brakes for it by itself and stays behind.
     assert fcd.speed["Lead"][8.0] == 0.0
     assert fcd.pos["Ego"][15.0][0] < fcd.pos["Lead"][15.0][0] - 5
+    if keep := os.environ.get("SBSIM_XOSC_PICTURE"):
+        plot_emergency_brake(fcd, lines, Path(keep))
+
+
+def plot_emergency_brake(fcd: FcdTrace, messages: list[dict[str, Any]], out: Path) -> None:
+    """The README's figure: both speeds, the gap, and when the DENM went out and was heard."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (speed, gap) = plt.subplots(2, 1, sharex=True, figsize=(7, 4.5))
+    for vehicle in ("Ego", "Lead"):
+        times = sorted(fcd.speed[vehicle])
+        speed.plot(times, [fcd.speed[vehicle][t] for t in times], label=vehicle)
+    times = sorted(set(fcd.pos["Ego"]) & set(fcd.pos["Lead"]))
+    gap.plot(times, [fcd.pos["Lead"][t][0] - fcd.pos["Ego"][t][0] for t in times], color="grey")
+    tx = min(m["t"] for m in messages if m.get("type") == "DENM" and m["event"] == "tx")
+    rx = min(m["t"] for m in messages if m.get("type") == "DENM" and m["event"] == "rx" and m["station"] == "Ego")
+    cams = [m["t"] for m in messages if m.get("type") == "CAM" and m["event"] == "tx"]
+    for axis in (speed, gap):
+        axis.axvline(tx, color="red", linestyle="--", linewidth=1)
+    speed.text(tx + 0.2, 10, f"DENM: Lead sends at {tx:.3f} s,\nEgo hears at {rx:.3f} s", color="red")
+    speed.plot(cams, [0.5] * len(cams), "|", color="black", markersize=6, label="CAM sent")
+    speed.set_ylabel("speed (m/s)")
+    speed.legend(loc="center left")
+    gap.set_ylabel("gap Lead - Ego (m)")
+    gap.set_xlabel("time (s)")
+    fig.suptitle("emergency-brake.xosc: Lead brakes at t > 5 s and raises a DENM")
+    fig.tight_layout()
+    fig.savefig(out, dpi=100)
+    plt.close(fig)
 
 
 def test_road_positions_find_their_lane_from_the_opendrive_widths() -> None:
