@@ -23,6 +23,7 @@ PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
     bindCriteria(m);
     bindBoard(m);
     bindWorld(m);
+    bindScenario(m);
 }
 
 PYBIND11_EMBEDDED_MODULE(timeline, m) {
