@@ -59,6 +59,8 @@ void untilInterrupted(F phase) {
         phase();
     } catch (const storyboard::StoryError&) {
         if (!Interruption::requested()) throw;
+    } catch (const services::ServiceError&) {  // a Python service's KeyboardInterrupt likewise
+        if (!Interruption::requested()) throw;
     }
 }
 
