@@ -13,7 +13,7 @@ import pandas as pd
 import pytest
 from sbsim.messages import read_message_lines
 from sbsim.runner import RunResult, run
-from sbsim_helpers import SERVICES_SOURCE, assert_bad_input, assert_no_crash, write_story
+from sbsim_helpers import assert_bad_input, assert_no_crash, write_story
 
 BEACON = """
 from storyboard.services import Service
@@ -150,3 +150,147 @@ def test_python_and_cpp_services_see_the_same_calls(loops_cfg: Path, services_mo
     for vehicle, rows in cpp[cpp["name"] == "indicate"].groupby("vehicle"):
         got = batch[(batch["vehicle"] == vehicle) & (batch["name"] == "indicate")]
         assert list(got["value"]) == list(rows["value"])  # finish() hands over the last batch
+
+
+MISTAKES = """
+from storyboard.services import Service
+
+
+class Boom(Service):
+    def initialize(self) -> None:
+        self.triggers = 0
+
+    def trigger(self) -> None:
+        self.triggers += 1
+        if self.time > 5 and self.station_id == "veh03":
+            self.record_scalar("before", self.triggers)
+            print("printed before the error", flush=True)
+            1 / 0  # the user's bug
+
+
+class NotAService:
+    pass
+
+
+class WrongSignature(Service):
+    def indicate(self) -> None:
+        pass
+
+
+class Declared(Service):
+    attributes = {"limit": float}
+"""
+
+
+def test_an_exception_is_exit_2_naming_service_station_time_file_and_line(loops_cfg: Path, tmp_path: Path) -> None:
+    source = write(tmp_path, "mistakes.py", MISTAKES)
+    services = services_file(tmp_path, '<service type="CaService"/>', '<service type="python:mistakes.py:Boom"/>')
+    trace = tmp_path / "trace.jsonl"
+    result = run(loops_cfg, end=40.0, seed=7, extra=["--services", str(services), "--messages", str(trace)])
+    assert_no_crash(result)
+    assert result.returncode == 2, result.stderr
+    last = result.stderr.splitlines()[-1]
+    line = next(n for n, text in enumerate(source.read_text().splitlines(), 1) if "the user's bug" in text)
+    for needle in ("python:mistakes.py:Boom", "vehicle veh03", "at t=5.", f"{source}:{line}", "ZeroDivisionError"):
+        assert needle in last, (needle, last)
+    assert "Traceback" in result.stderr
+    # Nothing written is lost: what the service printed, and the trace so far (left .incomplete).
+    assert "printed before the error" in result.stdout
+    assert not trace.exists()
+    assert Path(str(trace) + ".incomplete").stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    ("entry", "needle"),
+    [
+        ('type="python:missing.py:Boom"', "no such file"),
+        ('type="python:mistakes.py:Nope"', "defines no class 'Nope'"),
+        ('type="python:mistakes.py:NotAService"', "not a class derived from storyboard.services.Service"),
+        ('type="python:mistakes.py:WrongSignature"', "WrongSignature.indicate must take"),
+        ('type="python:mistakes.py:Declared" speed="3"', "unknown attribute 'speed'"),
+        ('type="python:mistakes.py:Declared" limit="fast"', "attribute 'limit' must be a number"),
+        ('type="python:no_such_package.apps:Boom"', "cannot import module 'no_such_package.apps'"),
+    ],
+)
+@pytest.mark.parametrize("command", ["run", "check"])
+def test_mistakes_are_refused_before_the_run(
+    loops_cfg: Path, tmp_path: Path, entry: str, needle: str, command: str
+) -> None:
+    write(tmp_path, "mistakes.py", MISTAKES)
+    services = services_file(tmp_path, f"<service {entry}/>")
+    extra = ["check"] if command == "check" else []
+    result = run(loops_cfg, end=10.0, extra=[*extra, "--services", str(services)], timeout=120)
+    assert_bad_input(result, f"{services}:2:", needle)
+
+
+COMMANDS = """
+from storyboard.services import Service
+
+
+class Slow(Service):
+    \"\"\"Caps veh01 at 3 m/s from 20 s to 40 s and paints it, through the effect stack.\"\"\"
+
+    def trigger(self) -> None:
+        if self.station_id != "veh01":
+            return
+        if 20 <= self.time < 40:
+            self.set_max_speed(3.0)
+            self.set_color(255, 0, 0)
+        elif self.time >= 40:
+            self.end_max_speed()
+            self.end_color()
+        self.emit("speed", self.speed or 0.0)
+"""
+
+#: A story capping veh01 at 6 m/s from 10 s to 30 s: the latest cap rules, the service's until 40 s.
+CAP_STORY = """
+from storyboard import AndCondition, CarSetCondition, SpeedEffect, Story, TimeCondition
+
+def createStories(board):
+    board.registerStory(Story(AndCondition(TimeCondition(10, 30), CarSetCondition(["veh01"])), [SpeedEffect(6.0)]))
+"""
+
+
+def test_commands_compose_with_stories_and_are_restored(loops_cfg: Path, tmp_path: Path) -> None:
+    write(tmp_path, "commands.py", COMMANDS)
+    story = write_story(tmp_path, CAP_STORY)
+    services = services_file(tmp_path, '<service type="python:commands.py:Slow"/>')
+    stats = tmp_path / "stats.parquet"
+    run_ok(loops_cfg, "--services", str(services), "--statistics", str(stats), story=story, end=70.0)
+    speed = pd.read_parquet(stats).query("name == 'speed'").set_index("time")["value"]
+
+    def top(begin: float, end: float) -> float:
+        return float(speed[(speed.index > begin) & (speed.index <= end)].max())
+
+    assert top(2, 10) > 7.0  # free
+    assert top(13, 20) <= 6.0 + 1e-6  # the story's cap
+    assert top(23, 40) <= 3.0 + 1e-6  # the service's, the latest, outlives the story's end
+    assert top(48, 70) > 7.0  # both ended: the vehicle's own max speed is back
+
+
+def test_threads_do_not_change_the_trace_or_the_statistics(loops_cfg: Path, tmp_path: Path) -> None:
+    write(tmp_path, "beacon.py", BEACON)
+    write(tmp_path, "calls.py", CALL_LOG)
+    services = services_file(
+        tmp_path,
+        '<service type="CaService"/>',
+        '<service type="python:beacon.py:PyBeacon" interval="0.3"/>',
+        '<service type="python:calls.py:BatchLog"/>',
+    )
+    outputs = {}
+    for threads in ("1", "2"):
+        trace, stats = tmp_path / f"t{threads}.jsonl", tmp_path / f"t{threads}.parquet"
+        run_ok(
+            loops_cfg,
+            "--services",
+            str(services),
+            "--messages",
+            str(trace),
+            "--statistics",
+            str(stats),
+            "--threads",
+            threads,
+        )
+        outputs[threads] = (trace.read_bytes(), pd.read_parquet(stats))
+    assert outputs["1"][0] == outputs["2"][0]
+    assert outputs["1"][1].equals(outputs["2"][1])

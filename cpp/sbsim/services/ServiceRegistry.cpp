@@ -13,8 +13,15 @@ ServiceRegistry& ServiceRegistry::instance() {
     return registry;
 }
 
-void ServiceRegistry::add(const std::string& name, Factory factory) {
-    if (!factories_.emplace(name, std::move(factory)).second && !conflict_) conflict_ = name;
+void ServiceRegistry::add(const std::string& name, Factory factory) { add(name, std::move(factory), {}); }
+
+void ServiceRegistry::add(const std::string& name, Factory factory, ServiceTraits traits) {
+    if (!factories_.emplace(name, Entry{std::move(factory), traits}).second && !conflict_) conflict_ = name;
+}
+
+ServiceTraits ServiceRegistry::traits(const std::string& name) const {
+    const auto it = factories_.find(name);
+    return it == factories_.end() ? ServiceTraits{} : it->second.traits;
 }
 
 std::optional<std::string> ServiceRegistry::takeConflict() { return std::exchange(conflict_, std::nullopt); }
@@ -48,7 +55,7 @@ std::unique_ptr<Service> ServiceRegistry::create(const std::string& name) const 
         throw std::out_of_range("unknown service type '" + name + "' (known: " + (known.empty() ? "none" : known) +
                                 ")");
     }
-    return it->second();
+    return it->second.factory();
 }
 
 std::vector<std::string> ServiceRegistry::names() const {

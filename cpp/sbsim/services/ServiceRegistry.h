@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/services/ServiceTraits.h"
 
 namespace sbsim::services {
 
@@ -34,6 +35,8 @@ public:
     /// registration runs while a library loads, where an exception would abort the program, so
     /// the loader asks takeConflict() afterwards.
     void add(const std::string& name, Factory factory);
+    /// The same, with what the type provides.
+    void add(const std::string& name, Factory factory, ServiceTraits traits);
     /// The first name registered twice since the last call, if any.
     std::optional<std::string> takeConflict();
     /// Types starting with `prefix` are made by `resolver` (one per prefix; a second is a conflict).
@@ -48,11 +51,17 @@ public:
     /// check: a missing file or class, ServicesConfigError).
     void check(const ServiceSpec& spec) const;
     std::vector<std::string> names() const;
+    /// What type `name` provides (nothing for an unknown type).
+    ServiceTraits traits(const std::string& name) const;
 
 private:
     const Resolver* resolverOf(const std::string& type) const;
 
-    std::map<std::string, Factory> factories_;
+    struct Entry {
+        Factory factory;
+        ServiceTraits traits;
+    };
+    std::map<std::string, Entry> factories_;
     std::map<std::string, Resolver> resolvers_;
     std::optional<std::string> conflict_;
 };
@@ -62,7 +71,20 @@ struct SBSIM_API ServiceRegistration {
     ServiceRegistration(const std::string& name, ServiceRegistry::Factory factory) {
         ServiceRegistry::instance().add(name, std::move(factory));
     }
+    ServiceRegistration(const std::string& name, ServiceRegistry::Factory factory, ServiceTraits traits) {
+        ServiceRegistry::instance().add(name, std::move(factory), traits);
+    }
 };
+
+/// `Class::kProvides` if the class declares it, else nothing provided.
+template <class Class>
+constexpr ServiceTraits traitsOf() {
+    if constexpr (requires { Class::kProvides; }) {
+        return Class::kProvides;
+    } else {
+        return {};
+    }
+}
 }  // namespace detail
 
 }  // namespace sbsim::services
@@ -70,7 +92,7 @@ struct SBSIM_API ServiceRegistration {
 /// Registers service class `Class` under its own name (OMNeT++'s Define_Module).
 #define SBSIM_REGISTER_SERVICE(Class) SBSIM_REGISTER_SERVICE_AS(Class, #Class)
 /// Registers service class `Class` under `name`.
-#define SBSIM_REGISTER_SERVICE_AS(Class, name)                                                     \
-    static const ::sbsim::services::detail::ServiceRegistration sbsimServiceRegistration_##Class { \
-        name, [] { return std::make_unique<Class>(); }                                             \
+#define SBSIM_REGISTER_SERVICE_AS(Class, name)                                                       \
+    static const ::sbsim::services::detail::ServiceRegistration sbsimServiceRegistration_##Class {   \
+        name, [] { return std::make_unique<Class>(); }, ::sbsim::services::detail::traitsOf<Class>() \
     }

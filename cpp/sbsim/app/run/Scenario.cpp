@@ -91,16 +91,16 @@ void Scenario::requireStatisticsFile() {
     if (!python_) python_.emplace();
     try {
         parquet_.emplace();
-    } catch (const storyboard::StatisticsParquet::Unavailable& e) {
+    } catch (const python::StatisticsParquet::Unavailable& e) {
         throw UsageError(fmt::format("--statistics: {}", e.what()));
     }
 }
 
-std::unique_ptr<storyboard::ParquetStream> Scenario::parquetStream(const std::string& option, int fd) {
+std::unique_ptr<python::ParquetStream> Scenario::parquetStream(const std::string& option, int fd) {
     if (!python_) python_.emplace();
     try {
-        return std::make_unique<storyboard::ParquetStream>(fd);
-    } catch (const storyboard::ParquetStream::Unavailable& e) {
+        return std::make_unique<python::ParquetStream>(fd);
+    } catch (const python::ParquetStream::Unavailable& e) {
         throw UsageError(fmt::format("{}: {}", option, e.what()));
     }
 }
@@ -112,7 +112,7 @@ std::string Scenario::statisticsFile() const {
 
 std::vector<std::string> Scenario::abandonLingeringThreads() {
     if (!python_) return {};
-    return python_->abandonLingeringThreads(storyboard::PythonRuntime::kThreadGrace);
+    return python_->abandonLingeringThreads(python::PythonRuntime::kThreadGrace);
 }
 
 }  // namespace sbsim::app

@@ -3,9 +3,9 @@
 
 #include <pybind11/embed.h>
 
+#include "sbsim/python/SnapshotView.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/Bindings.h"
-#include "sbsim/storyboard/python/SnapshotView.h"
 
 namespace py = pybind11;
 
@@ -16,7 +16,7 @@ using kernel::SimTime;
 PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
     m.doc() = "sbsim's storyboard API (Artery's names, with Pythonic aliases).";
     bindTypes(m);
-    bindSnapshotView(m);
+    python::bindSnapshotView(m);
     bindVehicles(m);
     bindConditions(m);
     bindEffects(m);
