@@ -294,3 +294,64 @@ def test_threads_do_not_change_the_trace_or_the_statistics(loops_cfg: Path, tmp_
         outputs[threads] = (trace.read_bytes(), pd.read_parquet(stats))
     assert outputs["1"][0] == outputs["2"][0]
     assert outputs["1"][1].equals(outputs["2"][1])
+
+
+ROADSIDE = """
+from storyboard.services import Service
+
+
+class Announcer(Service):
+    \"\"\"On a roadside unit: sends a hazard with a payload every second; it has no vehicle to command.\"\"\"
+
+    def initialize(self):
+        assert self.is_roadside_unit and self.speed is None
+        self.sent = 0
+        self.schedule_after(1.0, self.announce)
+
+    def announce(self):
+        x, y = self.position
+        self.send("Hazard", 64, {"at": [x, y], "n": self.sent, "by": self.station_id})
+        self.sent += 1
+        self.schedule_after(1.0, self.announce)
+
+    def finish(self):
+        self.record_scalar("sent", self.sent)
+        try:
+            self.set_max_speed(3.0)
+        except RuntimeError as e:
+            self.record_scalar("refused" if "roadside unit" in str(e) else "other", 1)
+
+
+class Listener(Service):
+    def initialize(self):
+        self.heard = 0
+
+    def indicate(self, message):
+        if message.type != "Hazard":
+            return
+        payload = message.payload
+        assert payload["by"] == message.sender == "rsu0" and payload["at"] == (300.0, 300.0)
+        assert isinstance(payload["n"], int)
+        self.heard += 1
+
+    def finish(self):
+        self.record_scalar("hazards", self.heard)
+"""
+
+
+def test_a_roadside_units_python_service_sends_payloads_vehicles_read(loops_cfg: Path, tmp_path: Path) -> None:
+    write(tmp_path, "roadside.py", ROADSIDE)
+    services = services_file(
+        tmp_path,
+        '<service type="python:roadside.py:Listener"/>',
+        '<rsu id="rsu0" x="300" y="300"><service type="python:roadside.py:Announcer"/></rsu>',
+    )
+    trace, stats = tmp_path / "trace.jsonl", tmp_path / "stats.parquet"
+    run_ok(loops_cfg, "--services", str(services), "--messages", str(trace), "--statistics", str(stats))
+    table = pd.read_parquet(stats)
+    scalars = table.groupby("name")["value"].sum()
+    lines = read_message_lines(trace)
+    assert scalars["sent"] == sum(1 for line in lines if line["event"] == "tx" and line["type"] == "Hazard") > 30
+    assert scalars["refused"] == 1 and "other" not in scalars
+    # What the listeners heard is what the trace says they received.
+    assert scalars["hazards"] == sum(1 for line in lines if line["event"] == "rx" and line["type"] == "Hazard") > 0

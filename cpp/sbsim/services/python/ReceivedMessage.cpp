@@ -25,7 +25,19 @@ ReceivedMessage ReceivedMessage::of(const radio::V2xMessage& message, kernel::Si
     }
     out.payload = pybind11::none();
     if (type == typeid(facilities::Cam)) {
-        out.cam = static_cast<const facilities::Cam&>(message).content();
+        // All but the low-frequency container (its path history is a vector per CAM; Python sees none of it).
+        const facilities::CamContent& c = static_cast<const facilities::Cam&>(message).content();
+        out.cam.emplace();
+        out.cam->station = c.station;
+        out.cam->stationType = c.stationType;
+        out.cam->generationTime = c.generationTime;
+        out.cam->position = c.position;
+        out.cam->speed = c.speed;
+        out.cam->heading = c.heading;
+        out.cam->acceleration = c.acceleration;
+        out.cam->length = c.length;
+        out.cam->width = c.width;
+        out.cam->yawRate = c.yawRate;
     } else if (type == typeid(facilities::Denm)) {
         out.denm = static_cast<const facilities::Denm&>(message).content();
     }
