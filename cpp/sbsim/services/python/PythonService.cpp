@@ -82,8 +82,9 @@ void PythonService::initialize() {
 }
 
 void PythonService::flushBatch() {
-    if (!pending_ || pending_->messages.empty()) return;
+    if (!pending_ || pending_->size() == 0) return;
     std::shared_ptr<MessageBatch> batch = std::exchange(pending_, std::make_shared<MessageBatch>());
+    pending_->reserve(batch->size());
     call(batch_, "indicate_batch", py::cast(std::move(batch)));
 }
 
@@ -99,35 +100,35 @@ void PythonService::receiveSignal(const traffic::StoryboardSignal& signal) {
 
 void PythonService::indicate(const radio::V2xMessage& message) {
     last_ = nullptr;
-    lastView_ = py::object();
+    lastRecord_.reset();
+    const bool handlers = !cam_.is_none() || !denm_.is_none();
     if (pending_) {
-        pending_->messages.push_back(ReceivedMessage::of(message, simTime()));
-        if (cam_.is_none() && denm_.is_none()) return;
-        // on_cam / on_denm come right after: they read the batch's copy.
-        last_ = &message;
-        lastView_ = py::cast(std::shared_ptr<ReceivedMessage>(pending_, &pending_->messages.back()));
+        pending_->add(message, simTime());
+        if (!handlers) return;
+    } else if (indicate_.is_none() && !handlers) {
         return;
     }
-    if (indicate_.is_none() && cam_.is_none() && denm_.is_none()) return;
-    py::object view = py::cast(std::make_shared<ReceivedMessage>(ReceivedMessage::of(message, simTime())));
-    if (!cam_.is_none() || !denm_.is_none()) {
+    auto record = std::make_shared<ReceivedMessage>(ReceivedMessage::of(message, simTime()));
+    if (handlers) {
         last_ = &message;
-        lastView_ = view;
+        lastRecord_ = record;
     }
-    if (!indicate_.is_none()) call(indicate_, "indicate", std::move(view));
+    if (!pending_ && !indicate_.is_none()) call(indicate_, "indicate", py::cast(std::move(record)));
 }
 
 void PythonService::indicateCam(const facilities::Cam& cam) {
     if (cam_.is_none()) return;
-    // The middleware hands the message to indicate() first: its copy is last_'s.
-    if (last_ != &cam || !lastView_) throw std::logic_error("a CAM reached on_cam without indicate");
-    call(cam_, "on_cam", lastView_.attr("cam"));
+    // The middleware hands the message to indicate() first: its copy is lastRecord_.
+    if (last_ != &cam || !lastRecord_ || !lastRecord_->cam)
+        throw std::logic_error("a CAM reached on_cam without indicate");
+    call(cam_, "on_cam", py::cast(std::shared_ptr<facilities::CamContent>(lastRecord_, &*lastRecord_->cam)));
 }
 
 void PythonService::indicateDenm(const facilities::Denm& denm) {
     if (denm_.is_none()) return;
-    if (last_ != &denm || !lastView_) throw std::logic_error("a DENM reached on_denm without indicate");
-    call(denm_, "on_denm", lastView_.attr("denm"));
+    if (last_ != &denm || !lastRecord_ || !lastRecord_->denm)
+        throw std::logic_error("a DENM reached on_denm without indicate");
+    call(denm_, "on_denm", py::cast(lastRecord_->denm));
 }
 
 void PythonService::finish() {

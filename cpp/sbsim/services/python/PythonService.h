@@ -95,10 +95,10 @@ private:
     std::string typeName_;   // the class's name, for messages
     // The class's own methods (none: the base's, not called).
     pybind11::object initialize_, trigger_, signal_, indicate_, batch_, cam_, denm_, finish_;
-    std::shared_ptr<MessageBatch> pending_;       // batch mode: received since the last batch
-    const radio::V2xMessage* last_ = nullptr;     // the message indicate() handed over last
-    pybind11::object lastView_;                   // and its Python object, for on_cam / on_denm
-    std::vector<std::unique_ptr<Timer>> timers_;  // every timer made; idle ones are reused
+    std::shared_ptr<MessageBatch> pending_;        // batch mode: received since the last batch
+    const radio::V2xMessage* last_ = nullptr;      // the message indicate() took last
+    std::shared_ptr<ReceivedMessage> lastRecord_;  // and its copy, for on_cam / on_denm
+    std::vector<std::unique_ptr<Timer>> timers_;   // every timer made; idle ones are reused
     std::vector<Timer*> idleTimers_;
     std::unordered_map<std::uint64_t, Timer*> pendingTimers_;  // by handle
     std::uint64_t nextHandle_ = 1;

@@ -1,5 +1,7 @@
 #include "sbsim/services/python/ReceivedMessage.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <typeinfo>
 
@@ -39,29 +41,102 @@ ReceivedMessage ReceivedMessage::of(const radio::V2xMessage& message, kernel::Si
         out.cam->width = c.width;
         out.cam->yawRate = c.yawRate;
     } else if (type == typeid(facilities::Denm)) {
-        out.denm = static_cast<const facilities::Denm&>(message).content();
+        out.denm = std::make_shared<facilities::DenmContent>(static_cast<const facilities::Denm&>(message).content());
     }
     return out;
 }
 
-const MessageBatch::Columns& MessageBatch::columns() {
-    if (columns_) return *columns_;
-    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-    Columns c;
-    const std::size_t n = messages.size();
-    for (auto* column : {&c.receivedAt, &c.sentAt, &c.size, &c.camSpeed, &c.camHeading}) column->reserve(n);
-    c.camPosition.reserve(2 * n);
-    for (const ReceivedMessage& m : messages) {
-        c.receivedAt.push_back(m.receivedAt.seconds());
-        c.sentAt.push_back(m.sentAt.seconds());
-        c.size.push_back(static_cast<double>(m.size));
-        c.camPosition.push_back(m.cam ? m.cam->position.x() : kNone);
-        c.camPosition.push_back(m.cam ? m.cam->position.y() : kNone);
-        c.camSpeed.push_back(m.cam ? m.cam->speed : kNone);
-        c.camHeading.push_back(m.cam ? m.cam->heading : kNone);
+namespace {
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t kRest = 6;
+
+template <typename T>
+const T* sparse(const std::vector<std::pair<std::size_t, T>>& items, std::size_t i) {
+    const auto it =
+        std::lower_bound(items.begin(), items.end(), i, [](const auto& e, std::size_t k) { return e.first < k; });
+    return it != items.end() && it->first == i ? &it->second : nullptr;
+}
+}  // namespace
+
+void MessageBatch::reserve(std::size_t n) {
+    for (auto* c : {&receivedAt_, &sentAt_, &sizes_, &camSpeed_, &camHeading_}) c->reserve(n);
+    camPosition_.reserve(2 * n);
+    camRest_.reserve(kRest * n);
+    sequences_.reserve(n);
+    frameBytes_.reserve(n);
+    types_.reserve(n);
+    senders_.reserve(n);
+}
+
+void MessageBatch::add(const radio::V2xMessage& message, kernel::SimTime now) {
+    const std::size_t i = size();
+    receivedAt_.push_back(now.seconds());
+    sentAt_.push_back(message.sentAt().seconds());
+    sizes_.push_back(static_cast<double>(message.byteSize()));
+    sequences_.push_back(message.sequence());
+    frameBytes_.push_back(message.frameBytes());
+    const std::string_view type = message.typeName();
+    std::uint32_t t = 0;
+    while (t < typeNames_.size() && typeNames_[t] != type) ++t;
+    if (t == typeNames_.size()) typeNames_.emplace_back(type);
+    types_.push_back(t);
+    senders_.push_back(message.sender());
+    const std::type_info& dynamic = typeid(message);
+    if (dynamic == typeid(facilities::Cam)) {
+        const facilities::CamContent& c = static_cast<const facilities::Cam&>(message).content();
+        camPosition_.insert(camPosition_.end(), {c.position.x(), c.position.y()});
+        camSpeed_.push_back(c.speed);
+        camHeading_.push_back(c.heading);
+        camRest_.insert(camRest_.end(), {c.acceleration, c.length, c.width, c.yawRate, c.generationTime.seconds(),
+                                         static_cast<double>(c.stationType)});
+        return;
     }
-    columns_ = std::move(c);
-    return *columns_;
+    camPosition_.insert(camPosition_.end(), {kNone, kNone});
+    camSpeed_.push_back(kNone);
+    camHeading_.push_back(kNone);
+    camRest_.insert(camRest_.end(), kRest, kNone);
+    if (dynamic == typeid(PythonMessage)) {
+        payloads_.emplace_back(i, static_cast<const PythonMessage&>(message).payload());
+    } else if (dynamic == typeid(facilities::Denm)) {
+        denms_.emplace_back(
+            i, std::make_shared<facilities::DenmContent>(static_cast<const facilities::Denm&>(message).content()));
+    }
+}
+
+ReceivedMessage MessageBatch::at(std::size_t i) const {
+    ReceivedMessage out;
+    out.receivedAt = kernel::SimTime::fromSeconds(receivedAt_[i]);
+    out.type = typeNames_[types_[i]];
+    out.sender = senders_[i];
+    out.sentAt = kernel::SimTime::fromSeconds(sentAt_[i]);
+    out.sequence = sequences_[i];
+    out.size = static_cast<std::size_t>(sizes_[i]);
+    out.frameBytes = frameBytes_[i];
+    const pybind11::object* payload = sparse(payloads_, i);
+    out.payload = payload != nullptr ? *payload : pybind11::none();
+    if (const auto* denm = sparse(denms_, i)) out.denm = *denm;
+    if (!std::isnan(camPosition_[2 * i])) {
+        out.cam.emplace();
+        const double* rest = &camRest_[kRest * i];
+        out.cam->station = senders_[i];  // a CAM is its originator's, sent single-hop
+        out.cam->position = {camPosition_[2 * i], camPosition_[2 * i + 1]};
+        out.cam->speed = camSpeed_[i];
+        out.cam->heading = camHeading_[i];
+        out.cam->acceleration = rest[0];
+        out.cam->length = rest[1];
+        out.cam->width = rest[2];
+        out.cam->yawRate = rest[3];
+        out.cam->generationTime = kernel::SimTime::fromSeconds(rest[4]);
+        out.cam->stationType = static_cast<facilities::StationType>(static_cast<int>(rest[5]));
+    }
+    return out;
+}
+
+std::vector<std::string> MessageBatch::types() const {
+    std::vector<std::string> out;
+    out.reserve(types_.size());
+    for (const std::uint32_t t : types_) out.push_back(typeNames_[t]);
+    return out;
 }
 
 }  // namespace sbsim::services::python

@@ -108,9 +108,7 @@ py::object studyValue(const std::optional<kernel::StudyParameters::Value>& v) {
 std::shared_ptr<facilities::CamContent> camOf(const std::shared_ptr<ReceivedMessage>& m) {
     return m->cam ? std::shared_ptr<facilities::CamContent>(m, &*m->cam) : nullptr;
 }
-std::shared_ptr<facilities::DenmContent> denmOf(const std::shared_ptr<ReceivedMessage>& m) {
-    return m->denm ? std::shared_ptr<facilities::DenmContent>(m, &*m->denm) : nullptr;
-}
+std::shared_ptr<facilities::DenmContent> denmOf(const std::shared_ptr<ReceivedMessage>& m) { return m->denm; }
 
 void bindMessages(py::module_& m) {
     py::class_<facilities::CamContent, std::shared_ptr<facilities::CamContent>>(m, "Cam")
@@ -157,44 +155,28 @@ void bindMessages(py::module_& m) {
         .def("__repr__", [](const ReceivedMessage& r) { return "<Message " + r.type + " from " + r.sender + ">"; });
 
     py::class_<MessageBatch, std::shared_ptr<MessageBatch>>(m, "Messages")
-        .def("__len__", [](const MessageBatch& b) { return b.messages.size(); })
+        .def("__len__", &MessageBatch::size)
         .def("__getitem__",
-             [](const std::shared_ptr<MessageBatch>& b, py::ssize_t i) {
-                 const auto n = static_cast<py::ssize_t>(b->messages.size());
+             [](const MessageBatch& b, py::ssize_t i) {
+                 const auto n = static_cast<py::ssize_t>(b.size());
                  if (i < 0) i += n;
                  if (i < 0 || i >= n) throw py::index_error("message index out of range");
-                 return std::shared_ptr<ReceivedMessage>(b, &b->messages[static_cast<std::size_t>(i)]);
+                 return std::make_shared<ReceivedMessage>(b.at(static_cast<std::size_t>(i)));
              })
-        .def_property_readonly("types",
-                               [](const MessageBatch& b) {
-                                   std::vector<std::string> out;
-                                   out.reserve(b.messages.size());
-                                   for (const ReceivedMessage& r : b.messages) out.push_back(r.type);
-                                   return out;
-                               })
-        .def_property_readonly("senders",
-                               [](const MessageBatch& b) {
-                                   std::vector<std::string> out;
-                                   out.reserve(b.messages.size());
-                                   for (const ReceivedMessage& r : b.messages) out.push_back(r.sender);
-                                   return out;
-                               })
+        .def_property_readonly("types", &MessageBatch::types)
+        .def_property_readonly("senders", &MessageBatch::senders)
+        .def_property_readonly("received_at",
+                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->receivedAt(), 1); })
+        .def_property_readonly("sent_at",
+                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->sentAt(), 1); })
+        .def_property_readonly("sizes",
+                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->sizes(), 1); })
         .def_property_readonly(
-            "received_at",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().receivedAt, 1); })
+            "cam_positions", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->camPositions(), 2); })
+        .def_property_readonly("cam_speeds",
+                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->camSpeeds(), 1); })
         .def_property_readonly(
-            "sent_at", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().sentAt, 1); })
-        .def_property_readonly(
-            "sizes", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().size, 1); })
-        .def_property_readonly(
-            "cam_positions",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camPosition, 2); })
-        .def_property_readonly(
-            "cam_speeds",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camSpeed, 1); })
-        .def_property_readonly("cam_headings", [](const std::shared_ptr<MessageBatch>& b) {
-            return columnView(b, b->columns().camHeading, 1);
-        });
+            "cam_headings", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->camHeadings(), 1); });
 
     py::class_<traffic::StoryboardSignal, std::shared_ptr<traffic::StoryboardSignal>>(m, "Signal")
         .def_property_readonly("cause", [](const traffic::StoryboardSignal& s) { return s.cause; })
