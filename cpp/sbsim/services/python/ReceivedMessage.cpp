@@ -48,7 +48,6 @@ ReceivedMessage ReceivedMessage::of(const radio::V2xMessage& message, kernel::Si
 
 namespace {
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-constexpr std::size_t kRest = 6;
 
 template <typename T>
 const T* sparse(const std::vector<std::pair<std::size_t, T>>& items, std::size_t i) {
@@ -59,43 +58,40 @@ const T* sparse(const std::vector<std::pair<std::size_t, T>>& items, std::size_t
 }  // namespace
 
 void MessageBatch::reserve(std::size_t n) {
-    for (auto* c : {&receivedAt_, &sentAt_, &sizes_, &camSpeed_, &camHeading_}) c->reserve(n);
-    camPosition_.reserve(2 * n);
-    camRest_.reserve(kRest * n);
-    sequences_.reserve(n);
-    frameBytes_.reserve(n);
-    types_.reserve(n);
+    rows_.reserve(n);
     senders_.reserve(n);
 }
 
 void MessageBatch::add(const radio::V2xMessage& message, kernel::SimTime now) {
-    const std::size_t i = size();
-    receivedAt_.push_back(now.seconds());
-    sentAt_.push_back(message.sentAt().seconds());
-    sizes_.push_back(static_cast<double>(message.byteSize()));
-    sequences_.push_back(message.sequence());
-    frameBytes_.push_back(message.frameBytes());
+    const std::size_t i = rows_.size();
     const std::string_view type = message.typeName();
     std::uint32_t t = 0;
     while (t < typeNames_.size() && typeNames_[t] != type) ++t;
     if (t == typeNames_.size()) typeNames_.emplace_back(type);
-    types_.push_back(t);
+    Row& row = rows_.emplace_back();
+    row.receivedAt = now.seconds();
+    row.sentAt = message.sentAt().seconds();
+    row.sequence = message.sequence();
+    row.size = static_cast<std::uint32_t>(message.byteSize());
+    row.frameBytes = static_cast<std::uint32_t>(message.frameBytes());
+    row.type = t;
+    row.cam = false;
     senders_.push_back(message.sender());
     const std::type_info& dynamic = typeid(message);
     if (dynamic == typeid(facilities::Cam)) {
         const facilities::CamContent& c = static_cast<const facilities::Cam&>(message).content();
-        camPosition_.insert(camPosition_.end(), {c.position.x(), c.position.y()});
-        camSpeed_.push_back(c.speed);
-        camHeading_.push_back(c.heading);
-        camRest_.insert(camRest_.end(), {c.acceleration, c.length, c.width, c.yawRate, c.generationTime.seconds(),
-                                         static_cast<double>(c.stationType)});
-        return;
-    }
-    camPosition_.insert(camPosition_.end(), {kNone, kNone});
-    camSpeed_.push_back(kNone);
-    camHeading_.push_back(kNone);
-    camRest_.insert(camRest_.end(), kRest, kNone);
-    if (dynamic == typeid(PythonMessage)) {
+        row.cam = true;
+        row.stationType = static_cast<std::uint8_t>(c.stationType);
+        row.camValues[0] = c.position.x();
+        row.camValues[1] = c.position.y();
+        row.camValues[2] = c.speed;
+        row.camValues[3] = c.heading;
+        row.camValues[4] = c.acceleration;
+        row.camValues[5] = c.length;
+        row.camValues[6] = c.width;
+        row.camValues[7] = c.yawRate;
+        row.camValues[8] = c.generationTime.seconds();
+    } else if (dynamic == typeid(PythonMessage)) {
         payloads_.emplace_back(i, static_cast<const PythonMessage&>(message).payload());
     } else if (dynamic == typeid(facilities::Denm)) {
         denms_.emplace_back(
@@ -103,40 +99,59 @@ void MessageBatch::add(const radio::V2xMessage& message, kernel::SimTime now) {
     }
 }
 
+const MessageBatch::Columns& MessageBatch::columns() const {
+    if (columns_) return *columns_;
+    Columns& c = columns_.emplace();
+    const std::size_t n = rows_.size();
+    for (auto* column : {&c.receivedAt, &c.sentAt, &c.sizes, &c.camSpeeds, &c.camHeadings}) column->resize(n);
+    c.camPositions.resize(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Row& r = rows_[i];
+        c.receivedAt[i] = r.receivedAt;
+        c.sentAt[i] = r.sentAt;
+        c.sizes[i] = r.size;
+        c.camPositions[2 * i] = r.cam ? r.camValues[0] : kNone;
+        c.camPositions[2 * i + 1] = r.cam ? r.camValues[1] : kNone;
+        c.camSpeeds[i] = r.cam ? r.camValues[2] : kNone;
+        c.camHeadings[i] = r.cam ? r.camValues[3] : kNone;
+    }
+    return c;
+}
+
 ReceivedMessage MessageBatch::at(std::size_t i) const {
+    const Row& r = rows_[i];
     ReceivedMessage out;
-    out.receivedAt = kernel::SimTime::fromSeconds(receivedAt_[i]);
-    out.type = typeNames_[types_[i]];
+    out.receivedAt = kernel::SimTime::fromSeconds(r.receivedAt);
+    out.type = typeNames_[r.type];
     out.sender = senders_[i];
-    out.sentAt = kernel::SimTime::fromSeconds(sentAt_[i]);
-    out.sequence = sequences_[i];
-    out.size = static_cast<std::size_t>(sizes_[i]);
-    out.frameBytes = frameBytes_[i];
+    out.sentAt = kernel::SimTime::fromSeconds(r.sentAt);
+    out.sequence = r.sequence;
+    out.size = r.size;
+    out.frameBytes = r.frameBytes;
     const pybind11::object* payload = sparse(payloads_, i);
     out.payload = payload != nullptr ? *payload : pybind11::none();
     if (const auto* denm = sparse(denms_, i)) out.denm = *denm;
-    if (!std::isnan(camPosition_[2 * i])) {
-        out.cam.emplace();
-        const double* rest = &camRest_[kRest * i];
-        out.cam->station = senders_[i];  // a CAM is its originator's, sent single-hop
-        out.cam->position = {camPosition_[2 * i], camPosition_[2 * i + 1]};
-        out.cam->speed = camSpeed_[i];
-        out.cam->heading = camHeading_[i];
-        out.cam->acceleration = rest[0];
-        out.cam->length = rest[1];
-        out.cam->width = rest[2];
-        out.cam->yawRate = rest[3];
-        out.cam->generationTime = kernel::SimTime::fromSeconds(rest[4]);
-        out.cam->stationType = static_cast<facilities::StationType>(static_cast<int>(rest[5]));
+    if (r.cam) {
+        const double* v = r.camValues;
+        facilities::CamContent& cam = out.cam.emplace();
+        cam.station = senders_[i];  // a CAM is its originator's, sent single-hop
+        cam.stationType = static_cast<facilities::StationType>(r.stationType);
+        cam.position = {v[0], v[1]};
+        cam.speed = v[2];
+        cam.heading = v[3];
+        cam.acceleration = v[4];
+        cam.length = v[5];
+        cam.width = v[6];
+        cam.yawRate = v[7];
+        cam.generationTime = kernel::SimTime::fromSeconds(v[8]);
     }
     return out;
 }
 
 std::vector<std::string> MessageBatch::types() const {
     std::vector<std::string> out;
-    out.reserve(types_.size());
-    for (const std::uint32_t t : types_) out.push_back(typeNames_[t]);
+    out.reserve(rows_.size());
+    for (const Row& r : rows_) out.push_back(typeNames_[r.type]);
     return out;
 }
-
 }  // namespace sbsim::services::python

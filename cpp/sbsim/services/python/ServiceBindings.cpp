@@ -165,18 +165,22 @@ void bindMessages(py::module_& m) {
              })
         .def_property_readonly("types", &MessageBatch::types)
         .def_property_readonly("senders", &MessageBatch::senders)
-        .def_property_readonly("received_at",
-                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->receivedAt(), 1); })
-        .def_property_readonly("sent_at",
-                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->sentAt(), 1); })
-        .def_property_readonly("sizes",
-                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->sizes(), 1); })
         .def_property_readonly(
-            "cam_positions", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->camPositions(), 2); })
-        .def_property_readonly("cam_speeds",
-                               [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->camSpeeds(), 1); })
+            "received_at",
+            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().receivedAt, 1); })
         .def_property_readonly(
-            "cam_headings", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->camHeadings(), 1); });
+            "sent_at", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().sentAt, 1); })
+        .def_property_readonly(
+            "sizes", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().sizes, 1); })
+        .def_property_readonly(
+            "cam_positions",
+            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camPositions, 2); })
+        .def_property_readonly(
+            "cam_speeds",
+            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camSpeeds, 1); })
+        .def_property_readonly("cam_headings", [](const std::shared_ptr<MessageBatch>& b) {
+            return columnView(b, b->columns().camHeadings, 1);
+        });
 
     py::class_<traffic::StoryboardSignal, std::shared_ptr<traffic::StoryboardSignal>>(m, "Signal")
         .def_property_readonly("cause", [](const traffic::StoryboardSignal& s) { return s.cause; })
