@@ -13,6 +13,7 @@
 namespace sbsim::services {
 
 class Service;
+struct ServiceSpec;
 
 /// Service types by name, like OMNeT++'s module registry: a services file names a type, the
 /// registry makes an instance. Types register themselves with SBSIM_REGISTER_SERVICE next to the
@@ -20,6 +21,13 @@ class Service;
 class SBSIM_API ServiceRegistry {
 public:
     using Factory = std::function<std::unique_ptr<Service>()>;
+    /// Makes the services of a family of types named by a prefix (Artery-style "python:warner.py:Warner"),
+    /// which need their <service> entry (a file relative to the services file) to be found.
+    struct Resolver {
+        /// Throws ServicesConfigError naming the entry's file and line if the type cannot be made.
+        std::function<void(const ServiceSpec&)> check;
+        std::function<std::unique_ptr<Service>(const ServiceSpec&)> create;
+    };
 
     static ServiceRegistry& instance();
 
@@ -31,19 +39,30 @@ public:
     void add(const std::string& name, Factory factory, ServiceTraits traits);
     /// The first name registered twice since the last call, if any.
     std::optional<std::string> takeConflict();
-    bool contains(const std::string& name) const { return factories_.count(name) != 0; }
+    /// Types starting with `prefix` are made by `resolver` (one per prefix; a second is a conflict).
+    void addResolver(const std::string& prefix, Resolver resolver);
+    /// A registered type, or one a resolver's prefix names.
+    bool contains(const std::string& name) const { return factories_.count(name) != 0 || resolverOf(name); }
     /// Throws std::out_of_range naming the known types if `name` is unknown.
     std::unique_ptr<Service> create(const std::string& name) const;
+    /// The service of `spec`'s type: a resolver's for its prefix, else create(spec.type).
+    std::unique_ptr<Service> create(const ServiceSpec& spec) const;
+    /// Before the run: throws as create(spec) would for a type nobody can make (a resolver's
+    /// check: a missing file or class, ServicesConfigError).
+    void check(const ServiceSpec& spec) const;
     std::vector<std::string> names() const;
     /// What type `name` provides (nothing for an unknown type).
     ServiceTraits traits(const std::string& name) const;
 
 private:
+    const Resolver* resolverOf(const std::string& type) const;
+
     struct Entry {
         Factory factory;
         ServiceTraits traits;
     };
     std::map<std::string, Entry> factories_;
+    std::map<std::string, Resolver> resolvers_;
     std::optional<std::string> conflict_;
 };
 

@@ -60,6 +60,8 @@ void untilInterrupted(F phase) {
         phase();
     } catch (const storyboard::StoryError&) {
         if (!Interruption::requested()) throw;
+    } catch (const services::ServiceError&) {  // a Python service's KeyboardInterrupt likewise
+        if (!Interruption::requested()) throw;
     }
 }
 
@@ -223,8 +225,12 @@ int RunCommand::run(const CommandLine& cl) {
     }
 
     if (servicesConfig) {
-        scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval),
-                             penetration, messageTrace ? &*messageTrace : nullptr);
+        try {
+            scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval),
+                                 penetration, messageTrace ? &*messageTrace : nullptr);
+        } catch (const services::ServicesConfigError& e) {  // a Python service's file, class or attributes
+            throw InputError(fmt::format("--services: {}", e.what()));
+        }
         // Only when asked for: the default 0.1 s stays as it was, whatever the step length.
         if (cl.middlewareIntervalGiven && kernel::SimTime::fromSeconds(cl.middlewareInterval) < sumo.stepLength()) {
             fmt::print(

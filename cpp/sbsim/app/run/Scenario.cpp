@@ -4,6 +4,7 @@
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/run/RadioSetup.h"
+#include "sbsim/services/python/PythonServiceType.h"
 #include "sbsim/storyboard/CanvasFrame.h"
 #include "sbsim/traffic/EquippedView.h"
 #include "sbsim/traffic/NetworkController.h"
@@ -68,6 +69,8 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
 
 void Scenario::addServices(services::ServicesConfig config, kernel::SimTime interval,
                            const traffic::Penetration& penetration, radio::MessageTrace* trace) {
+    // Python services are imported and checked as the manager is made: the interpreter first.
+    if (services::python::usesPython(config) && !python_) python_.emplace();
     services_ = &sim_.emplaceModule<services::ServiceManager>(std::move(config), interval, sumo_.snapshot(), vehicles_);
     services_->setStatistics(statistics_);
     services::ServiceManager* manager = services_;
