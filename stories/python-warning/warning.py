@@ -1,72 +1,78 @@
-"""The python-warning scenario's V2X logic (see README.md): a roadside unit's hazard warning and the
-vehicles' reaction, as services written in Python (storyboard.services)."""
+"""The V2X logic of stories/python-warning, all in Python (storyboard.services).
+
+HazardBeacon runs on the roadside unit: it listens to the stories' signals, learns where the
+hazard is from the car that signals it, and broadcasts a HazardWarning every `interval` seconds
+until the hazard is cleared. WarnedDriver runs on every equipped vehicle: the first warning about a
+hazard ahead of it caps its speed at `slow` m/s and, with `keepClear`, moves it out of the hazard's
+lane; it passes the warning on once (up to `hops` hops from the unit), so the more vehicles are
+equipped the further upstream a warning travels. Each vehicle records how far ahead the hazard was
+when it was first warned (`warning_distance`, m) and how many hops the warning took (`warning_hops`).
+"""
 
 from __future__ import annotations
 
+from typing import ClassVar
+
 from storyboard.services import Message, Service, Signal
 
+WARNING = "HazardWarning"
+WARNING_BYTES = 100  # header, position, time and hop count: a small DENM's size
+LANE_WIDTH = 3.2  # SUMO's default lane width: a vehicle this close (laterally) is in the hazard's lane
 
-class HazardWarner(Service):
-    """On the roadside unit: learns the hazard from the storyboard's signal and broadcasts it every `interval` s."""
 
-    attributes = {"interval": float}
+class HazardBeacon(Service):
+    attributes: ClassVar = {"interval": float}
 
     def initialize(self) -> None:
-        self.interval = self.attribute("interval", 0.5)
-        self.hazard: tuple[float, float, int] | None = None
-        self.since = 0.0  # when the unit learned of it
-        self.sent = 0
-        self.listen_to_all_signals()  # the signal is the truck's, not the unit's
+        self.listen_to_all_signals()  # the hazard's signal goes to the crashed car, not to the unit
+        self.hazard: tuple[float, float] | None = None
+        self.timer: int | None = None
 
     def receive_signal(self, signal: Signal) -> None:
-        if signal.cause != "hazard" or signal.on_exit or self.hazard is not None:
-            return
-        snapshot = self.snapshot
-        row = snapshot.index_of(signal.ego)
-        if row is None:
-            return
-        x, y = snapshot.positions[row]
-        self.hazard = (float(x), float(y), 0)  # the truck stands on the right lane
-        self.since = self.time
-        self.announce()
+        if signal.cause == "hazard":
+            index = self.snapshot.index_of(signal.ego)
+            if index is None:
+                return
+            x, y = self.snapshot.positions[index]
+            self.hazard = (float(x), float(y))
+            self.broadcast()
+        elif signal.cause == "hazard cleared" and self.timer is not None:
+            self.cancel(self.timer)
+            self.hazard = self.timer = None
 
-    def announce(self) -> None:
+    def broadcast(self) -> None:
         assert self.hazard is not None
-        x, y, lane = self.hazard
-        self.send("HazardWarning", 96, {"x": x, "y": y, "lane": lane, "since": self.since})
-        self.sent += 1
-        self.schedule_after(self.interval, self.announce)
-
-    def finish(self) -> None:
-        self.record_scalar("warnings_sent", self.sent)
+        x, y = self.hazard
+        self.send(WARNING, WARNING_BYTES, {"x": x, "y": y, "hops": 1})
+        self.timer = self.schedule_after(self.attribute("interval", 0.5), self.broadcast)
 
 
-class HazardReaction(Service):
-    """On vehicles: warned ahead of the hazard, slow to `speed` m/s and leave its lane; record the distance."""
-
-    attributes = {"speed": float}
+class WarnedDriver(Service):
+    attributes: ClassVar = {"slow": float, "keepClear": bool, "hops": int}
 
     def initialize(self) -> None:
-        self.speed_limit = self.attribute("speed", 20.0)
-        self.warned = False
+        self.hazard: tuple[float, float] | None = None  # while it acts on a warning
 
     def indicate(self, message: Message) -> None:
-        if self.warned or message.type != "HazardWarning":
+        if message.type != WARNING or self.hazard is not None:
             return
-        hazard = message.payload
-        distance = self.driving_distance(hazard["x"], hazard["y"])
-        if distance is None or distance <= 0:
-            return  # passed it already
-        self.warned = True
-        self.record_scalar("warning_distance", distance)
-        self.record_scalar("warning_delay", self.time - hazard["since"])
-        self.set_max_speed(self.speed_limit)
-        self.set_color(255, 160, 0)
-        if self.lane_index == hazard["lane"]:
-            self.change_lane(hazard["lane"] + 1, 60.0)
+        warning = message.payload
+        ahead = self.driving_distance(warning["x"], warning["y"])
+        if ahead is None or ahead <= 0:
+            return  # behind it, or not on its route
+        self.hazard = (warning["x"], warning["y"])
+        self.record_scalar("warning_distance", ahead)
+        self.record_scalar("warning_hops", warning["hops"])
+        self.set_max_speed(self.attribute("slow", 20.0))
+        if self.attribute("keepClear", True) and abs(self.position[1] - warning["y"]) < LANE_WIDTH / 2:
+            self.change_lane_relative(1 if self.lane_index == 0 else -1, 10.0)
+        if warning["hops"] < self.attribute("hops", 3):
+            self.send(WARNING, WARNING_BYTES, {**warning, "hops": warning["hops"] + 1})
 
     def trigger(self) -> None:
-        # Past the hazard: back to the vehicle's own speed and colour.
-        if self.warned and self.position[0] > 1550.0:
+        if self.hazard is None:
+            return
+        ahead = self.driving_distance(*self.hazard)
+        if ahead is None or ahead < 0:  # past it: back to its own speed
             self.end_max_speed()
-            self.end_color()
+            self.hazard = None

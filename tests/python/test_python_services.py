@@ -357,29 +357,27 @@ def test_a_roadside_units_python_service_sends_payloads_vehicles_read(loops_cfg:
     assert scalars["hazards"] == sum(1 for line in lines if line["event"] == "rx" and line["type"] == "Hazard") > 0
 
 
-def test_the_python_warning_story_warns_more_vehicles_as_more_are_equipped(tmp_path: Path) -> None:
+def test_the_python_warning_story_warns_more_vehicles_and_further_as_more_are_equipped(tmp_path: Path) -> None:
     folder = Path(__file__).resolve().parents[2] / "stories" / "python-warning"
-    warned = {}
+    warned, furthest = {}, {}
     for penetration in ("0.25", "1"):
         stats = tmp_path / f"{penetration}.parquet"
         result = run(
-            folder / "python-warning.sumocfg",
+            folder / "warning.sumocfg",
             story=folder / "story.py",
-            extra=[
-                "--services",
-                str(folder / "services.xml"),
-                "--penetration",
-                penetration,
-                "--statistics",
-                str(stats),
-            ],
+            extra=["--services", str(folder / "services.xml"), "--penetration", penetration, "--statistics", str(stats)],
             timeout=300,
         )
         assert_no_crash(result)
         assert result.returncode == 0, result.stderr
         table = pd.read_parquet(stats)
         distances = table[table["name"] == "warning_distance"]
-        assert distances["equipped"].all()
-        assert ((distances["value"] > 0) & (distances["value"] <= 1500)).all()
+        hops = table[table["name"] == "warning_hops"]
+        assert distances["equipped"].all() and set(hops["value"]) <= {1, 2, 3}
+        # Ahead of the hazard (x = 1,490 m, the crash car's stop), never before the road's start.
+        assert ((distances["value"] > 0) & (distances["value"] < 1490)).all()
         warned[penetration] = distances["vehicle"].nunique()
+        furthest[penetration] = distances["value"].max()
     assert 0 < warned["0.25"] < warned["1"]
+    # The unit alone (500 m around x = 1,190 m) reaches 800 m before the hazard; relays carry it further.
+    assert furthest["1"] > 800
