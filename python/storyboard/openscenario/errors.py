@@ -11,6 +11,16 @@ class ScenarioError(Exception):
     """An .xosc sbsim cannot run: one line (several unsupported elements: one line, all listed)."""
 
 
+def read_xml(path: Path, what: str) -> Any:
+    """The root element of the XML file at `path` (lxml), or a ScenarioError: "{path}: cannot read {what}: ..."."""
+    from lxml import etree
+
+    try:
+        return etree.parse(str(path)).getroot()
+    except (OSError, etree.XMLSyntaxError) as e:
+        raise ScenarioError(f"{path}: cannot read {what}: {e}") from None
+
+
 def where(path: Path, element: Any) -> str:
     """`file:line: <Tag>` for an lxml element (its line, as lxml records it)."""
     tag = element.tag if isinstance(element.tag, str) else "comment"

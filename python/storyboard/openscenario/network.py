@@ -16,9 +16,7 @@ import subprocess
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from lxml import etree
-
-from .errors import ScenarioError
+from .errors import ScenarioError, read_xml
 
 
 @dataclass
@@ -43,10 +41,7 @@ class Network:
     @classmethod
     def read(cls, path: Path) -> Network:
         net = cls(path)
-        try:
-            root = etree.parse(str(path)).getroot()
-        except (OSError, etree.XMLSyntaxError) as e:
-            raise ScenarioError(f"{path}: cannot read the SUMO network: {e}") from None
+        root = read_xml(path, "the SUMO network")
         location = root.find("location")
         if location is not None and location.get("netOffset"):
             x, y = location.get("netOffset", "0,0").split(",")

@@ -6,17 +6,20 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from lxml import etree
+from .errors import ScenarioError, read_xml
 
-from .errors import ScenarioError
+
+def _last_at(records: Any, key: str, at: float) -> Any:
+    """Of records that start at their attribute `key`, the last one starting at or before `at` (or None)."""
+    chosen = None
+    for record in sorted(records, key=lambda r: float(r.get(key, "0"))):
+        if float(record.get(key, "0")) <= at + 1e-9:
+            chosen = record
+    return chosen
 
 
 def _width(lane: Any, ds: float) -> float:
-    records = sorted(lane.iterfind("width"), key=lambda w: float(w.get("sOffset", "0")))
-    chosen = None
-    for w in records:
-        if float(w.get("sOffset", "0")) <= ds + 1e-9:
-            chosen = w
+    chosen = _last_at(lane.iterfind("width"), "sOffset", ds)
     if chosen is None:
         return 0.0
     d = ds - float(chosen.get("sOffset", "0"))
@@ -26,21 +29,14 @@ def _width(lane: Any, ds: float) -> float:
 
 def lane_at(xodr: Path, road: str, s: float, t: float, what: str) -> int:
     """The OpenDRIVE lane id (negative: right of the reference line) holding offset `t` at `s`."""
-    try:
-        root = etree.parse(str(xodr)).getroot()
-    except (OSError, etree.XMLSyntaxError) as e:
-        raise ScenarioError(f"{what}: cannot read {xodr}: {e}") from None
+    root = read_xml(xodr, f"the OpenDRIVE file of {what}")
     element = next((r for r in root.iterfind("road") if r.get("id") == road), None)
     if element is None:
         raise ScenarioError(f"{what}: {xodr.name} has no road '{road}'")
     offsets = element.findall("lanes/laneOffset")
     if any(float(o.get(k, "0")) != 0 for o in offsets for k in ("a", "b", "c", "d")):
         raise ScenarioError(f"{what}: road '{road}' has a laneOffset, which RoadPosition does not follow")
-    sections = sorted(element.iterfind("lanes/laneSection"), key=lambda x: float(x.get("s", "0")))
-    section = None
-    for candidate in sections:
-        if float(candidate.get("s", "0")) <= s + 1e-9:
-            section = candidate
+    section = _last_at(element.iterfind("lanes/laneSection"), "s", s)
     if section is None:
         raise ScenarioError(f"{what}: road '{road}' has no lane section at s={s:g}")
     ds = s - float(section.get("s", "0"))

@@ -13,9 +13,7 @@ from pathlib import Path
 from typing import Any
 from xml.sax.saxutils import quoteattr
 
-from lxml import etree
-
-from .errors import ScenarioError
+from .errors import ScenarioError, read_xml
 from .network import Network, convert_opendrive
 from .scenario import Scenario, logic_file, read
 
@@ -27,10 +25,7 @@ def cache_dir(xosc: Path) -> Path:
 
 def sumocfg_inputs(sumocfg: Path) -> tuple[Path, list[Path]]:
     """The network and the additional files a SUMO configuration names (absolute)."""
-    try:
-        root = etree.parse(str(sumocfg)).getroot()
-    except (OSError, etree.XMLSyntaxError) as e:
-        raise ScenarioError(f"{sumocfg}: cannot read the SUMO configuration: {e}") from None
+    root = read_xml(sumocfg, "the SUMO configuration")
     net = root.find("input/net-file")
     if net is None or not net.get("value"):
         raise ScenarioError(f"{sumocfg}: names no net-file")
