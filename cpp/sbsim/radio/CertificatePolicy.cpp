@@ -53,4 +53,15 @@ void CertificatePolicy::heard(Index station, Index sender, SecurityProfile profi
     if (!wasKnown && profile == SecurityProfile::Cam) of(station, now).requested = true;
 }
 
+void CertificatePolicy::heardAll(std::span<const Index> stations, Index sender, SecurityProfile profile,
+                                 kernel::SimTime now) {
+    if (!secured_ || stations.empty()) return;
+    forgetOld(now);
+    if (sender >= heardBy_.size()) heardBy_.resize(sender + 1);
+    unknown_.clear();
+    heardBy_[sender].hearAll(stations, now, now - kForgetAfter, unknown_);
+    if (profile != SecurityProfile::Cam) return;
+    for (const Index station : unknown_) of(station, now).requested = true;
+}
+
 }  // namespace sbsim::radio

@@ -11,7 +11,7 @@ namespace {
 /// One frame's receptions at one time.
 struct FrameDelivery : kernel::Message {
     static constexpr int kKind = 0x7632'7801;
-    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::vector<Receiver*> r, std::vector<std::string> s,
+    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::vector<Receiver*> r, std::vector<Medium::StationIndex> s,
                   std::uint64_t changes)
         : kernel::Message("v2x frame", kKind),
           message(std::move(m)),
@@ -20,8 +20,8 @@ struct FrameDelivery : kernel::Message {
           moduleChanges(changes) {}
     std::shared_ptr<const V2xMessage> message;
     std::vector<Receiver*> receivers;
-    std::vector<std::string> stations;  // the receivers' names, should one leave meanwhile
-    std::uint64_t moduleChanges;        // the simulation's when the receivers were taken
+    std::vector<Medium::StationIndex> stations;  // the receivers', to find them should one leave meanwhile
+    std::uint64_t moduleChanges;                 // the simulation's when the receivers were taken
 };
 }  // namespace
 
@@ -35,7 +35,7 @@ Receiver* Medium::receivingSide(const std::string& stationId) const {
 }
 
 void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
-                          std::vector<std::string> stations, kernel::SimTime delay) {
+                          std::vector<StationIndex> stations, kernel::SimTime delay) {
     if (receivers.empty()) return;
     const std::uint64_t changes = simulation().moduleChanges();
     sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(receivers), std::move(stations), changes),
@@ -44,35 +44,29 @@ void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector
 
 void Medium::handleMessage(kernel::Message& msg) {
     if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
-    const auto& frame = static_cast<const FrameDelivery&>(msg);
-    Counts* counts = countsOf(*frame.message);  // one lookup per frame, not per reception
+    auto& frame = static_cast<FrameDelivery&>(msg);
     const V2xMessage& message = *frame.message;
-    const bool secured = certificates_.secured();
-    const SecurityProfile profile = message.securityProfile();
-    // The sender's index once per frame, each receiver's once per station (Receiver::mediumIndex_).
-    const CertificatePolicy::Index sender = secured ? certificates_.index(message.sender()) : 0;
-    if (simulation().moduleChanges() == frame.moduleChanges) {
-        for (std::size_t k = 0; k < frame.receivers.size(); ++k) {
-            if (counts != nullptr) ++counts->delivered;
-            if (secured)
-                certificates_.heard(certificateIndex(*frame.receivers[k], frame.stations[k]), sender, profile,
-                                    simTime());
-            frame.receivers[k]->receive(message);
+    if (simulation().moduleChanges() != frame.moduleChanges) {
+        // Some station joined or left since the frame was sent: its receivers found again by name.
+        std::size_t kept = 0;
+        for (std::size_t k = 0; k < frame.stations.size(); ++k) {
+            Receiver* receiver = receivingSide(certificates_.name(frame.stations[k]));
+            if (receiver == nullptr) continue;  // it left
+            frame.receivers[kept] = receiver;
+            frame.stations[kept] = frame.stations[k];
+            ++kept;
         }
-        return;
+        frame.receivers.resize(kept);
+        frame.stations.resize(kept);
     }
-    for (const std::string& station : frame.stations) {
-        Receiver* receiver = receivingSide(station);
-        if (receiver == nullptr) continue;  // it left
-        if (counts != nullptr) ++counts->delivered;
-        if (secured) certificates_.heard(certificateIndex(*receiver, station), sender, profile, simTime());
-        receiver->receive(message);
-    }
-}
-
-CertificatePolicy::Index Medium::certificateIndex(Receiver& receiver, const std::string& station) {
-    if (!receiver.mediumIndex_) receiver.mediumIndex_ = certificates_.index(station);
-    return *receiver.mediumIndex_;
+    if (Counts* counts = countsOf(message)) counts->delivered += frame.receivers.size();
+    // What each receiver heard is kept before any of them handles the message: the policy's
+    // answers for one station do not depend on the others', and a station's own sending (a
+    // forward while it receives) sees its reception recorded either way.
+    if (certificates_.secured())
+        certificates_.heardAll(frame.stations, certificates_.index(message.sender()), message.securityProfile(),
+                               simTime());
+    for (Receiver* receiver : frame.receivers) receiver->receive(message);
 }
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {

@@ -47,7 +47,11 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         receiverKnown_.clear();
         for (Neighbourhood& n : near_) n.known = false;
         near_.resize(snapshot_.ids().size());
+        stationIndices_.resize(snapshot_.ids().size());
+        for (std::size_t i = 0; i < stationIndices_.size(); ++i) stationIndices_[i] = stationIndex(snapshot_.ids()[i]);
     }
+    while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
+        fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));
     if (receiverKnown_.empty() || receiversChanges_ != simulation().moduleChanges()) {
         receiverKnown_.assign(snapshot_.ids().size(), 0);
         receivers_.assign(snapshot_.ids().size(), nullptr);
@@ -71,10 +75,10 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     // With a trace, stations out to the trace range are visited too (to report them out of range);
     // the draws stay those of the stations in range, in the same ascending order.
     std::vector<Receiver*> receivers;
-    std::vector<std::string> stations;
+    std::vector<StationIndex> stations;
     Counts* counts = countsOf(*shared);
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
-    const auto consider = [&](Receiver* receiver, const std::string& station, double distance) {
+    const auto consider = [&](Receiver* receiver, StationIndex index, const std::string& station, double distance) {
         if (receiver == nullptr) return;  // a vehicle without services
         const double p = receptionProbability(distance);
         std::optional<LossReason> loss;
@@ -100,7 +104,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
         if (!loss) {
             receivers.push_back(receiver);
-            stations.push_back(station);
+            stations.push_back(index);
         }
     };
     const auto vehicleReceiver = [&](traffic::VehicleSnapshot::Index other) {
@@ -123,16 +127,17 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
         for (std::size_t k = 0; k < near.others.size(); ++k) {
             const auto other = near.others[k];
-            consider(vehicleReceiver(other), snapshot_.ids()[other], near.distance[k]);
+            consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other], near.distance[k]);
         }
     } else {
         // A roadside unit sends about once a second: its neighbours are looked up afresh.
         for (const auto other : grid_.around(from.x(), from.y(), radius)) {
-            consider(vehicleReceiver(other), snapshot_.ids()[other], (positions.col(other) - from).norm());
+            consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other],
+                     (positions.col(other) - from).norm());
         }
     }
     fixed.forEachWithin(from, radius, fixedSelf, [&](FixedStations::Index k, double distance) {
-        consider(receivingSide(fixed.ids()[k]), fixed.ids()[k], distance);
+        consider(receivingSide(fixed.ids()[k]), fixedIndices_[k], fixed.ids()[k], distance);
     });
     deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
 }

@@ -38,6 +38,11 @@ private:
     /// module joins or leaves): null while unknown or not a station.
     std::vector<Receiver*> receivers_;
     std::vector<unsigned char> receiverKnown_;
+    /// Per snapshot index, the station's stationIndex(), interned in the snapshot's order when the
+    /// step's grid is built (so a frame's receivers come in ascending indices, as the certificate
+    /// policy's tables are sorted); per stationary station, the same.
+    std::vector<StationIndex> stationIndices_;
+    std::vector<StationIndex> fixedIndices_;
     std::uint64_t receiversChanges_ = 0;
     /// Per snapshot index, the stations within the visit radius and their distances, computed at
     /// the sender's first frame of a step and reused by its others (a beacon sends several).
