@@ -45,7 +45,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         grid_.build(snapshot_, settings_.range);
         gridTime_ = snapshot_.time();
         receiverKnown_.clear();
-        for (Neighbourhood& n : near_) n.known = false;
+        for (Neighbourhood& n : near_) n.known = n.receiversKnown = false;
         near_.resize(snapshot_.ids().size());
         stationIndices_.resize(snapshot_.ids().size());
         for (std::size_t i = 0; i < stationIndices_.size(); ++i) stationIndices_[i] = stationIndex(snapshot_.ids()[i]);
@@ -77,6 +77,8 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     std::vector<Receiver*> receivers;
     std::vector<StationIndex> stations;
     Counts* counts = countsOf(*shared);
+    // Every station in range receives, nothing traced: a frame takes its sender's receivers of the step.
+    const bool everyoneInRange = trace() == nullptr && !settings_.fadeStart;
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
     const auto consider = [&](Receiver* receiver, StationIndex index, const std::string& station, double distance) {
         if (receiver == nullptr) return;  // a vehicle without services
@@ -124,8 +126,24 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
                 near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
             near.known = true;
             near.radius = radius;
+            near.receiversKnown = false;
         }
-        for (std::size_t k = 0; k < near.others.size(); ++k) {
+        if (everyoneInRange) {
+            if (!near.receiversKnown || near.receiversChanges != receiversChanges_) takeReceivers(near);
+            receivers = near.receivers;
+            stations = near.stations;
+            if (counts != nullptr && !near.perBin.empty()) {
+                if (counts->linkStations.size() < near.perBin.size()) {
+                    counts->linkStations.resize(near.perBin.size());
+                    counts->linkReceptions.resize(near.perBin.size());
+                }
+                for (std::size_t b = 0; b < near.perBin.size(); ++b) {
+                    counts->linkStations[b] += near.perBin[b];
+                    counts->linkReceptions[b] += near.perBin[b];
+                }
+            }
+        }
+        for (std::size_t k = 0; !everyoneInRange && k < near.others.size(); ++k) {
             const auto other = near.others[k];
             consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other], near.distance[k]);
         }
@@ -140,6 +158,30 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         consider(receivingSide(fixed.ids()[k]), fixedIndices_[k], fixed.ids()[k], distance);
     });
     deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
+}
+
+void DiscMedium::takeReceivers(Neighbourhood& near) {
+    near.receivers.clear();
+    near.stations.clear();
+    near.perBin.clear();
+    for (std::size_t k = 0; k < near.others.size(); ++k) {
+        const auto other = near.others[k];
+        const double distance = near.distance[k];
+        if (distance > settings_.range) continue;
+        if (!receiverKnown_[other]) {
+            receivers_[other] = receivingSide(snapshot_.ids()[other]);
+            receiverKnown_[other] = 1;
+        }
+        if (receivers_[other] == nullptr) continue;  // a vehicle without services
+        near.receivers.push_back(receivers_[other]);
+        near.stations.push_back(stationIndices_[other]);
+        if (!(distance >= 0)) continue;  // as Medium::countLink
+        const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
+        if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
+        ++near.perBin[bin];
+    }
+    near.receiversKnown = true;
+    near.receiversChanges = receiversChanges_;
 }
 
 }  // namespace sbsim::radio

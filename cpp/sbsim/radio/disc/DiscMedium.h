@@ -51,7 +51,17 @@ private:
         double radius = 0;
         std::vector<traffic::NeighbourGrid::Index> others;
         std::vector<double> distance;
+        /// Without packet errors or a trace every station in range receives: the stations in
+        /// range (receivers, their indices, in the order above) and their count per distance bin,
+        /// taken once per step and module change, so a frame copies them instead of visiting each link.
+        bool receiversKnown = false;
+        std::uint64_t receiversChanges = 0;
+        std::vector<Receiver*> receivers;
+        std::vector<StationIndex> stations;
+        std::vector<std::uint64_t> perBin;
     };
+    /// `near`'s receivers in range, as of the current modules.
+    void takeReceivers(Neighbourhood& near);
     std::vector<Neighbourhood> near_;
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
 };
