@@ -33,10 +33,10 @@ std::size_t CertificatePolicy::remembered() const {
     return n;
 }
 
-SignerIdentifier CertificatePolicy::sign(std::string_view station, SecurityProfile profile, kernel::SimTime now) {
+SignerIdentifier CertificatePolicy::sign(Index station, SecurityProfile profile, kernel::SimTime now) {
     if (!secured_) return SignerIdentifier::None;
     if (profile != SecurityProfile::Cam) return SignerIdentifier::Certificate;
-    Station& s = of(index(station), now);
+    Station& s = of(station, now);
     if (s.nextCertificate && now < *s.nextCertificate && !s.requested) return SignerIdentifier::Digest;
     s.nextCertificate = now + kCertificateInterval;
     s.requested = false;

@@ -46,7 +46,10 @@ public:
     const std::string& name(Index station) const { return ids_.name(station); }
 
     /// How `station`'s message of `profile`, signed `now`, names its signer; records a certificate.
-    SignerIdentifier sign(std::string_view station, SecurityProfile profile, kernel::SimTime now);
+    SignerIdentifier sign(Index station, SecurityProfile profile, kernel::SimTime now);
+    SignerIdentifier sign(std::string_view station, SecurityProfile profile, kernel::SimTime now) {
+        return secured_ ? sign(index(station), profile, now) : SignerIdentifier::None;
+    }
     /// `station` received a message of `sender` at `now`.
     void heard(Index station, Index sender, SecurityProfile profile, kernel::SimTime now);
     /// Each of `stations` (distinct; fastest in ascending order) received one message of `sender`

@@ -64,20 +64,24 @@ void Medium::handleMessage(kernel::Message& msg) {
     // answers for one station do not depend on the others', and a station's own sending (a
     // forward while it receives) sees its reception recorded either way.
     if (certificates_.secured())
-        certificates_.heardAll(frame.stations, certificates_.index(message.sender()), message.securityProfile(),
-                               simTime());
+        certificates_.heardAll(frame.stations, message.senderIndex_, message.securityProfile(), simTime());
     for (Receiver* receiver : frame.receivers) receiver->receive(message);
 }
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {
+    // The sender's name is looked up once per frame: its sequence and certificate go by index.
+    const StationIndex index = stationIndex(sender);
     message.sender_ = sender;
+    message.senderIndex_ = index;
     message.sentAt_ = simTime();
-    message.sequence_ = sequences_[sender]++;
+    if (sequences_.size() <= index) sequences_.resize(index + 1, 0);
+    message.sequence_ = sequences_[index]++;
     const SecurityProfile profile = message.securityProfile();
     message.frameBytes_ = radio::frameBytes(message.byteSize(), message.gnTransport(), profile,
-                                            certificates_.sign(sender, profile, simTime()));
-    Counts& c = counts_[std::string(message.typeName())];
-    ++(message.geonet().hops() > 1 ? c.forwarded : c.sent);
+                                            certificates_.sign(index, profile, simTime()));
+    auto c = counts_.find(message.typeName());
+    if (c == counts_.end()) c = counts_.emplace(std::string(message.typeName()), Counts{}).first;
+    ++(message.geonet().hops() > 1 ? c->second.forwarded : c->second.sent);
 }
 
 Medium::Counts* Medium::countsOf(const V2xMessage& message) {

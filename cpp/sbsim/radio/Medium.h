@@ -7,7 +7,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
@@ -119,7 +118,7 @@ protected:
 private:
     Directory directory_;
     std::map<std::string, Counts, std::less<>> counts_;
-    std::unordered_map<std::string, std::uint64_t> sequences_;  // next per sender
+    std::vector<std::uint64_t> sequences_;  // next per sender, by station index
     MessageTrace* trace_ = nullptr;
     FixedStations fixed_;
     CertificatePolicy certificates_;
