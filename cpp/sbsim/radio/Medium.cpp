@@ -11,17 +11,15 @@ namespace {
 /// One frame's receptions at one time.
 struct FrameDelivery : kernel::Message {
     static constexpr int kKind = 0x7632'7801;
-    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::vector<Receiver*> r, std::vector<Medium::StationIndex> s,
+    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::shared_ptr<const Medium::Recipients> r,
                   std::uint64_t changes)
         : kernel::Message("v2x frame", kKind),
           message(std::move(m)),
-          receivers(std::move(r)),
-          stations(std::move(s)),
+          recipients(std::move(r)),
           moduleChanges(changes) {}
     std::shared_ptr<const V2xMessage> message;
-    std::vector<Receiver*> receivers;
-    std::vector<Medium::StationIndex> stations;  // the receivers', to find them should one leave meanwhile
-    std::uint64_t moduleChanges;                 // the simulation's when the receivers were taken
+    std::shared_ptr<const Medium::Recipients> recipients;  // its stations, to find them should one leave meanwhile
+    std::uint64_t moduleChanges;                           // the simulation's when the receivers were taken
 };
 }  // namespace
 
@@ -37,35 +35,40 @@ Receiver* Medium::receivingSide(const std::string& stationId) const {
 void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
                           std::vector<StationIndex> stations, kernel::SimTime delay) {
     if (receivers.empty()) return;
+    deliverLater(std::move(message),
+                 std::make_shared<const Recipients>(Recipients{std::move(receivers), std::move(stations)}), delay);
+}
+
+void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
+                          kernel::SimTime delay) {
+    if (recipients == nullptr || recipients->receivers.empty()) return;
     const std::uint64_t changes = simulation().moduleChanges();
-    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(receivers), std::move(stations), changes),
-               delay, *this);
+    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(recipients), changes), delay, *this);
 }
 
 void Medium::handleMessage(kernel::Message& msg) {
     if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
-    auto& frame = static_cast<FrameDelivery&>(msg);
+    const auto& frame = static_cast<const FrameDelivery&>(msg);
     const V2xMessage& message = *frame.message;
+    const Recipients* recipients = frame.recipients.get();
+    Recipients found;
     if (simulation().moduleChanges() != frame.moduleChanges) {
         // Some station joined or left since the frame was sent: its receivers found again by name.
-        std::size_t kept = 0;
-        for (std::size_t k = 0; k < frame.stations.size(); ++k) {
-            Receiver* receiver = receivingSide(certificates_.name(frame.stations[k]));
+        for (const StationIndex station : recipients->stations) {
+            Receiver* receiver = receivingSide(certificates_.name(station));
             if (receiver == nullptr) continue;  // it left
-            frame.receivers[kept] = receiver;
-            frame.stations[kept] = frame.stations[k];
-            ++kept;
+            found.receivers.push_back(receiver);
+            found.stations.push_back(station);
         }
-        frame.receivers.resize(kept);
-        frame.stations.resize(kept);
+        recipients = &found;
     }
-    if (Counts* counts = countsOf(message)) counts->delivered += frame.receivers.size();
+    if (Counts* counts = countsOf(message)) counts->delivered += recipients->receivers.size();
     // What each receiver heard is kept before any of them handles the message: the policy's
     // answers for one station do not depend on the others', and a station's own sending (a
     // forward while it receives) sees its reception recorded either way.
     if (certificates_.secured())
-        certificates_.heardAll(frame.stations, message.senderIndex_, message.securityProfile(), simTime());
-    for (Receiver* receiver : frame.receivers) receiver->receive(message);
+        certificates_.heardAll(recipients->stations, message.senderIndex_, message.securityProfile(), simTime());
+    for (Receiver* receiver : recipients->receivers) receiver->receive(message);
 }
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {

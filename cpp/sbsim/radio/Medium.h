@@ -47,6 +47,11 @@ public:
     static constexpr double kDistanceBin = 50;
     /// A station's index for the run (StationIds), as media hand receivers to deliverLater().
     using StationIndex = StationIds::Index;
+    /// A frame's receivers (their stationIndex() in `stations`), shareable by the frames of a step.
+    struct Recipients {
+        std::vector<Receiver*> receivers;
+        std::vector<StationIndex> stations;
+    };
     /// Channel busy ratio over every station's 100 ms samples.
     /// What the link budget did: links drawn in full, interference only (their mean power, no
     /// draw) and skipped below the floor, over the run (ChannelSettings::linkTiers).
@@ -114,6 +119,9 @@ protected:
     /// else the stations are looked up again by name.
     void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
                       std::vector<StationIndex> stations, kernel::SimTime delay);
+    /// The same with receivers a medium keeps (and may hand several frames) rather than copies.
+    void deliverLater(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
+                      kernel::SimTime delay);
 
 private:
     Directory directory_;

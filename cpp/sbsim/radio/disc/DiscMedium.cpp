@@ -81,6 +81,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     Counts* counts = countsOf(*shared);
     // Every station in range receives, nothing traced: a frame takes its sender's receivers of the step.
     const bool everyoneInRange = trace() == nullptr && !settings_.fadeStart;
+    std::shared_ptr<const Recipients> shareable;  // then the vehicles' receivers, as the step's
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
     const auto consider = [&](Receiver* receiver, StationIndex index, const std::string& station, double distance) {
         if (receiver == nullptr) return;  // a vehicle without services
@@ -132,8 +133,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
         if (everyoneInRange) {
             if (!near.receiversKnown || near.receiversChanges != receiversChanges_) takeReceivers(near);
-            receivers = near.receivers;
-            stations = near.stations;
+            shareable = near.recipients;
             if (counts != nullptr && !near.perBin.empty()) {
                 if (counts->linkStations.size() < near.perBin.size()) {
                     counts->linkStations.resize(near.perBin.size());
@@ -159,12 +159,22 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     fixed.forEachWithin(from, radius, fixedSelf, [&](FixedStations::Index k, double distance) {
         consider(receivingSide(fixed.ids()[k]), fixedIndices_[k], fixed.ids()[k], distance);
     });
+    if (shareable != nullptr) {
+        if (receivers.empty()) return deliverLater(shared, std::move(shareable), settings_.latency);
+        // Stationary stations in range: after the vehicles, in a list of the frame's own.
+        receivers.insert(receivers.begin(), shareable->receivers.begin(), shareable->receivers.end());
+        stations.insert(stations.begin(), shareable->stations.begin(), shareable->stations.end());
+    }
     deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
 }
 
 void DiscMedium::takeReceivers(Neighbourhood& near) {
-    near.receivers.clear();
-    near.stations.clear();
+    // Refilled in place unless a frame on the air still holds them.
+    if (near.recipients == nullptr || near.recipients.use_count() > 1) near.recipients = std::make_shared<Recipients>();
+    std::vector<Receiver*>& receivers = near.recipients->receivers;
+    std::vector<StationIndex>& stations = near.recipients->stations;
+    receivers.clear();
+    stations.clear();
     near.perBin.clear();
     for (std::size_t k = 0; k < near.others.size(); ++k) {
         const auto other = near.others[k];
@@ -175,8 +185,8 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
             receiverKnown_[other] = 1;
         }
         if (receivers_[other] == nullptr) continue;  // a vehicle without services
-        near.receivers.push_back(receivers_[other]);
-        near.stations.push_back(stationIndices_[other]);
+        receivers.push_back(receivers_[other]);
+        stations.push_back(stationIndices_[other]);
         if (!(distance >= 0)) continue;  // as Medium::countLink
         const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);

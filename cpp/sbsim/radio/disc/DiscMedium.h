@@ -56,8 +56,7 @@ private:
         /// taken once per step and module change, so a frame copies them instead of visiting each link.
         bool receiversKnown = false;
         std::uint64_t receiversChanges = 0;
-        std::vector<Receiver*> receivers;
-        std::vector<StationIndex> stations;
+        std::shared_ptr<Recipients> recipients;  // shared with the frames on the air
         std::vector<std::uint64_t> perBin;
     };
     /// `near`'s receivers in range, as of the current modules.
