@@ -228,7 +228,8 @@ CONDITIONS_STORY = """
         board.registerStory(sb.Story(sb.all_of(ego, sb.TraveledDistanceCondition(120)), [], "traveled"))
         behind = sb.RelativeDistanceCondition("lead", 1000, "greaterThan", "longitudinal", freespace=True)
         board.registerStory(sb.Story(sb.all_of(ego, behind), [], "behind"))
-        board.registerStory(sb.Story(sb.all_of(ego, sb.RelativeDistanceCondition("slow", 1195, "greaterThan")), [], "slow"))
+        apart = sb.RelativeDistanceCondition("slow", 1195, "greaterThan")
+        board.registerStory(sb.Story(sb.all_of(ego, apart), [], "slow"))
 """
 
 
@@ -250,3 +251,27 @@ def test_traveled_and_relative_distance_conditions_on_sumo_positions(road_cfg: P
     (event,) = run.of(type="activate", story="slow")
     assert event["t"] == pytest.approx(slow)
     assert event.get("others", ["slow"]) == ["slow"]
+
+
+def test_safe_gap_bounds_the_change_to_the_vehicles_acceleration(road_cfg: Path, tmp_path: Path) -> None:
+    exact = speeds_from(story_run(road_cfg, tmp_path, "[sb.SpeedChangeEffect(30.0)]"))
+    assert exact[0.1] == pytest.approx(30.0, abs=1e-3), "a step is a step"
+    safe = speeds_from(story_run(road_cfg, tmp_path / "safe", "[sb.SpeedChangeEffect(30.0, safe_gap=True)]"))
+    # SUMO's safe speed keeps to the vehicle's 4 m/s²: 0.4 m/s per 0.1 s step, 30 m/s after 4.5 s.
+    assert safe[0.1] == pytest.approx(12.4, abs=1e-3)
+    assert safe[2.0] == pytest.approx(20.0, abs=1e-3)
+    assert safe[4.5] == pytest.approx(30.0, abs=1e-3)
+
+
+def test_sumo_changes_lanes_again_after_a_lane_change_story(road_cfg: Path, tmp_path: Path) -> None:
+    source = f"""
+        import storyboard as sb
+        def createStories(board):
+            board.registerStory(sb.Story(sb.all_of(sb.CarSetCondition("ego"), sb.TimeCondition({START}, {START + 6})),
+                                         [sb.LaneChangeEffect(2, "linear", "time", 2.0)], "act"))
+    """
+    run = run_story(road_cfg, source, tmp_path, end=40, fcd=True)
+    y = lateral_from(run)
+    assert all(v == pytest.approx(LANE_Y[2], abs=1e-3) for t, v in y.items() if 2.0 <= t <= 6.0)
+    # Its own lane-change model again (keep right): it leaves the left lane afterwards.
+    assert min(v for t, v in y.items() if t > 6.0) < LANE_Y[1] + 1e-3
