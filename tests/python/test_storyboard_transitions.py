@@ -275,3 +275,30 @@ def test_sumo_changes_lanes_again_after_a_lane_change_story(road_cfg: Path, tmp_
     assert all(v == pytest.approx(LANE_Y[2], abs=1e-3) for t, v in y.items() if 2.0 <= t <= 6.0)
     # Its own lane-change model again (keep right): it leaves the left lane afterwards.
     assert min(v for t, v in y.items() if t > 6.0) < LANE_Y[1] + 1e-3
+
+
+@pytest.mark.parametrize(
+    ("call", "needle"),
+    [
+        ('sb.SpeedChangeEffect(20, "quadratic", "time", 4)', "shape must be 'step', 'linear', 'cubic' or 'sinusoidal'"),
+        ('sb.SpeedChangeEffect(20, "linear", "speed", 4)', "dimension must be 'time', 'distance' or 'rate'"),
+        ('sb.SpeedChangeEffect(20, "linear", "time", 0)', "must be > 0 for a 'linear' transition"),
+        ("sb.SpeedChangeEffect(-1)", "target speed >= 0"),
+        ('sb.SpeedChangeEffect(0.5, value_type="factor")', "need relative_to"),
+        ("sb.LaneChangeEffect(-1)", "lane index >= 0"),
+        ('sb.LaneChangeEffect(1, relative=True, relative_to="lead")', "not both"),
+        ('sb.LaneOffsetEffect(0.5, "cubic")', "duration=seconds or max_lateral_acc"),
+        ('sb.RelativeDistanceCondition("lead", 5, "<")', "rule must be 'lessThan'"),
+        ('sb.RelativeDistanceCondition("lead", 5, kind="vertical")', "kind must be 'longitudinal'"),
+        ("sb.TraveledDistanceCondition(-5)", "must be >= 0 m"),
+    ],
+)
+def test_bad_arguments_are_one_line_errors(road_cfg: Path, tmp_path: Path, call: str, needle: str) -> None:
+    source = f"""
+        import storyboard as sb
+        def createStories(board):
+            x = {call}
+    """
+    run = run_story(road_cfg, source, tmp_path, end=1, check=False)
+    assert run.returncode == 2
+    assert needle in run.result.stderr, run.result.stderr
