@@ -302,3 +302,19 @@ def test_bad_arguments_are_one_line_errors(road_cfg: Path, tmp_path: Path, call:
     run = run_story(road_cfg, source, tmp_path, end=1, check=False)
     assert run.returncode == 2
     assert needle in run.result.stderr, run.result.stderr
+
+
+def test_lane_change_to_another_vehicles_lane_over_a_distance(road_cfg: Path, tmp_path: Path) -> None:
+    run = story_run(road_cfg, tmp_path, '[sb.LaneChangeEffect(0, "linear", "distance", 40.0, relative_to="slow")]')
+    trace = fcd(run)
+    t0 = activation(run)
+    target = LANE_Y[int(trace.lane["slow"][t0].rsplit("_", 1)[1])]  # slow's lane when it activated
+    assert target != LANE_Y[0]
+    x = {round(t - t0, 3): p[0] for t, p in trace.pos["ego"].items() if t >= t0 - 1e-9}
+    y = lateral_from(run)
+    for t in sorted(y):
+        if t > 8.0:
+            break
+        share = min(1.0, (x[t] - x[0.0]) / 40.0)  # linear in the distance driven
+        assert y[t] == pytest.approx(LANE_Y[0] + (target - LANE_Y[0]) * share, abs=1e-3), t
+    assert y[round(40.0 / 12.0 + 0.05, 1)] == pytest.approx(target, abs=1e-3)  # 40 m at 12 m/s
