@@ -1,4 +1,5 @@
-# sbsim's layers: kernel ← traffic ← radio ← facilities ← {storyboard, services} ← app. Each layer is one library
+# sbsim's layers: kernel ← traffic ← radio ← facilities ← {storyboard, services} ← app, and traffic ← python
+# (the embedded interpreter, which the stories' and services' Python bindings link). Each layer is one library
 # target that links only the layers below it. Its sources include headers as
 # "sbsim/<layer>/Name.h", and a layer's include path holds only its own folder and, through the
 # layers it links, theirs: an include against the order names a header the compiler cannot find,

@@ -14,7 +14,7 @@ DEBIAN_PACKAGES=(cmake g++ ccache python3-dev libeigen3-dev libgtest-dev libtiny
 # Studies (python -m sbsim.study): Dask runs the sweep, pandas and pyarrow write the tables; reports
 # (python -m sbsim.report): sumolib reads the net and the FCD, at SUMO's own version.
 STUDY_DEPENDENCIES=("dask>=2024" "distributed>=2024" "pandas>=2" "pyarrow>=14" "tqdm>=4" "matplotlib>=3.7" "sumolib==1.28.*")
-PYTHON_DEPENDENCIES=(pip "scikit-build-core>=0.10" "pybind11>=2.12" "numpy>=1.24" "eclipse-sumo==1.28.*")
+PYTHON_DEPENDENCIES=(pip "scikit-build-core>=0.10" "pybind11>=2.12" "numpy>=1.24" "eclipse-sumo==1.28.*" "lxml>=5")
 export CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}"
 # A rebuild after a branch switch or in a fresh clone compiles only what changed: ccache, with paths
 # taken relative to the checkout so clones share the cache (CMake reads the launcher from the

@@ -69,6 +69,8 @@ def test_help_lists_the_options() -> None:
 OPTIONS: dict[str, tuple[str | None, str | None]] = {
     "--sumocfg": ("-c", None),
     "--story": (None, None),
+    "--scenario": (None, None),
+    "--bind": (None, None),
     "--end": (None, None),
     "--seed": (None, None),
     "--warmup": (None, "0"),

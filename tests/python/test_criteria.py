@@ -227,6 +227,22 @@ def test_warned_before_needs_a_den_service(tmp_path: Path) -> None:
     assert_bad_input(done, "no DEN service runs")
 
 
+def test_warned_before_counts_a_roadside_unit_as_the_den_service(tmp_path: Path) -> None:
+    # The registry says which services send DENMs: a unit at the crash announcing it, with the
+    # vehicles running only the CA service, fills their DENM memories, so the run is not refused.
+    services = tmp_path / "services.xml"
+    services.write_text(
+        '<services><service type="artery.application.CaService"/><rsu id="rsu0" x="1490" y="0">'
+        '<service type="RsuDenService" cause="2" from="40" until="160" area="2000"/></rsu></services>'
+    )
+    criterion = f"WarnedBefore({AT_THE_CRASH}, cause=2, seconds=0, since=40, until=160)"
+    entry = verdict_of(
+        MOTORWAY / "motorway.sumocfg", tmp_path / "rsu", criterion, ACCIDENT_STORY, None, ["--services", str(services)]
+    )
+    assert entry["passed"] and entry["actual"].startswith("0 of "), entry
+    assert int(entry["actual"].split()[2]) > 50, entry
+
+
 def test_story_activated(loops_cfg: Path, tmp_path: Path) -> None:
     when = "AndCondition(TimeCondition(10), CarSetCondition(['veh01', 'veh02']))"
     story = f"board.registerStory(Story({when}, [], name='two'))"

@@ -59,6 +59,8 @@ public:
     facilities::StationRegistry::Index stationIndex() const { return station_; }
     /// Makes this a stationary station (a roadside unit) at `position`.
     void setFixedPosition(const Eigen::Vector2d& position) { fixedPosition_ = position; }
+    /// Whether this is a stationary station (a roadside unit), which has no vehicle.
+    bool stationary() const { return fixedPosition_.has_value(); }
     /// This station's facilities (in the manager's station registry).
     facilities::StationFacilities& facilities() const;
 

@@ -24,6 +24,7 @@ const traffic::VehicleSnapshot& Service::snapshot() const { return hostOf(middle
 
 std::optional<traffic::VehicleSnapshot::Index> Service::selfIndex() const { return hostOf(middleware_).selfIndex(); }
 
+bool Service::roadsideUnit() const { return hostOf(middleware_).stationary(); }
 Eigen::Vector2d Service::position() const { return hostOf(middleware_).position(); }
 const facilities::StationFacilities& Service::facilities() const { return hostOf(middleware_).facilities(); }
 facilities::StationRegistry& Service::stations() const { return hostOf(middleware_).manager().stations(); }

@@ -68,6 +68,8 @@ protected:
     /// This vehicle's index in snapshot(), if it is running.
     std::optional<traffic::VehicleSnapshot::Index> selfIndex() const;
 
+    /// Whether the station is a roadside unit: it has no vehicle to ask or command.
+    bool roadsideUnit() const;
     /// Where the station is now (a vehicle: the current step's front bumper), SUMO network frame.
     Eigen::Vector2d position() const;
     /// What this station heard: its local dynamic map (CAMs) and DENM memory.

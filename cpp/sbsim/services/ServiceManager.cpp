@@ -21,10 +21,8 @@ ServiceManager::ServiceManager(ServicesConfig config, kernel::SimTime interval,
       snapshot_(snapshot),
       registry_(&registry) {
     if (interval_ <= kernel::SimTime::zero()) throw std::invalid_argument("the middleware interval must be > 0 s");
-    const auto check = [](const ServiceSpec& spec) {
-        // Fail before the run, naming the line, rather than at the first matching departure.
-        if (!ServiceRegistry::instance().contains(spec.type)) (void)ServiceRegistry::instance().create(spec.type);
-    };
+    // Fail before the run, naming the line, rather than at the first matching departure.
+    const auto check = [](const ServiceSpec& spec) { ServiceRegistry::instance().check(spec); };
     for (const ServiceSpec& spec : config_.services()) check(spec);
     for (const RoadsideUnitSpec& rsu : config_.roadsideUnits()) {
         for (const ServiceSpec& spec : rsu.services) check(spec);
@@ -82,7 +80,7 @@ void ServiceManager::makeRoadsideUnit(const RoadsideUnitSpec& spec, const std::s
     middlewares_[id] = &middleware;  // the medium finds a station's receiving side here
     if (medium_ != nullptr) medium_->addFixedStation(id, position);
     for (const ServiceSpec& serviceSpec : spec.services) {
-        std::unique_ptr<Service> service = ServiceRegistry::instance().create(serviceSpec.type);
+        std::unique_ptr<Service> service = ServiceRegistry::instance().create(serviceSpec);
         const auto* vehicleOnly = dynamic_cast<const NeedsVehicle*>(service.get());
         if (const std::string_view why = vehicleOnly ? vehicleOnly->whyVehicle() : ""; !why.empty()) {
             throw ServicesConfigError(fmt::format("{}:{}: {} cannot run on roadside unit '{}': {}", serviceSpec.source,
@@ -170,7 +168,7 @@ void ServiceManager::depart(const std::string& id) {
     auto& middleware = simulation().emplaceModule<Middleware>(*this, id);
     middlewares_[id] = &middleware;
     for (const ServiceSpec* spec : selected) {
-        std::unique_ptr<Service> service = ServiceRegistry::instance().create(spec->type);
+        std::unique_ptr<Service> service = ServiceRegistry::instance().create(*spec);
         // Hosted before it joins the simulation: initialize() may already use vehicle() or send().
         middleware.host(*service, *spec);
         simulation().addModule(std::move(service));

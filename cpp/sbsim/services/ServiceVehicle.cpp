@@ -18,11 +18,33 @@ void ServiceVehicle::setMaxSpeed(double mps) {
     replace(cap_, [&](traffic::EffectStack::Token token) { vehicle_->stack.pushSpeedCap(token, mps); });
 }
 
-void ServiceVehicle::endMaxSpeed() {
-    if (!cap_) return;
-    vehicle_->stack.remove(*cap_);
-    cap_.reset();
+void ServiceVehicle::end(std::optional<traffic::EffectStack::Token>& own) {
+    if (!own) return;
+    vehicle_->stack.remove(*own);
+    own.reset();
 }
+
+void ServiceVehicle::endMaxSpeed() { end(cap_); }
+
+void ServiceVehicle::stop() {
+    replace(hold_, [&](traffic::EffectStack::Token token) {
+        vehicle_->stack.pushHold(token, traffic::EffectStack::Hold::Stop);
+    });
+}
+
+void ServiceVehicle::endStop() { end(hold_); }
+
+void ServiceVehicle::holdSpeedFactor(double factor) {
+    replace(factor_, [&](traffic::EffectStack::Token token) { vehicle_->stack.pushSpeedFactor(token, factor); });
+}
+
+void ServiceVehicle::endSpeedFactor() { end(factor_); }
+
+void ServiceVehicle::holdColor(const traffic::Color& color) {
+    replace(color_, [&](traffic::EffectStack::Token token) { vehicle_->stack.pushColor(token, color); });
+}
+
+void ServiceVehicle::endColor() { end(color_); }
 
 void ServiceVehicle::changeTarget(const std::string& edge) {
     routeValue_.target = edge;

@@ -33,6 +33,16 @@ public:
     void setVia(const std::vector<std::string>& edges) override;
     /// Ends this service's route change: the one before it, or the vehicle's own destination, rules again.
     void endRoute();
+    /// This service's hold at standstill (a story's StopEffect's entry on the stack) and its end.
+    void stop();
+    void endStop();
+    /// This service's speed factor and colour as entries on the effect stack (the latest of all
+    /// rules; after endSpeedFactor() / endColor() the one before, or the vehicle's own, comes back),
+    /// unlike setSpeedFactor() and setColor(), which command SUMO directly.
+    void holdSpeedFactor(double factor);
+    void endSpeedFactor();
+    void holdColor(const traffic::Color& color);
+    void endColor();
 
     std::string typeId() const override { return controller().typeId(); }
     std::string roadId() const override { return controller().roadId(); }
@@ -69,12 +79,15 @@ private:
     /// so the vehicle's own value never shows in between).
     void replace(std::optional<traffic::EffectStack::Token>& own,
                  const std::function<void(traffic::EffectStack::Token)>& push);
+    /// Removes this service's entry `own` (if any) from the stack.
+    void end(std::optional<traffic::EffectStack::Token>& own);
 
     std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle_;
     traffic::VehicleRegistry& registry_;
     std::optional<traffic::EffectStack::Token> cap_;    // this service's cap on the stack
     std::optional<traffic::EffectStack::Token> route_;  // this service's route change on the stack
     traffic::EffectStack::Route routeValue_;            // what it asked for so far
+    std::optional<traffic::EffectStack::Token> hold_, factor_, color_;
 };
 
 }  // namespace sbsim::services

@@ -12,6 +12,7 @@
 #include <iterator>
 
 #include "sbsim/services/ServiceAttributes.h"
+#include "sbsim/services/ServiceRegistry.h"
 #include "sbsim/services/den/UseCaseFactory.h"
 
 namespace sbsim::services {
@@ -434,7 +435,7 @@ std::string readFile(const std::filesystem::path& path) {
     return text;
 }
 
-// A DenService's use cases: its `useCases` file (relative to the services file), else
+// The use cases of a service that runs them (a DenService): its `useCases` file (relative to the services file), else
 // den-use-cases.xml beside the services file, else none listed (all run).
 void attachUseCases(ServiceSpec& spec, std::vector<std::filesystem::path>& files) {
     const std::filesystem::path dir = std::filesystem::path(spec.source).parent_path();
@@ -475,7 +476,7 @@ std::vector<ServiceSpec> readServices(std::string_view text, const std::string& 
         for (const ServiceSpec& spec : rsu.services) checkAttributes(spec);
     }
     for (ServiceSpec& spec : out) {
-        if (spec.type == "DenService") attachUseCases(spec, files);
+        if (ServiceRegistry::instance().traits(spec.type).runsUseCases) attachUseCases(spec, files);
     }
     return out;
 }
@@ -549,6 +550,15 @@ ServicesConfig ServicesConfig::parse(std::string_view text, const std::string& s
 }
 
 ServicesConfig ServicesConfig::load(const std::filesystem::path& path) { return parse(readFile(path), path.string()); }
+
+std::vector<const ServiceSpec*> ServicesConfig::allServices() const {
+    std::vector<const ServiceSpec*> out;
+    for (const ServiceSpec& spec : services_) out.push_back(&spec);
+    for (const RoadsideUnitSpec& rsu : roadsideUnits_) {
+        for (const ServiceSpec& spec : rsu.services) out.push_back(&spec);
+    }
+    return out;
+}
 
 std::vector<const ServiceSpec*> ServicesConfig::matching(std::string_view vehicleId,
                                                          std::string_view vehicleType) const {

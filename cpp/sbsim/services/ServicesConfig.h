@@ -140,6 +140,8 @@ public:
     /// The files read besides the services file itself (DenService use-case files), each once: the
     /// run counts them as its inputs, so that no output may overwrite them.
     const std::vector<std::filesystem::path>& otherFiles() const { return otherFiles_; }
+    /// Every <service>: the vehicles' entries, then each roadside unit's.
+    std::vector<const ServiceSpec*> allServices() const;
     /// The services that run on this vehicle, in file order.
     std::vector<const ServiceSpec*> matching(std::string_view vehicleId, std::string_view vehicleType) const;
 

@@ -208,4 +208,15 @@ bool NetworkStack::steer(const std::string& vehicle, Phase phase) {
     return true;
 }
 
+bool NetworkStack::removeVehicle(const std::string& id) {
+    if (!network_->hasVehicle(id)) return false;
+    const bool departed = network_->hasDeparted(id);
+    network_->removeVehicle(id);
+    if (departed) {
+        const auto at = std::lower_bound(removedAfterInsertion_.begin(), removedAfterInsertion_.end(), id);
+        if (at == removedAfterInsertion_.end() || *at != id) removedAfterInsertion_.insert(at, id);
+    }
+    return true;
+}
+
 }  // namespace sbsim::storyboard

@@ -47,6 +47,10 @@ public:
     void pushSignalState(Token token, const std::string& tls, const std::string& state);
     /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
     void remove(Token token);
+    /// Removes vehicle `id` from the simulation now (a world effect's doing); one that had
+    /// departed joins removedAfterInsertion(), so the vehicle pass leaves it alone this step.
+    /// False if SUMO has no such vehicle (it left already).
+    bool removeVehicle(const std::string& id);
     /// Called once per step, before world stories act: while edges are closed, steers the vehicles
     /// SUMO loaded or inserted in the step (and those that left a closed edge since) around them.
     /// Throws traffic::SumoError for a vehicle inserted with a route broken for another reason

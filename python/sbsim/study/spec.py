@@ -105,6 +105,7 @@ class StudySpec:
     seeds: tuple[int, ...]
     parameters: dict[str, list[Value]] = field(default_factory=dict)
     story: Path | None = None
+    scenario: Path | None = None  # an OpenSCENARIO file (sbsim --scenario), its parameters swept as a story's
     services: Path | None = None
     radio: Path | None = None
     messages: bool = False
@@ -124,7 +125,19 @@ class StudySpec:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], base: Path = Path("."), source: str = "study") -> StudySpec:
-        known = {"sumocfg", "story", "services", "radio", "plugins", "seeds", "end", "args", "parameters", "outputs"}
+        known = {
+            "sumocfg",
+            "story",
+            "scenario",
+            "services",
+            "radio",
+            "plugins",
+            "seeds",
+            "end",
+            "args",
+            "parameters",
+            "outputs",
+        }
         for key in data:
             if key not in known:
                 raise StudyError(f"{source}: unknown key '{key}' (known: {', '.join(sorted(known))})")
@@ -211,6 +224,8 @@ class StudySpec:
             raise StudyError(f"{source}: 'plugins' must be a list of file names, e.g. [\"build/libmine.so\"]")
         if "sumocfg" in data and not isinstance(data["sumocfg"], str):
             raise StudyError(f"{source}: 'sumocfg' must be a file name")
+        if "story" in data and "scenario" in data:
+            raise StudyError(f"{source}: 'story' and 'scenario' both given; a run has one or the other")
         if "radio" in data and "services" not in data:
             raise StudyError(f"{source}: 'radio' needs 'services' (the radio carries the services' messages)")
         for name in parameters:
@@ -222,6 +237,7 @@ class StudySpec:
             seeds=tuple(seeds),
             parameters={k: list(v) for k, v in parameters.items()},
             story=file("story"),
+            scenario=file("scenario"),
             services=file("services"),
             radio=file("radio"),
             messages=messages,
@@ -243,6 +259,8 @@ class StudySpec:
         cmd += ["--summary", str(folder / "summary.json"), "--quiet"]
         if self.story is not None:
             cmd += ["--story", str(self.story)]
+        if self.scenario is not None:
+            cmd += ["--scenario", str(self.scenario)]
         if self.services is not None:
             cmd += ["--services", str(self.services)]
         if self.radio is not None:

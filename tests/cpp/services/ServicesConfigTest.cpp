@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "sbsim/services/ServiceRegistry.h"
+
 namespace sbsim::services {
 namespace {
 
@@ -662,6 +664,27 @@ TEST(ServiceAttributes, ContradictingAttributesAreRefused) {
     EXPECT_EQ(
         errorOf("<services>\n<service type=\"CaService\" minInterval=\"0.5\" maxInterval=\"0.5\"/>\n</services>\n"),
         "no error");
+}
+
+}  // namespace
+}  // namespace sbsim::services
+
+namespace sbsim::services {
+namespace {
+
+// Services say what they provide: the run asks the registry, not the type's name.
+TEST(ServiceRegistry, TypesSayWhatTheyProvide) {
+    const ServiceRegistry& registry = ServiceRegistry::instance();
+    const ServiceTraits den = registry.traits("DenService");
+    EXPECT_TRUE(den.sendsDenms);
+    EXPECT_TRUE(den.runsUseCases);
+    const ServiceTraits unit = registry.traits("RsuDenService");
+    EXPECT_TRUE(unit.sendsDenms);
+    EXPECT_FALSE(unit.runsUseCases);  // not inherited from DenService: the unit says its own
+    const ServiceTraits ca = registry.traits("CaService");
+    EXPECT_FALSE(ca.sendsDenms);
+    EXPECT_FALSE(ca.runsUseCases);
+    EXPECT_FALSE(registry.traits("NoSuchService").sendsDenms);
 }
 
 }  // namespace

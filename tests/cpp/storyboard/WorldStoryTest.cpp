@@ -28,6 +28,7 @@
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/effects/CloseRoadEffect.h"
+#include "sbsim/storyboard/effects/RemoveVehicleEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
 #include "sbsim/traffic/SumoBridge.h"
@@ -351,6 +352,24 @@ TEST_F(WorldStoryTest, ASpawnDuringAClosureIsCheckedAsSumoChecksWithNoEdgeClosed
     EXPECT_TRUE(network->cars.contains("v"));
     EXPECT_EQ(network->log.end()[-3], "checks on") << "SUMO checks the new vehicle's route";
     EXPECT_EQ(network->log.end()[-1], "checks off") << "and the closure has them off again";
+}
+
+TEST_F(WorldStoryTest, RemoveVehicleTakesTheVehicleOutOnceAndTheVehiclePassLeavesItAlone) {
+    network->cars["v"] = {{"a", "b"}, 0};
+    network->cars["w"] = {{"a", "b"}, -1};
+    board.registerStory(world(window(2, 5),
+                              {std::make_shared<RemoveVehicleEffect>("v"), std::make_shared<RemoveVehicleEffect>("w"),
+                               std::make_shared<RemoveVehicleEffect>("gone")},
+                              "delete"));
+    step(1);
+    EXPECT_TRUE(network->cars.contains("v"));
+    step(2);
+    EXPECT_FALSE(network->cars.contains("v"));
+    EXPECT_FALSE(network->cars.contains("w")) << "one waiting to depart too";
+    EXPECT_EQ(board.network().removedAfterInsertion(), (std::vector<std::string>{"v"})) << "w never ran";
+    EXPECT_EQ(std::count(network->log.begin(), network->log.end(), "remove v"), 1);
+    EXPECT_EQ(RemoveVehicleEffect("v").describe(), "RemoveVehicleEffect('v')");
+    EXPECT_THROW(RemoveVehicleEffect(""), std::invalid_argument);
 }
 
 TEST_F(WorldStoryTest, UnknownEdgeIsAStoryErrorNamingStoryEffectAndTime) {

@@ -117,6 +117,16 @@ void CommandLine::declareOptions(CLI::App& app) {
         ->type_name("FILE");
     auto* storyOption =
         app.add_option("--story", story, "storyboard script defining createStories(board)")->type_name("FILE.py");
+    app.add_option("--scenario", scenario,
+                   "an OpenSCENARIO 1.x file run as stories (network: --sumocfg's, or\n"
+                   "its OpenDRIVE RoadNetwork converted by netconvert)")
+        ->type_name("FILE.xosc")
+        ->excludes(storyOption);
+    app.add_option("--bind", binds,
+                   "with --scenario: the SUMO vehicle VEHICLE plays the scenario's entity\n"
+                   "ENTITY (its Init position is where SUMO has it); repeatable")
+        ->type_name("ENTITY=VEHICLE")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     app.add_option("--end", end,
                    "stop after the step reaching this time (default: the sumocfg's\n"
                    "end; the run also ends when SUMO expects no more vehicles)")

@@ -27,6 +27,8 @@ struct CommandLine {
 
     std::optional<std::filesystem::path> sumocfg;  ///< none: the bundled default scenario
     std::optional<std::filesystem::path> story;
+    std::optional<std::filesystem::path> scenario;  ///< an OpenSCENARIO file, run as stories
+    std::vector<std::string> binds;                 ///< ENTITY=VEHICLE: a SUMO vehicle plays the entity
     std::optional<std::filesystem::path> events;
     std::optional<std::filesystem::path> summary;     ///< the summary as JSON
     std::optional<std::filesystem::path> statistics;  ///< what services and stories recorded, as Parquet

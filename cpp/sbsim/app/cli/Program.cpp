@@ -11,6 +11,7 @@
 #include "sbsim/app/cli/CommandLine.h"
 #include "sbsim/app/cli/HelpFormatter.h"
 #include "sbsim/app/cli/Subcommands.h"
+#include "sbsim/app/inputs/OpenScenarioImport.h"
 #include "sbsim/app/inputs/ProjData.h"
 #include "sbsim/app/run/Interruption.h"
 #include "sbsim/kernel/OneLine.h"
@@ -110,6 +111,11 @@ int parseAndRun(const std::vector<std::string>& args) {
         throw UsageError(e.what());
     }
     options.complete(std::move(words.sumo));
+    if (options.scenario) {
+        importOpenScenario(options);
+    } else if (!options.binds.empty()) {
+        throw UsageError("--bind: it names a scenario's entity; give --scenario too");
+    }
 
     for (const std::unique_ptr<Subcommand>& subcommand : subcommands) {
         if (app.got_subcommand(subcommand->name())) return subcommand->run(options);

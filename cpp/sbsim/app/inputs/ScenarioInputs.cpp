@@ -62,12 +62,7 @@ services::ServicesConfig loadServicesConfig(const fs::path& path, FileLedger& fi
     const services::ServiceRegistry& registry = services::ServiceRegistry::instance();
     // Every <service>, a vehicle's or a roadside unit's: a type the registry lacks is bad input now,
     // not a failure when the first station starts.
-    std::vector<const services::ServiceSpec*> specs;
-    for (const services::ServiceSpec& spec : config->services()) specs.push_back(&spec);
-    for (const services::RoadsideUnitSpec& rsu : config->roadsideUnits()) {
-        for (const services::ServiceSpec& spec : rsu.services) specs.push_back(&spec);
-    }
-    for (const services::ServiceSpec* spec : specs) {
+    for (const services::ServiceSpec* spec : config->allServices()) {
         if (registry.contains(spec->type)) continue;
         throw InputError(fmt::format("--services: {}:{}: unknown service type '{}' (known: {})", path.string(),
                                      spec->line, spec->type, fmt::join(registry.names(), ", ")));

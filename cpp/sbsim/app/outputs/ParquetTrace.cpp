@@ -43,7 +43,7 @@ enum Fixed : std::size_t {
 constexpr std::size_t kBudgetEvery = 256;
 }  // namespace
 
-ParquetTrace::ParquetTrace(std::unique_ptr<storyboard::ParquetStream> stream, std::string what)
+ParquetTrace::ParquetTrace(std::unique_ptr<python::ParquetStream> stream, std::string what)
     : stream_(std::move(stream)), what_(std::move(what)) {
     const std::pair<const char*, Type> fixed[] = {
         {"t", Type::Float64},        {"event", Type::String},      {"type", Type::String},
@@ -178,7 +178,7 @@ void ParquetTrace::flush() {
         const std::uint64_t before = fileBytes_;
         fileBytes_ = stream_->writeRowGroup(columns_);
         lastGroupBytes_ = fileBytes_ - before;
-    } catch (const storyboard::ParquetStream::WriteError& e) {
+    } catch (const python::ParquetStream::WriteError& e) {
         throw OutputError(what_ + ": " + e.what());
     }
     ++groups_;
@@ -193,7 +193,7 @@ void ParquetTrace::finish() {
     if (rows_ > 0 || groups_ == 0) flush();
     try {
         fileBytes_ = stream_->close();
-    } catch (const storyboard::ParquetStream::WriteError& e) {
+    } catch (const python::ParquetStream::WriteError& e) {
         throw OutputError(what_ + ": " + e.what());
     }
 }

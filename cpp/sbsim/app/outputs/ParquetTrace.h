@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "sbsim/app/outputs/TraceWriter.h"
-#include "sbsim/storyboard/python/ParquetStream.h"
+#include "sbsim/python/ParquetStream.h"
 
 namespace sbsim::app {
 
@@ -26,23 +26,23 @@ public:
     static constexpr std::size_t kRowsPerGroup = 65536;
 
     /// `what` starts error messages ("--messages: cannot write 'x.parquet'").
-    ParquetTrace(std::unique_ptr<storyboard::ParquetStream> stream, std::string what);
+    ParquetTrace(std::unique_ptr<python::ParquetStream> stream, std::string what);
     bool write(const TraceRecord& line, std::uint64_t budget) override;
     std::uint64_t bytes() const override { return fileBytes_; }
     void finish() override;
     std::string_view format() const override { return "parquet"; }
 
 private:
-    using Type = storyboard::ParquetColumn::Type;
+    using Type = python::ParquetColumn::Type;
     std::size_t column(const std::string& name, Type type);
     void append(const TraceRecord& line);
     void flush();
     std::uint64_t footerReserve() const;
     std::size_t rawBytes() const;
 
-    std::unique_ptr<storyboard::ParquetStream> stream_;
+    std::unique_ptr<python::ParquetStream> stream_;
     std::string what_;
-    std::vector<storyboard::ParquetColumn> columns_;
+    std::vector<python::ParquetColumn> columns_;
     std::unordered_map<std::string, std::size_t> byName_;
     std::vector<char> set_;  ///< per column: has a value in the row being appended
     std::size_t rows_ = 0;

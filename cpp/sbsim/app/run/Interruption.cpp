@@ -6,7 +6,7 @@
 #include <atomic>
 
 #include "sbsim/kernel/StopRequest.h"
-#include "sbsim/storyboard/python/PythonRuntime.h"
+#include "sbsim/python/PythonRuntime.h"
 
 namespace sbsim::app {
 
@@ -21,7 +21,7 @@ int originalStderr = -1;
 extern "C" void onSignal(int) {
     if (signalsReceived.fetch_add(1) == 0) {
         kernel::StopRequest::request();  // long C++ loops give up at their next safe point
-        storyboard::PythonRuntime::interruptFromSignalHandler();
+        python::PythonRuntime::interruptFromSignalHandler();
         return;
     }
     constexpr char kMessage[] = "sbsim: interrupted again: exiting at once\n";

@@ -34,6 +34,7 @@
 #include "sbsim/app/run/Scenario.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/services/ServiceError.h"
+#include "sbsim/services/ServiceRegistry.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/storyboard/CheckContext.h"
 #include "sbsim/storyboard/EventLog.h"
@@ -58,6 +59,8 @@ void untilInterrupted(F phase) {
     try {
         phase();
     } catch (const storyboard::StoryError&) {
+        if (!Interruption::requested()) throw;
+    } catch (const services::ServiceError&) {  // a Python service's KeyboardInterrupt likewise
         if (!Interruption::requested()) throw;
     }
 }
@@ -182,15 +185,18 @@ int RunCommand::run(const CommandLine& cl) {
         Interruption::reassert();  // the script may have set handlers of its own
         Interruption::checkpoint("while the story was being created");
         if (created == 0) fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
-        // Without a DEN service no DENM memory fills: such a criterion would fail every vehicle.
-        const bool denService =
-            servicesConfig && std::any_of(servicesConfig->services().begin(), servicesConfig->services().end(),
-                                          [](const services::ServiceSpec& s) { return s.type == "DenService"; });
+        // Without a service that sends DENMs (a vehicle's or a roadside unit's) no DENM memory
+        // fills: such a criterion would fail every vehicle.
+        const std::vector<const services::ServiceSpec*> all =
+            servicesConfig ? servicesConfig->allServices() : std::vector<const services::ServiceSpec*>{};
+        const bool denmSource = std::any_of(all.begin(), all.end(), [](const services::ServiceSpec* s) {
+            return services::ServiceRegistry::instance().traits(s->type).sendsDenms;
+        });
         for (const storyboard::CriterionPtr& c : scenario.board()->criteria()) {
-            if (c->readsDenmMemory() && !denService) {
+            if (c->readsDenmMemory() && !denmSource) {
                 throw InputError(
                     fmt::format("{}: criterion '{}' reads the vehicles' DENM memory, but no DEN service "
-                                "runs (--services has no DenService)",
+                                "runs (no service in --services sends DENMs, such as DenService or RsuDenService)",
                                 story->string(), c->name()));
             }
         }
@@ -219,8 +225,12 @@ int RunCommand::run(const CommandLine& cl) {
     }
 
     if (servicesConfig) {
-        scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval),
-                             penetration, messageTrace ? &*messageTrace : nullptr);
+        try {
+            scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval),
+                                 penetration, messageTrace ? &*messageTrace : nullptr);
+        } catch (const services::ServicesConfigError& e) {  // a Python service's file, class or attributes
+            throw InputError(fmt::format("--services: {}", e.what()));
+        }
         // Only when asked for: the default 0.1 s stays as it was, whatever the step length.
         if (cl.middlewareIntervalGiven && kernel::SimTime::fromSeconds(cl.middlewareInterval) < sumo.stepLength()) {
             fmt::print(

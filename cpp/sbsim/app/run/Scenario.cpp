@@ -4,6 +4,7 @@
 
 #include "sbsim/app/cli/BadInput.h"
 #include "sbsim/app/run/RadioSetup.h"
+#include "sbsim/services/python/PythonServiceType.h"
 #include "sbsim/storyboard/CanvasFrame.h"
 #include "sbsim/traffic/EquippedView.h"
 #include "sbsim/traffic/NetworkController.h"
@@ -68,6 +69,8 @@ storyboard::StoryScript& Scenario::addStoryboard(const std::filesystem::path& st
 
 void Scenario::addServices(services::ServicesConfig config, kernel::SimTime interval,
                            const traffic::Penetration& penetration, radio::MessageTrace* trace) {
+    // Python services are imported and checked as the manager is made: the interpreter first.
+    if (services::python::usesPython(config) && !python_) python_.emplace();
     services_ = &sim_.emplaceModule<services::ServiceManager>(std::move(config), interval, sumo_.snapshot(), vehicles_);
     services_->setStatistics(statistics_);
     services::ServiceManager* manager = services_;
@@ -88,16 +91,16 @@ void Scenario::requireStatisticsFile() {
     if (!python_) python_.emplace();
     try {
         parquet_.emplace();
-    } catch (const storyboard::StatisticsParquet::Unavailable& e) {
+    } catch (const python::StatisticsParquet::Unavailable& e) {
         throw UsageError(fmt::format("--statistics: {}", e.what()));
     }
 }
 
-std::unique_ptr<storyboard::ParquetStream> Scenario::parquetStream(const std::string& option, int fd) {
+std::unique_ptr<python::ParquetStream> Scenario::parquetStream(const std::string& option, int fd) {
     if (!python_) python_.emplace();
     try {
-        return std::make_unique<storyboard::ParquetStream>(fd);
-    } catch (const storyboard::ParquetStream::Unavailable& e) {
+        return std::make_unique<python::ParquetStream>(fd);
+    } catch (const python::ParquetStream::Unavailable& e) {
         throw UsageError(fmt::format("{}: {}", option, e.what()));
     }
 }
@@ -109,7 +112,7 @@ std::string Scenario::statisticsFile() const {
 
 std::vector<std::string> Scenario::abandonLingeringThreads() {
     if (!python_) return {};
-    return python_->abandonLingeringThreads(storyboard::PythonRuntime::kThreadGrace);
+    return python_->abandonLingeringThreads(python::PythonRuntime::kThreadGrace);
 }
 
 }  // namespace sbsim::app

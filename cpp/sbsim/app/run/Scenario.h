@@ -11,6 +11,9 @@
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/kernel/Statistics.h"
+#include "sbsim/python/ParquetStream.h"
+#include "sbsim/python/PythonRuntime.h"
+#include "sbsim/python/StatisticsParquet.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/MessageTrace.h"
 #include "sbsim/services/ServiceManager.h"
@@ -18,9 +21,6 @@
 #include "sbsim/storyboard/BoardFeed.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/Storyboard.h"
-#include "sbsim/storyboard/python/ParquetStream.h"
-#include "sbsim/storyboard/python/PythonRuntime.h"
-#include "sbsim/storyboard/python/StatisticsParquet.h"
 #include "sbsim/storyboard/python/StoryScript.h"
 #include "sbsim/traffic/EquippedVehicles.h"
 #include "sbsim/traffic/Penetration.h"
@@ -59,7 +59,7 @@ public:
     std::string statisticsFile() const;
     /// Starts the interpreter (if no story did) and pyarrow's writer for a Parquet file written
     /// as the run goes to `fd`; throws UsageError naming `option` if pyarrow is missing.
-    std::unique_ptr<storyboard::ParquetStream> parquetStream(const std::string& option, int fd);
+    std::unique_ptr<python::ParquetStream> parquetStream(const std::string& option, int fd);
 
     /// Adds the services with the medium the command line chooses (--radio: the 802.11p channel
     /// model, else the disc model of the --v2x-* options), its lines going to `trace` if given.
@@ -90,11 +90,11 @@ private:
     std::filesystem::path sumocfg_;
     // Destroyed bottom up: the script's Python objects before the board, the simulation before
     // the registry its modules hold entries of, the interpreter last.
-    std::optional<storyboard::PythonRuntime> python_;  // outlives the stories' Python objects
-    traffic::VehicleRegistry vehicles_;                // outlives the simulation, whose modules hold its entries
+    std::optional<python::PythonRuntime> python_;  // outlives the stories' Python objects
+    traffic::VehicleRegistry vehicles_;            // outlives the simulation, whose modules hold its entries
     std::shared_ptr<facilities::StationRegistry> stations_;
     kernel::Statistics statistics_;  // outlives the simulation: services record in finish()
-    std::optional<storyboard::StatisticsParquet> parquet_;
+    std::optional<python::StatisticsParquet> parquet_;
     kernel::Simulation sim_;
     traffic::SumoBridge& sumo_;
     std::unique_ptr<traffic::EquippedVehicles> equipment_;

@@ -10,6 +10,7 @@
 #include "sbsim/kernel/Message.h"
 #include "sbsim/services/NeedsVehicle.h"
 #include "sbsim/services/Service.h"
+#include "sbsim/services/ServiceTraits.h"
 #include "sbsim/services/ServicesConfig.h"
 #include "sbsim/services/den/Repetition.h"
 #include "sbsim/services/den/UseCase.h"
@@ -24,6 +25,9 @@ namespace sbsim::services {
 /// phases of its own events to the station registry's sink.
 class SBSIM_API DenService : public Service, public facilities::ItsMessageHandler, public NeedsVehicle {
 public:
+    /// Its use cases send DENMs, and it reads the services file's use-case list.
+    static constexpr ServiceTraits kProvides{.sendsDenms = true, .runsUseCases = true};
+
     DenService();
     ~DenService() override;
     std::string_view whyVehicle() const override {

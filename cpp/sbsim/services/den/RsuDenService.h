@@ -6,6 +6,7 @@
 #include "sbsim/facilities/ActionId.h"
 #include "sbsim/facilities/Denm.h"
 #include "sbsim/kernel/Message.h"
+#include "sbsim/services/ServiceTraits.h"
 #include "sbsim/services/den/DenService.h"
 
 namespace sbsim::services {
@@ -27,6 +28,9 @@ namespace sbsim::services {
 /// the event's position (default the unit's).
 class SBSIM_API RsuDenService : public DenService {
 public:
+    /// Its one event's DENMs; no use cases.
+    static constexpr ServiceTraits kProvides{.sendsDenms = true};
+
     RsuDenService();
     ~RsuDenService() override;
     /// Its one event needs no vehicle: it is the roadside unit's DEN service.

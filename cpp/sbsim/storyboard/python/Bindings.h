@@ -21,5 +21,8 @@ void bindCriteria(pybind11::module_& m);
 void bindBoard(pybind11::module_& m);
 /// WorldStory and the world effects (after bindBoard: a WorldStory is a Story).
 void bindWorld(pybind11::module_& m);
+/// ScenarioMachine, OpenSCENARIO's storyboard state machine (its conditions: bindConditions), and
+/// ScenarioParameters with ParameterCondition and ParameterEffect (after bindConditions, bindWorld).
+void bindScenario(pybind11::module_& m);
 
 }  // namespace sbsim::storyboard

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <limits>
+#include <map>
 
 #include "sbsim/storyboard/conditions/AccelerationCondition.h"
 #include "sbsim/storyboard/conditions/AllCondition.h"
@@ -14,6 +15,9 @@
 #include "sbsim/storyboard/conditions/DeferringCondition.h"
 #include "sbsim/storyboard/conditions/DenmCondition.h"
 #include "sbsim/storyboard/conditions/DistanceCondition.h"
+#include "sbsim/storyboard/conditions/ElementCondition.h"
+#include "sbsim/storyboard/conditions/ElementStateCondition.h"
+#include "sbsim/storyboard/conditions/EntityCondition.h"
 #include "sbsim/storyboard/conditions/EquippedCondition.h"
 #include "sbsim/storyboard/conditions/HeadwayCondition.h"
 #include "sbsim/storyboard/conditions/HoldCondition.h"
@@ -309,6 +313,35 @@ void bindConditions(py::module_& m) {
         .def(py::init<ConditionPtr>(), py::arg("condition"));
     py::class_<LatchCondition, Condition, py::smart_holder>(m, "LatchCondition")
         .def(py::init<ConditionPtr>(), py::arg("condition"));
+    py::class_<EntityCondition, Condition, py::smart_holder>(m, "EntityCondition")
+        .def(py::init<std::string, ConditionPtr>(), py::arg("vehicle"), py::arg("condition"));
+    py::class_<ElementCondition, Condition, py::smart_holder>(m, "ElementCondition")
+        .def(py::init([](std::shared_ptr<ScenarioMachine> machine, std::size_t element, const py::object& actors) {
+                 std::set<std::string> ids;
+                 if (!actors.is_none()) ids = toStringSet(actors, "ElementCondition actors");
+                 return std::make_shared<ElementCondition>(std::move(machine), element, std::move(ids));
+             }),
+             py::arg("machine"), py::arg("element"), py::arg("actors") = py::none());
+    py::class_<ElementStateCondition, Condition, py::smart_holder>(m, "ElementStateCondition")
+        .def(py::init([](std::shared_ptr<ScenarioMachine> machine, std::size_t element, const std::string& what) {
+                 using M = ScenarioMachine;
+                 static const std::map<std::string, M::State> states{{"standbyState", M::State::standby},
+                                                                     {"runningState", M::State::running},
+                                                                     {"completeState", M::State::complete}};
+                 static const std::map<std::string, M::Transition> transitions{
+                     {"startTransition", M::Transition::start},
+                     {"endTransition", M::Transition::end},
+                     {"stopTransition", M::Transition::stop},
+                     {"skipTransition", M::Transition::skip}};
+                 if (const auto s = states.find(what); s != states.end())
+                     return std::make_shared<ElementStateCondition>(std::move(machine), element, s->second,
+                                                                    std::nullopt);
+                 if (const auto t = transitions.find(what); t != transitions.end())
+                     return std::make_shared<ElementStateCondition>(std::move(machine), element, std::nullopt,
+                                                                    t->second);
+                 throw py::value_error("ElementStateCondition: unknown state or transition '" + what + "'");
+             }),
+             py::arg("machine"), py::arg("element"), py::arg("state"));
     py::class_<LimitCondition, Condition, py::smart_holder>(m, "LimitCondition")
         .def(py::init([](const py::object& n) {
                  if (!py::isinstance<py::int_>(n) || py::isinstance<py::bool_>(n)) {

@@ -10,6 +10,7 @@
 #include "sbsim/storyboard/effects/LaneEffect.h"
 #include "sbsim/storyboard/effects/LaneOffsetEffect.h"
 #include "sbsim/storyboard/effects/RouteEffect.h"
+#include "sbsim/storyboard/effects/SetSpeedEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
 #include "sbsim/storyboard/effects/SpeedChangeEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
@@ -172,6 +173,12 @@ void bindEffects(py::module_& m) {
         .def_property_readonly("over", &SpeedEffect::over)
         .def_property_readonly("speed", &SpeedEffect::speed);
     py::class_<StopEffect, Effect, py::smart_holder>(m, "StopEffect").def(py::init<>());
+    py::class_<SetSpeedEffect, Effect, py::smart_holder>(m, "SetSpeedEffect")
+        .def(py::init([](const py::object& mps) {
+                 return std::make_shared<SetSpeedEffect>(toNumber(mps, "SetSpeedEffect speed"));
+             }),
+             py::arg("mps"))
+        .def_property_readonly("speed", &SetSpeedEffect::speed);
     py::class_<EmergencyStopEffect, Effect, py::smart_holder>(m, "EmergencyStopEffect").def(py::init<>());
     py::class_<SignalEffect, Effect, py::smart_holder>(m, "SignalEffect")
         .def(py::init<std::string, std::optional<std::string>>(), py::arg("cause"), py::arg("on_exit") = py::none())

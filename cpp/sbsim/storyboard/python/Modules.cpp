@@ -3,9 +3,9 @@
 
 #include <pybind11/embed.h>
 
+#include "sbsim/python/SnapshotView.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/Bindings.h"
-#include "sbsim/storyboard/python/SnapshotView.h"
 
 namespace py = pybind11;
 
@@ -16,13 +16,14 @@ using kernel::SimTime;
 PYBIND11_EMBEDDED_MODULE(_sbsim, m) {
     m.doc() = "sbsim's storyboard API (Artery's names, with Pythonic aliases).";
     bindTypes(m);
-    bindSnapshotView(m);
+    python::bindSnapshotView(m);
     bindVehicles(m);
     bindConditions(m);
     bindEffects(m);
     bindCriteria(m);
     bindBoard(m);
     bindWorld(m);
+    bindScenario(m);
 }
 
 PYBIND11_EMBEDDED_MODULE(timeline, m) {

@@ -6,8 +6,8 @@
 
 #include <algorithm>
 
+#include "sbsim/python/SnapshotView.h"
 #include "sbsim/storyboard/python/ScriptContext.h"
-#include "sbsim/storyboard/python/SnapshotView.h"
 
 namespace py = pybind11;
 
@@ -60,7 +60,7 @@ void PythonCondition::prepare(const EvaluationContext& ctx) {
         const py::function testAll = py::get_override(static_cast<const Condition*>(this), "test_all");
         vectorised_ = static_cast<bool>(testAll);
         if (!vectorised_) return;
-        const py::object result = testAll(SnapshotView{&ctx.snapshot(), stepValid_, py::dict()});
+        const py::object result = testAll(python::SnapshotView{&ctx.snapshot(), stepValid_, py::dict()});
         const auto mask = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(result);
         PyErr_Clear();  // ensure() leaves a conversion error behind for None and the like
         if (!mask || mask.ndim() != 1 || mask.shape(0) != ctx.snapshot().size()) {
@@ -81,7 +81,7 @@ ConditionResult PythonCondition::test(const EvaluationContext& ctx, VehicleIndex
         const py::handle self = py::cast(static_cast<const Condition*>(this));
         if (!test)
             throwContractError(self, className(this) + " must define test(self, vehicle) or test_all(self, snapshot)");
-        const py::object result = test(VehicleView{&ctx.snapshot(), ego, stepValid_});
+        const py::object result = test(python::VehicleView{&ctx.snapshot(), ego, stepValid_});
         if (py::isinstance<py::bool_>(result)) return result.cast<bool>();
         if (py::str(py::type::of(result).attr("__name__")).cast<std::string>() == "bool_") {
             return py::bool_(result).cast<bool>();  // numpy's bool

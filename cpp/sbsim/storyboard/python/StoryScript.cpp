@@ -27,7 +27,8 @@ std::size_t parameterCount(const py::object& f) {
 
 }  // namespace
 
-StoryScript::StoryScript(PythonRuntime& python, const fs::path& script, Storyboard& board, const CanvasFrame& frame)
+StoryScript::StoryScript(python::PythonRuntime& python, const fs::path& script, Storyboard& board,
+                         const CanvasFrame& frame)
     : script_(fs::absolute(script)), board_(board), frame_(frame), python_(python) {
     ScriptContext& context = ScriptContext::current();
     context.board = &board_;

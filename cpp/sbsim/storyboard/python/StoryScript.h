@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/python/PythonRuntime.h"
 #include "sbsim/storyboard/CanvasFrame.h"
 #include "sbsim/storyboard/Storyboard.h"
-#include "sbsim/storyboard/python/PythonRuntime.h"
 
 namespace sbsim::storyboard {
 
@@ -16,7 +16,7 @@ namespace sbsim::storyboard {
 class SBSIM_API StoryScript {
 public:
     /// `python` must outlive the board: stories keep Python objects alive.
-    StoryScript(PythonRuntime& python, const std::filesystem::path& script, Storyboard& board,
+    StoryScript(python::PythonRuntime& python, const std::filesystem::path& script, Storyboard& board,
                 const CanvasFrame& frame);
     ~StoryScript();
 
@@ -27,7 +27,7 @@ private:
     std::filesystem::path script_;
     Storyboard& board_;
     CanvasFrame frame_;
-    PythonRuntime& python_;
+    python::PythonRuntime& python_;
 };
 
 }  // namespace sbsim::storyboard

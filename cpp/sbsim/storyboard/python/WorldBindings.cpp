@@ -3,6 +3,7 @@
 
 #include "sbsim/storyboard/WorldStory.h"
 #include "sbsim/storyboard/effects/CloseRoadEffect.h"
+#include "sbsim/storyboard/effects/RemoveVehicleEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
@@ -82,6 +83,9 @@ void bindWorld(py::module_& m) {
              py::arg("to_edge") = py::none(), py::arg("type") = py::none(), py::arg("lane") = py::none(),
              py::arg("position") = py::none(), py::arg("speed") = py::none())
         .def_property_readonly("id", [](const SpawnEffect& e) { return e.spec().id; });
+    py::class_<RemoveVehicleEffect, WorldEffect, py::smart_holder>(m, "RemoveVehicleEffect")
+        .def(py::init<std::string>(), py::arg("id"))
+        .def_property_readonly("id", &RemoveVehicleEffect::id);
     py::class_<TrafficLightEffect, WorldEffect, py::smart_holder>(m, "TrafficLightEffect")
         .def(py::init<std::string, std::string>(), py::arg("tls_id"), py::arg("state"))
         .def_property_readonly("tls_id", &TrafficLightEffect::tls)

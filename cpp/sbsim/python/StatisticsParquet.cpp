@@ -1,4 +1,4 @@
-#include "sbsim/storyboard/python/StatisticsParquet.h"
+#include "sbsim/python/StatisticsParquet.h"
 
 #include <pybind11/embed.h>
 
@@ -6,7 +6,7 @@
 
 namespace py = pybind11;
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 namespace {
 
@@ -60,4 +60,4 @@ std::string StatisticsParquet::bytes(const kernel::Statistics& s, const Equipped
     return runChild(kWrite, columns.dump());
 }
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

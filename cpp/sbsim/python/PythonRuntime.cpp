@@ -1,4 +1,4 @@
-#include "sbsim/storyboard/python/PythonRuntime.h"
+#include "sbsim/python/PythonRuntime.h"
 
 #include <pybind11/embed.h>
 
@@ -11,7 +11,7 @@
 namespace py = pybind11;
 namespace fs = std::filesystem;
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 namespace {
 
@@ -121,4 +121,4 @@ void PythonRuntime::prependPath(const fs::path& dir) {
     py::module_::import("sys").attr("path").attr("insert")(0, fs::absolute(dir).string());
 }
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

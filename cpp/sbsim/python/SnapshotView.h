@@ -6,7 +6,7 @@
 
 #include "sbsim/traffic/VehicleSnapshot.h"
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 /// Says whether the step a view was made for is still the current one. Scripts may keep a view
 /// past its call; the snapshot behind it changes (and its arrays move) at the next step, so a
@@ -33,4 +33,4 @@ struct SnapshotView {
 /// Adds the Vehicle and Snapshot classes to the module.
 void bindSnapshotView(pybind11::module_& m);
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

@@ -10,7 +10,7 @@
 
 #include "sbsim/kernel/Export.h"
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 /// One column of a row group handed to a ParquetStream: float64, int64 or UTF-8 strings, any
 /// value may be null. Kept as Arrow lays columns out (values, string offsets, one validity byte
@@ -91,4 +91,4 @@ private:
     std::string pending_;  ///< what the child wrote after the last answer
 };
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

@@ -1,4 +1,4 @@
-#include "sbsim/storyboard/python/ParquetStream.h"
+#include "sbsim/python/ParquetStream.h"
 
 #include <fcntl.h>
 #include <pybind11/embed.h>
@@ -15,7 +15,7 @@ extern char** environ;
 
 namespace py = pybind11;
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 namespace {
 
@@ -332,4 +332,4 @@ std::uint64_t ParquetStream::close() {
     return std::stoull(reply.substr(5));
 }
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

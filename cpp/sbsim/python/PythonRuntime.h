@@ -12,7 +12,7 @@ namespace pybind11 {
 class scoped_interpreter;
 }
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 /// The embedded Python interpreter, alive for the object's lifetime. It is configured as the
 /// Python sbsim was built for: when the program sits in a virtual environment's bin/ (a pip
@@ -52,4 +52,4 @@ private:
     bool threadsLinger_ = false;
 };
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

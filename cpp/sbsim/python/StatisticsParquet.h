@@ -9,7 +9,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Statistics.h"
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 /// The statistics file (--statistics) is written by pyarrow in the embedded interpreter (a
 /// PythonRuntime must be running): no Parquet library of our own.
@@ -34,4 +34,4 @@ public:
     std::string bytes(const kernel::Statistics& statistics, const Equipped& equipped) const;
 };
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

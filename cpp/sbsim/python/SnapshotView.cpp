@@ -1,11 +1,11 @@
-#include "sbsim/storyboard/python/SnapshotView.h"
+#include "sbsim/python/SnapshotView.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 namespace py = pybind11;
 
-namespace sbsim::storyboard {
+namespace sbsim::python {
 
 namespace {
 
@@ -113,4 +113,4 @@ void bindSnapshotView(py::module_& m) {
         });
 }
 
-}  // namespace sbsim::storyboard
+}  // namespace sbsim::python

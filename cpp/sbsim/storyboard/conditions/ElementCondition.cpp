@@ -1,0 +1,48 @@
+#include "sbsim/storyboard/conditions/ElementCondition.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "sbsim/storyboard/CheckContext.h"
+#include "sbsim/storyboard/DescribeText.h"
+
+namespace sbsim::storyboard {
+
+ElementCondition::ElementCondition(std::shared_ptr<ScenarioMachine> machine, std::size_t element,
+                                   std::set<std::string> actors)
+    : machine_(std::move(machine)),
+      element_(element),
+      actors_(std::move(actors)),
+      lookup_(actors_.begin(), actors_.end()) {
+    if (!machine_) throw std::invalid_argument("ElementCondition: the machine is null");
+    if (element_ >= machine_->size()) {
+        throw std::invalid_argument(fmt::format("ElementCondition: the machine has no element {}", element_));
+    }
+}
+
+ConditionResult ElementCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
+    machine_->advance(ctx);
+    if (machine_->state(element_) != ScenarioMachine::State::running) return false;
+    return actors_.empty() || lookup_.contains(ctx.snapshot().ids()[ego]);
+}
+
+std::string ElementCondition::describe() const {
+    std::string s = fmt::format("ElementCondition({} '{}'", ScenarioMachine::kindName(machine_->kind(element_)),
+                                machine_->name(element_));
+    if (!actors_.empty()) s += fmt::format(", actors {}", describeIds(actors_));
+    const std::string triggers = machine_->describeTriggers(element_);
+    if (!triggers.empty()) s += "; " + triggers;
+    return s + ")";
+}
+
+void ElementCondition::check(CheckContext& ctx) const {
+    std::set<std::string> unknown;
+    for (const std::string& id : actors_) {
+        if (!ctx.vehicleDefined(id)) unknown.insert(id);
+    }
+    if (!unknown.empty())
+        ctx.warn(fmt::format("ElementCondition names actors no route file defines: {}", describeIds(unknown)));
+}
+
+}  // namespace sbsim::storyboard
