@@ -99,7 +99,9 @@ def run_ok(cfg: Path, *extra: str, story: Path | None = None, events: Path | Non
     return result
 
 
-def test_a_python_units_denm_is_rsu_den_services_byte_for_byte(loops_cfg: Path, tmp_path: Path) -> None:
+def test_a_python_units_denm_is_rsu_den_services_byte_for_byte_with_any_threads(
+    loops_cfg: Path, tmp_path: Path
+) -> None:
     write(tmp_path, "den.py", ANNOUNCER)
     unit = f'<rsu id="rsu0" x="{UNIT[0]:g}" y="{UNIT[1]:g}">{{}}</rsu>'
     cpp = services_file(
@@ -112,11 +114,11 @@ def test_a_python_units_denm_is_rsu_den_services_byte_for_byte(loops_cfg: Path, 
         tmp_path, '<service type="CaService"/>', unit.format('<service type="python:den.py:Roadworks" area="150"/>')
     )
     traces = {}
-    for name, services in (("cpp", cpp), ("py", py)):
+    for name, services, threads in (("cpp", cpp, "1"), ("py", py, "1"), ("py2", py, "2")):
         trace = tmp_path / f"{name}.jsonl"
-        run_ok(loops_cfg, "--services", str(services), "--messages", str(trace))
+        run_ok(loops_cfg, "--services", str(services), "--messages", str(trace), "--threads", threads)
         traces[name] = trace.read_bytes()
-    assert traces["cpp"] == traces["py"]
+    assert traces["cpp"] == traces["py"] == traces["py2"]
     lines = read_message_lines(tmp_path / "py.jsonl")
     sent = [line for line in lines if line["event"] == "tx" and line["type"] == "DENM" and line["station"] == "rsu0"]
     # Every second from 10 s while less than 50 s passed, then the cancellation at 60 s (a smaller DENM:
