@@ -188,16 +188,19 @@ int RunCommand::run(const CommandLine& cl) {
         // Without a service that sends DENMs (a vehicle's or a roadside unit's) no DENM memory
         // fills: such a criterion would fail every vehicle.
         // Asked only when a criterion needs it: a Python service's traits import its class.
+        std::optional<bool> sendsDenms;
         const auto denmSource = [&] {
-            if (!servicesConfig) return false;
-            const std::vector<const services::ServiceSpec*> all = servicesConfig->allServices();
+            if (sendsDenms) return *sendsDenms;
+            const std::vector<const services::ServiceSpec*> all =
+                servicesConfig ? servicesConfig->allServices() : std::vector<const services::ServiceSpec*>{};
             try {
-                return std::any_of(all.begin(), all.end(), [](const services::ServiceSpec* s) {
+                sendsDenms = std::any_of(all.begin(), all.end(), [](const services::ServiceSpec* s) {
                     return services::ServiceRegistry::instance().traits(*s).sendsDenms;
                 });
             } catch (const services::ServicesConfigError& e) {  // a Python service's file or class
                 throw InputError(fmt::format("--services: {}", e.what()));
             }
+            return *sendsDenms;
         };
         for (const storyboard::CriterionPtr& c : scenario.board()->criteria()) {
             if (c->readsDenmMemory() && !denmSource()) {
