@@ -207,6 +207,7 @@ class Service:
 
     ``attributes`` declares the services-file attributes the service takes, each with its kind (``str``,
     ``int``, ``float`` or ``bool``); any other attribute (but Artery's ``name``) is refused before the run.
+    ``sends_denms = True`` declares that it sends DENMs (:meth:`send_denm`): the run counts it as a DENM source.
     """
 
     attributes: ClassVar[Mapping[str, type]] = {}
