@@ -17,6 +17,10 @@ station and calls the methods the class defines (a method it leaves to this base
   instead of one per message, with the batch's columns as numpy arrays;
 - ``on_cam(cam)`` / ``on_denm(denm)`` after the station's facilities took a CAM or DENM in.
 
+A service that sends DENMs (:meth:`Service.send_denm`) says so with the class attribute ``sends_denms = True``:
+the run then counts it as a DENM source (a ``WarnedBefore`` criterion is accepted), and ``send_denm`` refuses to
+run in a class that does not declare it.
+
 Everything a service asks and commands goes to the C++ service it runs in (the same middleware clock, local
 dynamic map, DENM memory, effect stack and statistics as a C++ service's). An exception ends the run with
 exit code 2, naming the service, the station, the simulated time and the Python file and line.
@@ -25,6 +29,7 @@ exit code 2, naming the service, the station, the simulated time and the Python 
 from __future__ import annotations
 
 import inspect
+import math
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from types import MappingProxyType
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol
@@ -176,6 +181,13 @@ def _convert(kind: type, text: str) -> Any:
         raise ValueError(f"must be {'a whole number' if kind is int else 'a number'}, got {text!r}") from None
 
 
+def _number(what: str, value: Any) -> float:
+    """A finite number of send_denm's, as a float."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ValueError(f"send_denm: {what} must be a finite number, got {value!r}")
+    return float(value)
+
+
 def _freeze(value: Any, where: str = "payload") -> Any:
     """The payload as receivers get it: plain values, lists as tuples, dicts as read-only mappings."""
     if value is None or isinstance(value, (bool, int, float, str, bytes)):
@@ -195,9 +207,12 @@ class Service:
 
     ``attributes`` declares the services-file attributes the service takes, each with its kind (``str``,
     ``int``, ``float`` or ``bool``); any other attribute (but Artery's ``name``) is refused before the run.
+    ``sends_denms = True`` declares that it sends DENMs (:meth:`send_denm`): the run counts it as a DENM source.
     """
 
     attributes: ClassVar[Mapping[str, type]] = {}
+    #: The service sends DENMs (send_denm): the run counts it as a DEN service, as it does DenService.
+    sends_denms: ClassVar[bool] = False
     _host: Any  # set by sbsim before __init__
 
     # --- callbacks (override those the service needs) ---
@@ -342,6 +357,67 @@ class Service:
             raise ValueError(f"send: security must be 'cam' or 'other', got {security!r}")
         self._host.send(type_name, size_bytes, _freeze(payload), _SECURITY[security])
 
+    def send_denm(
+        self,
+        cause: int,
+        subcause: int = 0,
+        *,
+        area: float = 1000.0,
+        validity: float = 600.0,
+        repetition: float | None = None,
+        interval: float = 1.0,
+        position: tuple[float, float] | None = None,
+        relevance: float | None = None,
+        traffic_class: int = 1,
+    ) -> str:
+        """Starts a DENM event (EN 302 637-3) through the station's DEN service; returns its action id.
+
+        The same DENM as a DenService use case's (a StoryboardEvent's defaults): detected now at ``position``
+        (default the station's), geo-broadcast to a circle of ``area`` m around it through the station's
+        GeoNetworking router, kept by receivers for ``validity`` s, and sent again every ``interval`` s for
+        ``repetition`` s (default: as long as it is valid; 0: once). ``relevance`` is the relevance distance
+        (m), ``traffic_class`` GeoNetworking's. Receivers' ``DenmCondition`` stories, ``on_denm`` and DENM memory
+        see it; the trace writes it as the C++ services' DENMs. Needs ``sends_denms = True`` on the class.
+        """
+        name = type(self).__qualname__
+        if type(self).sends_denms is not True:
+            raise RuntimeError(f"send_denm: {name} does not declare sends_denms = True")
+        for label, code in (("cause", cause), ("subcause", subcause)):
+            if isinstance(code, bool) or not isinstance(code, int) or not 0 <= code <= 255:
+                raise ValueError(f"send_denm: {label} must be a whole number from 0 to 255, got {code!r}")
+        if isinstance(traffic_class, bool) or not isinstance(traffic_class, int) or not 0 <= traffic_class <= 255:
+            raise ValueError(f"send_denm: traffic_class must be a whole number from 0 to 255, got {traffic_class!r}")
+        area = _number("area", area)
+        if not area > 0:
+            raise ValueError(f"send_denm: area must be > 0 m, got {area!r}")
+        validity = _number("validity", validity)
+        if not 0 < validity <= 86400:
+            raise ValueError(f"send_denm: validity must be from 0 to 86400 s (ETSI's range), got {validity!r}")
+        repeat = validity if repetition is None else _number("repetition", repetition)
+        interval = _number("interval", interval)
+        if repeat > 0 and not 0 < interval:
+            raise ValueError(f"send_denm: interval must be > 0 s to repeat, got {interval!r}")
+        at = None
+        if position is not None:
+            if not isinstance(position, (tuple, list)) or len(position) != 2:
+                raise ValueError(f"send_denm: position must be (x, y) in m, got {position!r}")
+            at = (_number("position", position[0]), _number("position", position[1]))
+        if relevance is not None:
+            relevance = _number("relevance", relevance)
+            if not relevance > 0:
+                raise ValueError(f"send_denm: relevance must be > 0 m, got {relevance!r}")
+        return self._host.send_denm(  # type: ignore[no-any-return]
+            cause, subcause, area, validity, interval, repeat, at, relevance, traffic_class
+        )
+
+    def terminate_denm(self, action: str) -> bool:
+        """Ends this station's event ``action`` (send_denm's answer): its repetition stops and a cancellation DENM
+        goes to the same area, which makes receivers drop the event. False if the event is not live (ended, or
+        not this station's)."""
+        if not isinstance(action, str):
+            raise TypeError(f"terminate_denm: the action id must be a str ('station:sequence'), got {action!r}")
+        return self._host.terminate_denm(action)  # type: ignore[no-any-return]
+
     def schedule_after(self, seconds: float, callback: Callable[[], object]) -> int:
         """Calls ``callback()`` after ``seconds`` of simulated time; returns a handle for :meth:`cancel`."""
         if not callable(callback):
@@ -445,6 +521,8 @@ def _check(cls: Any, attributes: Mapping[str, str]) -> str | None:
             return f"{name}.{method} must take {wanted}{_where(f)}"
         except ValueError:
             pass
+    if not isinstance(cls.sends_denms, bool):
+        return f"{name}.sends_denms must be True or False, got {cls.sends_denms!r}{_where(cls)}"
     declared = cls.attributes
     if not isinstance(declared, Mapping) or not all(
         isinstance(k, str) and v in ATTRIBUTE_KINDS for k, v in declared.items()

@@ -243,6 +243,52 @@ def test_warned_before_counts_a_roadside_unit_as_the_den_service(tmp_path: Path)
     assert int(entry["actual"].split()[2]) > 50, entry
 
 
+#: A roadside unit at the crash announcing it from Python (send_denm), or a Python service that sends no DENMs.
+PYTHON_UNIT = """
+from storyboard.services import Service
+
+
+class Crash(Service):
+    sends_denms = True
+
+    def initialize(self):
+        self.schedule_after(40.0, lambda: self.send_denm(cause=2, area=2000.0, validity=120.0))
+
+
+class Quiet(Service):
+    pass
+"""
+
+
+def test_warned_before_counts_a_python_service_that_sends_denms(tmp_path: Path) -> None:
+    (tmp_path / "crash.py").write_text(PYTHON_UNIT)
+    services = tmp_path / "services.xml"
+    criterion = f"WarnedBefore({AT_THE_CRASH}, cause=2, seconds=0, since=40, until=160)"
+    for unit, accepted in (("Crash", True), ("Quiet", False)):
+        services.write_text(
+            '<services><service type="artery.application.CaService"/><rsu id="rsu0" x="1490" y="0">'
+            f'<service type="python:crash.py:{unit}"/></rsu></services>'
+        )
+        if not accepted:
+            body = "".join(
+                f"    {line}\n" for line in [*ACCIDENT_STORY.splitlines(), f"board.registerCriterion({criterion})"]
+            )
+            story = write_story(tmp_path, HEADER + "def createStories(board):\n" + body)
+            done = run(MOTORWAY / "motorway.sumocfg", story=story, end=5.0, extra=["--services", str(services)])
+            assert_bad_input(done, "no DEN service runs", "sends_denms = True")
+            continue
+        entry = verdict_of(
+            MOTORWAY / "motorway.sumocfg",
+            tmp_path / unit,
+            criterion,
+            ACCIDENT_STORY,
+            None,
+            ["--services", str(services)],
+        )
+        assert entry["passed"] and entry["actual"].startswith("0 of "), entry
+        assert int(entry["actual"].split()[2]) > 50, entry
+
+
 def test_story_activated(loops_cfg: Path, tmp_path: Path) -> None:
     when = "AndCondition(TimeCondition(10), CarSetCondition(['veh01', 'veh02']))"
     story = f"board.registerStory(Story({when}, [], name='two'))"

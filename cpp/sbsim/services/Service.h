@@ -107,6 +107,7 @@ protected:
 
 private:
     friend class Middleware;
+    friend class DenmSender;  // sends, schedules and reports for the service that owns it
     Middleware* middleware_ = nullptr;
     const ServiceSpec* spec_ = nullptr;
 };

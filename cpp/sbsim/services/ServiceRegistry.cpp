@@ -24,6 +24,18 @@ ServiceTraits ServiceRegistry::traits(const std::string& name) const {
     return it == factories_.end() ? ServiceTraits{} : it->second.traits;
 }
 
+ServiceTraits ServiceRegistry::traits(const ServiceSpec& spec) const {
+    const Resolver* resolver = resolverOf(spec.type);
+    if (resolver == nullptr) return traits(spec.type);
+    return resolver->traits ? resolver->traits(spec) : ServiceTraits{};
+}
+
+std::vector<std::filesystem::path> ServiceRegistry::files(const ServiceSpec& spec) const {
+    const Resolver* resolver = resolverOf(spec.type);
+    if (resolver == nullptr || !resolver->files) return {};
+    return resolver->files(spec);
+}
+
 std::optional<std::string> ServiceRegistry::takeConflict() { return std::exchange(conflict_, std::nullopt); }
 
 void ServiceRegistry::addResolver(const std::string& prefix, Resolver resolver) {

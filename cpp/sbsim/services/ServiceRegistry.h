@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -27,6 +28,10 @@ public:
         /// Throws ServicesConfigError naming the entry's file and line if the type cannot be made.
         std::function<void(const ServiceSpec&)> check;
         std::function<std::unique_ptr<Service>(const ServiceSpec&)> create;
+        /// What the entry's service provides (it may have to load it: throws as check does).
+        std::function<ServiceTraits(const ServiceSpec&)> traits;
+        /// The files the entry's service is read from, known without loading it (the run's inputs).
+        std::function<std::vector<std::filesystem::path>(const ServiceSpec&)> files;
     };
 
     static ServiceRegistry& instance();
@@ -51,8 +56,14 @@ public:
     /// check: a missing file or class, ServicesConfigError).
     void check(const ServiceSpec& spec) const;
     std::vector<std::string> names() const;
-    /// What type `name` provides (nothing for an unknown type).
+    /// What type `name` provides (nothing for an unknown type, or one a resolver makes).
     ServiceTraits traits(const std::string& name) const;
+    /// What `spec`'s service provides: its resolver's answer for the entry, else traits(spec.type).
+    /// A resolver may load the service to answer (throwing as check(spec) does).
+    ServiceTraits traits(const ServiceSpec& spec) const;
+    /// The files `spec`'s service is read from besides the services file (a resolver's; none for a
+    /// registered type): the run counts them as inputs, so no output may overwrite them.
+    std::vector<std::filesystem::path> files(const ServiceSpec& spec) const;
 
 private:
     const Resolver* resolverOf(const std::string& type) const;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceRegistry.h"
 
 namespace sbsim::services {
@@ -685,6 +686,30 @@ TEST(ServiceRegistry, TypesSayWhatTheyProvide) {
     EXPECT_FALSE(ca.sendsDenms);
     EXPECT_FALSE(ca.runsUseCases);
     EXPECT_FALSE(registry.traits("NoSuchService").sendsDenms);
+}
+
+// A resolver's types (python:...) answer per entry: what the entry's service provides and its files.
+TEST(ServiceRegistry, AResolverAnswersForItsEntries) {
+    ServiceRegistry registry;
+    registry.addResolver(
+        "test:",
+        {.check = [](const ServiceSpec&) {},
+         .create = [](const ServiceSpec&) { return std::unique_ptr<Service>(); },
+         .traits = [](const ServiceSpec& spec) { return ServiceTraits{.sendsDenms = spec.type == "test:sender"}; },
+         .files =
+             [](const ServiceSpec& spec) { return std::vector<std::filesystem::path>{spec.type.substr(5) + ".py"}; }});
+    registry.add(
+        "Plain", [] { return std::unique_ptr<Service>(); }, ServiceTraits{.sendsDenms = true});
+    ServiceSpec spec;
+    spec.type = "test:sender";
+    EXPECT_TRUE(registry.traits(spec).sendsDenms);
+    EXPECT_EQ(registry.files(spec), std::vector<std::filesystem::path>{"sender.py"});
+    EXPECT_FALSE(registry.traits(spec.type).sendsDenms);  // by name alone: not known
+    spec.type = "test:quiet";
+    EXPECT_FALSE(registry.traits(spec).sendsDenms);
+    spec.type = "Plain";  // a registered type: its own traits, no files
+    EXPECT_TRUE(registry.traits(spec).sendsDenms);
+    EXPECT_TRUE(registry.files(spec).empty());
 }
 
 }  // namespace

@@ -71,6 +71,13 @@ services::ServicesConfig loadServicesConfig(const fs::path& path, FileLedger& fi
     for (const fs::path& other : config->otherFiles()) {
         files.addReferencedInput(fmt::format("--services (read from '{}')", path.string()), other);
     }
+    // A service's own files (a Python service's .py): inputs too.
+    for (const services::ServiceSpec* spec : config->allServices()) {
+        for (const fs::path& file : registry.files(*spec)) {
+            files.addReferencedInput(
+                fmt::format("--services ({}:{}: service '{}')", path.string(), spec->line, spec->type), file);
+        }
+    }
     return std::move(*config);
 }
 

@@ -187,17 +187,28 @@ int RunCommand::run(const CommandLine& cl) {
         if (created == 0) fmt::print(stderr, "sbsim: warning: {} registered no story\n", story->string());
         // Without a service that sends DENMs (a vehicle's or a roadside unit's) no DENM memory
         // fills: such a criterion would fail every vehicle.
-        const std::vector<const services::ServiceSpec*> all =
-            servicesConfig ? servicesConfig->allServices() : std::vector<const services::ServiceSpec*>{};
-        const bool denmSource = std::any_of(all.begin(), all.end(), [](const services::ServiceSpec* s) {
-            return services::ServiceRegistry::instance().traits(s->type).sendsDenms;
-        });
+        // Asked only when a criterion needs it: a Python service's traits import its class.
+        std::optional<bool> sendsDenms;
+        const auto denmSource = [&] {
+            if (sendsDenms) return *sendsDenms;
+            const std::vector<const services::ServiceSpec*> all =
+                servicesConfig ? servicesConfig->allServices() : std::vector<const services::ServiceSpec*>{};
+            try {
+                sendsDenms = std::any_of(all.begin(), all.end(), [](const services::ServiceSpec* s) {
+                    return services::ServiceRegistry::instance().traits(*s).sendsDenms;
+                });
+            } catch (const services::ServicesConfigError& e) {  // a Python service's file or class
+                throw InputError(fmt::format("--services: {}", e.what()));
+            }
+            return *sendsDenms;
+        };
         for (const storyboard::CriterionPtr& c : scenario.board()->criteria()) {
-            if (c->readsDenmMemory() && !denmSource) {
-                throw InputError(
-                    fmt::format("{}: criterion '{}' reads the vehicles' DENM memory, but no DEN service "
-                                "runs (no service in --services sends DENMs, such as DenService or RsuDenService)",
-                                story->string(), c->name()));
+            if (c->readsDenmMemory() && !denmSource()) {
+                throw InputError(fmt::format(
+                    "{}: criterion '{}' reads the vehicles' DENM memory, but no DEN service "
+                    "runs (no service in --services sends DENMs, such as DenService, RsuDenService or a Python "
+                    "service declaring sends_denms = True)",
+                    story->string(), c->name()));
             }
         }
         // An id the network does not have would never match (or fail minutes in): refused now, as

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -12,6 +11,7 @@
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceTraits.h"
 #include "sbsim/services/ServicesConfig.h"
+#include "sbsim/services/den/DenmSender.h"
 #include "sbsim/services/den/Repetition.h"
 #include "sbsim/services/den/UseCase.h"
 
@@ -41,15 +41,17 @@ public:
     void handleMessage(kernel::Message& msg) override;
 
     /// The next action id of this station (sequence numbers from 1).
-    facilities::ActionId requestActionId();
+    facilities::ActionId requestActionId() { return sender_.requestActionId(); }
     /// Sends `denm` now and, with `repetition`, again every interval (the same content) until the
     /// duration passed or the event is terminated.
-    void sendDenm(const facilities::DenmContent& denm, std::optional<Repetition> repetition = std::nullopt);
+    void sendDenm(const facilities::DenmContent& denm, std::optional<Repetition> repetition = std::nullopt) {
+        sender_.send(denm, repetition);
+    }
     /// Ends this station's event `action`: no more repetitions, one cancellation DENM (reference
     /// time now) to the same area. Nothing if the event is not this station's or already ended.
-    void terminate(const facilities::ActionId& action);
+    void terminate(const facilities::ActionId& action) { (void)sender_.terminate(action); }
     /// Whether `action` is one of this station's events still being repeated.
-    bool repeating(const facilities::ActionId& action) const { return active_.count(action) != 0; }
+    bool repeating(const facilities::ActionId& action) const { return sender_.repeating(action); }
 
     kernel::SimTime now() const { return simTime(); }
     Eigen::Vector2d stationPosition() const { return position(); }
@@ -59,22 +61,11 @@ public:
     const facilities::DenmMemory& memory() const { return denmMemory(); }
     const facilities::LocalDynamicMap& ldm() const { return localDynamicMap(); }
     const std::vector<std::unique_ptr<UseCase>>& useCases() const { return useCases_; }
-    std::size_t denmsSent() const { return sent_; }
+    std::size_t denmsSent() const { return sender_.sent(); }
 
 private:
-    struct Active {
-        facilities::DenmContent denm;
-        Repetition repetition;
-        kernel::SimTime first;
-        std::unique_ptr<kernel::Message> timer;
-    };
-    void transmit(const facilities::DenmContent& denm);
-
     std::vector<std::unique_ptr<UseCase>> useCases_;
-    std::map<facilities::ActionId, Active> active_;
-    std::uint32_t sequence_ = 0;
-    std::size_t sent_ = 0;
-    std::map<facilities::ActionId, facilities::DenmContent> sentEvents_;  // the last version of each live event
+    DenmSender sender_{*this};              // the station's events: action ids, repetition, cancellation
     std::vector<ServiceSpec> allUseCases_;  // when the configuration lists none: every use case
 };
 

@@ -169,7 +169,24 @@ bool PythonService::cancelCallback(std::uint64_t handle) {
     return true;
 }
 
+facilities::ActionId PythonService::sendDenm(const DenmRequest& request) {
+    facilities::DenmContent denm;
+    denm.action = denms_.requestActionId();
+    denm.detectionTime = simTime();
+    denm.referenceTime = denm.detectionTime;
+    denm.eventPosition = request.position.value_or(position());
+    denm.destination = {denm.eventPosition, request.area};
+    denm.cause = request.cause;
+    denm.subcause = request.subcause;
+    denm.relevanceDistance = request.relevance;
+    denm.validity = request.validity;
+    denm.trafficClass = request.trafficClass;
+    denms_.send(denm, Repetition{request.interval, request.repetition});
+    return denm.action;
+}
+
 void PythonService::handleMessage(kernel::Message& msg) {
+    if (denms_.handle(msg)) return;
     if (msg.kind() != Timer::kKind) return Service::handleMessage(msg);
     auto& timer = static_cast<Timer&>(msg);
     pendingTimers_.erase(timer.handle);

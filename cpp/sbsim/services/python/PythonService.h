@@ -13,6 +13,7 @@
 #include "sbsim/facilities/ItsMessageHandler.h"
 #include "sbsim/kernel/Message.h"
 #include "sbsim/services/Service.h"
+#include "sbsim/services/den/DenmSender.h"
 #include "sbsim/services/python/ReceivedMessage.h"
 
 namespace sbsim::services::python {
@@ -68,6 +69,22 @@ public:
     std::uint64_t scheduleCallback(kernel::SimTime delay, pybind11::object callback);
     /// Whether a pending callback was cancelled.
     bool cancelCallback(std::uint64_t handle);
+    /// What `send_denm` asks for: the DEN service's event, as a StoryboardEvent use case sends it.
+    struct DenmRequest {
+        int cause = 0;
+        int subcause = 0;
+        double area = 1000;  // m, the geo-broadcast circle's radius around the event
+        kernel::SimTime validity;
+        kernel::SimTime interval;
+        kernel::SimTime repetition;               // how long it is repeated; zero: sent once
+        std::optional<Eigen::Vector2d> position;  // the event's; default the station's
+        std::optional<double> relevance;
+        int trafficClass = 1;
+    };
+    /// Sends a new DENM event through the station's DEN sender (DenService's); returns its action id.
+    facilities::ActionId sendDenm(const DenmRequest& request);
+    /// Ends the station's event `action` (a cancellation DENM); false if it is not live.
+    bool terminateDenm(const facilities::ActionId& action) { return denms_.terminate(action); }
     /// The phase sbsim's Beacon starts at: uniform in [0, interval), from the seed and the station.
     kernel::SimTime startPhase(kernel::SimTime interval) const;
     const std::string& typeName() const { return typeName_; }
@@ -103,6 +120,7 @@ private:
     std::unordered_map<std::uint64_t, Timer*> pendingTimers_;  // by handle
     std::uint64_t nextHandle_ = 1;
     std::shared_ptr<PythonService*> alive_;  // what the Python side's handles read; null once gone
+    DenmSender denms_{*this};                // its DENMs: action ids, repetition, cancellation
 };
 
 }  // namespace sbsim::services::python

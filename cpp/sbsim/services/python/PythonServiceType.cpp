@@ -106,6 +106,19 @@ py::object serviceClass(const ServiceSpec& spec) {
     return cls;
 }
 
+/// What the class declares it provides: `sends_denms = True` (checked a bool by storyboard.services._check).
+ServiceTraits traitsOf(const ServiceSpec& spec) {
+    const py::object cls = serviceClass(spec);
+    return {.sendsDenms = py::getattr(cls, "sends_denms", py::bool_(false)).cast<bool>()};
+}
+
+/// A file-named class's file (a module on the path is found by importing it: not known before).
+std::vector<fs::path> filesOf(const ServiceSpec& spec) {
+    const auto [where, name] = target(spec);
+    if (!isFile(where)) return {};
+    return {(fs::absolute(fs::path(spec.source)).parent_path() / where).lexically_normal()};
+}
+
 // Registered when libsbsim loads, as the bundled services are.
 struct Registration {
     Registration() {
@@ -113,7 +126,9 @@ struct Registration {
                                                 {.check = [](const ServiceSpec& spec) { (void)serviceClass(spec); },
                                                  .create = [](const ServiceSpec& spec) -> std::unique_ptr<Service> {
                                                      return std::make_unique<PythonService>(serviceClass(spec));
-                                                 }});
+                                                 },
+                                                 .traits = traitsOf,
+                                                 .files = filesOf});
     }
 };
 const Registration kRegistration;

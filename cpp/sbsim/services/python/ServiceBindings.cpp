@@ -100,6 +100,17 @@ py::array columnView(const std::shared_ptr<MessageBatch>& batch, const std::vect
 
 py::tuple xy(const Eigen::Vector2d& p) { return py::make_tuple(p.x(), p.y()); }
 
+/// "station:sequence" (Denm.action, send_denm's answer) as an action id.
+facilities::ActionId actionOf(const std::string& text) {
+    const std::size_t colon = text.rfind(':');
+    const std::string digits = colon == std::string::npos ? std::string() : text.substr(colon + 1);
+    if (colon == 0 || digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
+        throw py::value_error("terminate_denm: '" + text + "' is not an action id ('station:sequence')");
+    }
+    return {text.substr(0, colon), static_cast<std::uint32_t>(std::stoul(digits))};
+}
+
 py::object studyValue(const std::optional<kernel::StudyParameters::Value>& v) {
     if (!v) return py::none();
     return std::visit([](const auto& x) -> py::object { return py::cast(x); }, *v);
@@ -270,6 +281,24 @@ void bindHost(py::module_& m) {
              [](const Host& h, std::string type, std::size_t bytes, py::object payload, bool camSecurity) {
                  h.get().sendMessage(std::move(type), bytes, std::move(payload), camSecurity);
              })
+        .def(
+            "send_denm",
+            [](const Host& h, int cause, int subcause, double area, double validity, double interval, double repetition,
+               std::optional<std::pair<double, double>> position, std::optional<double> relevance, int trafficClass) {
+                PythonService::DenmRequest r{.cause = cause,
+                                             .subcause = subcause,
+                                             .area = area,
+                                             .validity = seconds(validity, "send_denm validity"),
+                                             .interval = seconds(interval, "send_denm interval"),
+                                             .repetition = seconds(repetition, "send_denm repetition"),
+                                             .position = std::nullopt,
+                                             .relevance = relevance,
+                                             .trafficClass = trafficClass};
+                if (position) r.position = Eigen::Vector2d(position->first, position->second);
+                return h.get().sendDenm(r).str();
+            })
+        .def("terminate_denm",
+             [](const Host& h, const std::string& action) { return h.get().terminateDenm(actionOf(action)); })
         .def("schedule_after",
              [](const Host& h, double delay, py::object callback) {
                  return h.get().scheduleCallback(seconds(delay, "schedule_after"), std::move(callback));
