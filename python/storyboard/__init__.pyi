@@ -1,6 +1,6 @@
 # Types of the story API that sbsim provides to story scripts (implemented in C++).
 from collections.abc import Iterable, Iterator, Sequence
-from typing import Any, Protocol
+from typing import Any, Literal, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -161,6 +161,34 @@ class HeadwayCondition(Condition):
 class CollisionCondition(Condition):
     def __init__(self) -> None: ...
 
+class TraveledDistanceCondition(Condition):
+    """OpenSCENARIO's TraveledDistanceCondition: true once the vehicle drove at least ``distance`` m since it
+    departed (SUMO's odometer; a scenario's entities depart at its start, so: since the start)."""
+
+    distance: float
+    def __init__(self, distance: float) -> None: ...
+
+class RelativeDistanceCondition(Condition):
+    """OpenSCENARIO's RelativeDistanceCondition: the distance from the vehicle to vehicle ``vehicle`` compared
+    by ``rule`` (OpenSCENARIO's Rule names: lessThan, lessOrEqual, equalTo (within 0.01 m), greaterOrEqual,
+    greaterThan, notEqualTo) with ``value`` m; yields {vehicle}. ``kind`` (relativeDistanceType) is measured
+    in the vehicle's own frame: longitudinal along its heading, lateral across it, cartesian straight; between
+    the centres (reference points) or, ``freespace=True``, between the outlines (0 when they overlap)."""
+
+    vehicle: str
+    value: float
+    rule: str
+    kind: str
+    freespace: bool
+    def __init__(
+        self,
+        vehicle: str,
+        value: float,
+        rule: Literal["lessThan", "lessOrEqual", "equalTo", "greaterOrEqual", "greaterThan", "notEqualTo"] = "lessThan",
+        kind: Literal["longitudinal", "lateral", "cartesian"] = "cartesian",
+        freespace: bool = False,
+    ) -> None: ...
+
 class AndCondition(Condition):
     def __init__(self, a: Condition, b: Condition) -> None: ...
 
@@ -284,6 +312,93 @@ class RouteEffect(Effect):
     target_edge: str | None
     via: list[str]
     def __init__(self, target_edge: str | None = None, *, via: Iterable[str] | None = None) -> None: ...
+
+#: OpenSCENARIO's TransitionDynamics: dynamicsShape and dynamicsDimension.
+_TransitionShape = Literal["step", "linear", "cubic", "sinusoidal"]
+_TransitionDimension = Literal["time", "distance", "rate"]
+
+class SpeedChangeEffect(Effect):
+    """OpenSCENARIO's SpeedAction: from the vehicle's speed at activation to the target along
+    TransitionDynamics (``shape``, ``dimension``, ``value``: s for time, m driven for distance, m/s² for
+    rate, the change taking |Δv| / rate s), commanded each step (SUMO's setSpeed), the target held after while
+    the story is active; then SUMO has the speed again. The target (SpeedActionTarget) is ``target`` m/s
+    (AbsoluteTargetSpeed) or, with ``relative_to`` (RelativeTargetSpeed's entityRef), that vehicle's speed
+    plus ``target`` m/s (``value_type="delta"``) or times ``target`` (``"factor"``), read at activation or,
+    ``continuous=True``, every step. Exact by default (SUMO's acceleration bounds and safe speed off, the
+    speed limit disregarded; the vehicle's max speed and any SpeedEffect cap still hold); ``safe_gap=True``
+    keeps SUMO's safe gap to the leader, which also bounds the change to the vehicle's accel/decel. A
+    StopEffect or EmergencyStopEffect rules over it while active. Domain "speed"."""
+
+    target: float
+    shape: str
+    dimension: str
+    value: float
+    relative_to: str | None
+    value_type: str
+    continuous: bool
+    safe_gap: bool
+    def __init__(
+        self,
+        target: float,
+        shape: _TransitionShape = "step",
+        dimension: _TransitionDimension = "time",
+        value: float = 0.0,
+        *,
+        relative_to: str | None = None,
+        value_type: Literal["delta", "factor"] = "delta",
+        continuous: bool = False,
+        safe_gap: bool = False,
+    ) -> None: ...
+
+class LaneChangeEffect(Effect):
+    """OpenSCENARIO's LaneChangeAction: a lateral manoeuvre from where the vehicle is at activation to the
+    centre of the target lane plus ``offset`` m (targetLaneOffset; positive to the left) along
+    LaneChangeActionDynamics (``shape``, ``dimension``: time s, distance m driven, or rate m/s across),
+    moved each step through SUMO's sublane model (changeSublane; the run needs ``--lateral-resolution``, else
+    exit code 2), and held while the story is active with SUMO's own lane changes off; then SUMO's lane-change
+    model decides again. The target lane (LaneChangeTarget) is ``lane``, SUMO's index from the right
+    (AbsoluteTargetLane, mapped to SUMO's index), or ``lane`` lanes to the left (negative: right) of the
+    vehicle's own lane (``relative=True``) or of vehicle ``relative_to``'s lane at activation
+    (RelativeTargetLane). Domain "lane"."""
+
+    lane: int
+    shape: str
+    dimension: str
+    value: float
+    relative: bool
+    relative_to: str | None
+    offset: float
+    def __init__(
+        self,
+        lane: int,
+        shape: _TransitionShape = "step",
+        dimension: _TransitionDimension = "time",
+        value: float = 0.0,
+        *,
+        relative: bool = False,
+        relative_to: str | None = None,
+        offset: float = 0.0,
+    ) -> None: ...
+
+class LaneOffsetEffect(Effect):
+    """OpenSCENARIO's LaneOffsetAction (AbsoluteTargetLaneOffset): the vehicle moves ``offset`` m (positive to
+    the left) off the centre of the lane it is on at activation with ``shape`` over ``duration`` s or, as
+    LaneOffsetActionDynamics gives it, within ``max_lateral_acc`` m/s² (cubic: T = sqrt(6 d / a), sinusoidal:
+    T = pi sqrt(d / (2 a)), linear as cubic), each step through SUMO's sublane model, and holds it while the
+    story is active; then SUMO aligns the vehicle again. Domain "lane"."""
+
+    offset: float
+    shape: str
+    duration: float | None
+    max_lateral_acc: float | None
+    def __init__(
+        self,
+        offset: float,
+        shape: _TransitionShape = "step",
+        *,
+        duration: float | None = None,
+        max_lateral_acc: float | None = None,
+    ) -> None: ...
 
 EffectFactory = Effect
 SpeedEffectFactory = SpeedEffect

@@ -34,6 +34,9 @@ public:
     virtual const std::vector<std::string>& others() const = 0;
     /// Emits a StoryboardSignal for this vehicle (and logs it); `onExit` when the story deactivates.
     virtual void emitSignal(const std::string& cause, bool onExit = false) = 0;
+    /// Another vehicle's controller, for effects that follow it (a speed relative to its speed);
+    /// its live queries throw while it does not run.
+    virtual std::shared_ptr<traffic::VehicleController> controllerOf(const std::string& id) = 0;
 };
 
 /// An effect of a story (Artery's EffectFactory role): apply() when the story activates for a

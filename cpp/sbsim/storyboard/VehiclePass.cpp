@@ -33,6 +33,10 @@ public:
         }
         return others_;
     }
+    std::shared_ptr<traffic::VehicleController> controllerOf(const std::string& id) override {
+        const std::shared_ptr<traffic::VehicleRegistry::Vehicle> other = pass_.registry_.of(id);
+        return {other, other->controller.get()};
+    }
     void emitSignal(const std::string& cause, bool onExit) override {
         ++pass_.signalsByCause_[cause];
         if (pass_.log_ != nullptr) pass_.log_->signal(pass_.now_, story_.name(), id_, cause, others(), onExit);

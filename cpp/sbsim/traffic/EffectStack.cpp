@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 namespace sbsim::traffic {
 
@@ -54,6 +55,75 @@ void EffectStack::pushRoute(Token token, Route route) {
         applyRoute(*v, before ? before->via : routes_.original().via);
 }
 
+void EffectStack::pushSpeedTransition(Token token, SpeedTransition transition) {
+    if (speedTransitions_.empty()) {
+        // Under an EmergencyStop the live mode is its 0: the vehicle's own is the one it recorded.
+        transitionSpeedMode_ = recordedSpeedMode_ ? *recordedSpeedMode_ : vehicle_->speedMode();
+        commandedSpeedMode_.reset();
+    }
+    speedTransitions_.emplace_back(token, std::move(transition));
+}
+
+void EffectStack::settleSpeedTransition(double speed, kernel::SimTime now) {
+    SpeedTransition& transition = speedTransitions_.back().second;
+    const int mode = transition.speedMode(transitionSpeedMode_);
+    if (mode != commandedSpeedMode_) {
+        vehicle_->setSpeedMode(mode);
+        commandedSpeedMode_ = mode;
+    }
+    const double driven = transition.needsOdometer() ? vehicle_->odometer() : 0.0;
+    vehicle_->setSpeed(transition.next(now.seconds(), vehicle_->stepLength(), speed, driven));
+}
+
+void EffectStack::endSpeedTransitions() {
+    commandedSpeedMode_.reset();
+    if (holds_.empty()) vehicle_->setSpeed(-1);
+    if (recordedSpeedMode_) {
+        recordedSpeedMode_ = transitionSpeedMode_;  // an EmergencyStop gives it back when it ends
+    } else {
+        vehicle_->setSpeedMode(transitionSpeedMode_);
+    }
+}
+
+// The keys of SUMO's sublane model this class lifts while a lateral transition runs.
+namespace {
+constexpr const char* kAccelLat = "laneChangeModel.lcAccelLat";
+// Fast enough for any lateral move of one step: the transition's shape alone says how fast.
+constexpr double kUnboundedLat = 1000.0;
+}  // namespace
+
+void EffectStack::pushLateralTransition(Token token, LateralTransition transition) {
+    if (laterals_.empty()) {
+        if (!vehicle_->sublaneModel()) {
+            throw std::runtime_error(
+                "a lateral transition needs SUMO's sublane model: run SUMO with --lateral-resolution (e.g. 0.8)");
+        }
+        lateralSettings_ = {vehicle_->laneChangeMode(), vehicle_->maxSpeedLat(), vehicle_->parameter(kAccelLat)};
+        vehicle_->setLaneChangeMode(0);  // SUMO's own lane changes would fight the manoeuvre
+        vehicle_->setMaxSpeedLat(kUnboundedLat);
+        vehicle_->setParameter(kAccelLat, fmt::format("{:g}", kUnboundedLat));
+    }
+    laterals_.emplace_back(token, std::move(transition));
+}
+
+void EffectStack::settleLateral(double speed, kernel::SimTime now) {
+    const std::string road = vehicle_->roadId();
+    // On a junction (SUMO's internal roads, ':...') or off the road: the vehicle goes on as it is.
+    if (road.empty() || road.front() == ':') return;
+    LateralTransition& transition = laterals_.back().second;
+    const double driven = transition.needsOdometer() ? vehicle_->odometer() : 0.0;
+    const LateralPlace place{vehicle_->laneIndex(), vehicle_->lateralLanePosition()};
+    const double move =
+        transition.next(now.seconds(), vehicle_->stepLength(), place, vehicle_->laneWidths(), speed, driven);
+    vehicle_->changeSublane(move);
+}
+
+void EffectStack::endLaterals() {
+    vehicle_->setLaneChangeMode(lateralSettings_.laneChangeMode);
+    vehicle_->setMaxSpeedLat(lateralSettings_.maxSpeedLat);
+    if (!lateralSettings_.accelLat.empty()) vehicle_->setParameter(kAccelLat, lateralSettings_.accelLat);
+}
+
 std::string EffectStack::ownType() const {
     // A command that changed one vehicle's type parameters (setMaxSpeed) left it on SUMO's private
     // copy "<type>@<id>", which SUMO drops when the type is replaced: the type to come back is the
@@ -99,6 +169,13 @@ void EffectStack::remove(Token token) {
         if (const auto v = colors_.remove(token)) vehicle_->setColor(*v);
     } else if (lanes_.contains(token)) {
         if (lanes_.remove(token)) lanes_.empty() ? releaseLane() : holdLane();
+    } else if (const auto t = std::find_if(speedTransitions_.begin(), speedTransitions_.end(), matches);
+               t != speedTransitions_.end()) {
+        speedTransitions_.erase(t);  // an older one rules from the next settle() on
+        if (speedTransitions_.empty()) endSpeedTransitions();
+    } else if (const auto l = std::find_if(laterals_.begin(), laterals_.end(), matches); l != laterals_.end()) {
+        laterals_.erase(l);
+        if (laterals_.empty()) endLaterals();
     } else if (routes_.contains(token)) {
         const std::vector<std::string> viaBefore = routes_.effective()->via;
         if (const auto v = routes_.remove(token)) applyRoute(*v, viaBefore);
@@ -189,6 +266,11 @@ void EffectStack::applyHold(std::optional<Hold> before) {
     const auto now = effectiveHold();
     if (now == before) return;
     emergencyHeld_ = false;
+    if (commandedSpeedMode_) {
+        // A hold brakes in the vehicle's own mode; a speed transition sets its own again after.
+        vehicle_->setSpeedMode(transitionSpeedMode_);
+        commandedSpeedMode_.reset();
+    }
     if (!now) {
         vehicle_->setSpeed(-1);
         if (recordedSpeedMode_) vehicle_->setSpeedMode(*recordedSpeedMode_);

@@ -10,7 +10,9 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/traffic/Color.h"
+#include "sbsim/traffic/LateralTransition.h"
 #include "sbsim/traffic/LatestWins.h"
+#include "sbsim/traffic/SpeedTransition.h"
 #include "sbsim/traffic/VehicleController.h"
 
 namespace sbsim::traffic {
@@ -30,6 +32,13 @@ namespace sbsim::traffic {
 ///   count of the road the vehicle is on; after the last, the vehicle changes lanes freely again;
 /// - route: the most recently activated route change rules; the destination (and via edges) from
 ///   before the first comes back after the last, by routing the vehicle from where it is then.
+/// - speed transition: the most recently activated one commands the speed each step (setSpeed),
+///   in the speed mode SpeedTransition::speedMode() says (exact, or keeping SUMO's safe gap; the
+///   vehicle's max speed, hence any cap, holds either way); a Stop
+///   or EmergencyStop rules over it while active; after the last, SUMO has the speed again;
+/// - lateral transition: the most recently activated lane change or lane offset moves the vehicle
+///   across its road each step (changeSublane, SUMO's sublane model), with SUMO's own lane changes
+///   off and its lateral speed and acceleration bounds lifted; after the last they come back.
 /// A command goes to SUMO only when a domain's effective value changes (and to keep a lane).
 class SBSIM_API EffectStack {
 public:
@@ -60,6 +69,11 @@ public:
     /// Keeps the vehicle on lane `index` (from the right, 0-based; clamped to the road's lanes).
     void pushLane(Token token, int index);
     void pushRoute(Token token, Route route);
+    /// A speed change commanded step by step from the next settle() on.
+    void pushSpeedTransition(Token token, SpeedTransition transition);
+    /// A lateral manoeuvre commanded step by step from the next settle() on; throws
+    /// std::runtime_error when SUMO runs without its sublane model.
+    void pushLateralTransition(Token token, LateralTransition transition);
     /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
     void remove(Token token);
     /// Called each step with the vehicle's speed while settling(): an EmergencyStop braking with
@@ -70,14 +84,19 @@ public:
         if (!holds_.empty()) settleHold(speed);
         if (!lanes_.empty()) holdLane();
         if (ramp_) settleRamp(now);
+        if (!speedTransitions_.empty() && holds_.empty()) settleSpeedTransition(speed, now);
+        if (!laterals_.empty()) settleLateral(speed, now);
     }
 
     bool empty() const {
         return caps_.empty() && holds_.empty() && factors_.empty() && types_.empty() && colors_.empty() &&
-               lanes_.empty() && routes_.empty();
+               lanes_.empty() && routes_.empty() && speedTransitions_.empty() && laterals_.empty();
     }
     /// Whether settle() has work: a Stop, EmergencyStop or lane is active, or a gradual cap ramps.
-    bool settling() const { return !holds_.empty() || !lanes_.empty() || ramp_.has_value(); }
+    bool settling() const {
+        return !holds_.empty() || !lanes_.empty() || ramp_.has_value() || !speedTransitions_.empty() ||
+               !laterals_.empty();
+    }
     std::optional<double> effectiveCap() const;
     std::optional<Hold> effectiveHold() const;
     std::optional<double> effectiveSpeedFactor() const { return factors_.effective(); }
@@ -85,6 +104,11 @@ public:
     std::optional<Color> effectiveColor() const { return colors_.effective(); }
     std::optional<int> effectiveLane() const { return lanes_.effective(); }
     std::optional<Route> effectiveRoute() const { return routes_.effective(); }
+    /// The ruling speed transition / lateral transition, if any.
+    const SpeedTransition* effectiveSpeedTransition() const {
+        return speedTransitions_.empty() ? nullptr : &speedTransitions_.back().second;
+    }
+    const LateralTransition* effectiveLateral() const { return laterals_.empty() ? nullptr : &laterals_.back().second; }
 
 private:
     void settleHold(double speed);
@@ -98,6 +122,10 @@ private:
     Route ownRoute() const;
     void applyRoute(const Route& route, const std::vector<std::string>& viaBefore);
     void warn(const std::string& message) const;
+    void settleSpeedTransition(double speed, kernel::SimTime now);
+    void settleLateral(double speed, kernel::SimTime now);
+    void endSpeedTransitions();
+    void endLaterals();
 
     VehicleController* vehicle_;
     Warn warn_;
@@ -122,6 +150,16 @@ private:
     std::string laneRoad_;  // the road whose lane count laneRoadLanes_ is
     int laneRoadLanes_ = 0;
     LatestWins<Route> routes_;
+    std::vector<std::pair<Token, SpeedTransition>> speedTransitions_;  // activation order
+    int transitionSpeedMode_ = 0;            // the speed mode from before the first speed transition
+    std::optional<int> commandedSpeedMode_;  // the one a speed transition set last, if still in force
+    std::vector<std::pair<Token, LateralTransition>> laterals_;  // activation order
+    struct LateralSettings {
+        int laneChangeMode = 0;
+        double maxSpeedLat = 0;
+        std::string accelLat;
+    };
+    LateralSettings lateralSettings_;  // from before the first lateral transition
 };
 
 }  // namespace sbsim::traffic

@@ -6,6 +6,7 @@
 #include <libsumo/Vehicle.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace sbsim::traffic {
 
@@ -49,5 +50,11 @@ std::optional<TrafficQueries::SignalPassage> SumoQueries::signalPassage(const st
     const auto index = static_cast<std::size_t>(link->index);
     return SignalPassage{*link, index < state.size() ? state[index] : 'O'};
 }
+
+double TrafficQueries::odometer(const std::string& /*vehicle*/) {
+    throw std::logic_error("this TrafficQueries does not answer odometer()");
+}
+
+double SumoQueries::odometer(const std::string& vehicle) { return libsumo::Vehicle::getDistance(vehicle); }
 
 }  // namespace sbsim::traffic

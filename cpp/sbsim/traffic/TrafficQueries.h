@@ -44,6 +44,9 @@ public:
     /// --time-to-teleport) passes no line.
     virtual std::optional<SignalPassage> signalPassage(const std::string& vehicle, const std::string& from,
                                                        const std::string& to) = 0;
+    /// The distance (m) `vehicle` drove since it departed (SUMO's odometer). Models that do not
+    /// answer it throw std::logic_error.
+    virtual double odometer(const std::string& vehicle);
 };
 
 /// TrafficQueries answered by libsumo (a loaded SUMO).
@@ -53,6 +56,7 @@ public:
     const std::vector<Collision>& collisions(kernel::SimTime now) override;
     std::optional<SignalPassage> signalPassage(const std::string& vehicle, const std::string& from,
                                                const std::string& to) override;
+    double odometer(const std::string& vehicle) override;
 
 private:
     std::optional<SignalLinks> signals_;  // read at the first question (SUMO is loaded by then)

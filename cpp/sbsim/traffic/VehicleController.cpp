@@ -1,6 +1,8 @@
 #include "sbsim/traffic/VehicleController.h"
 
 #include <libsumo/Edge.h>
+#include <libsumo/Lane.h>
+#include <libsumo/Simulation.h>
 #include <libsumo/TraCIDefs.h>
 #include <libsumo/Vehicle.h>
 
@@ -79,6 +81,30 @@ void VehicleController::changeTarget(const std::string& edge) {
     } catch (const libsumo::TraCIException& e) {
         throw CommandRefused(e.what());
     }
+}
+
+double VehicleController::stepLength() const { return libsumo::Simulation::getDeltaT(); }
+double VehicleController::odometer() const { return Vehicle::getDistance(id_); }
+double VehicleController::lateralLanePosition() const { return Vehicle::getLateralLanePosition(id_); }
+std::vector<double> VehicleController::laneWidths() const {
+    const std::string road = Vehicle::getRoadID(id_);
+    const int lanes = libsumo::Edge::getLaneNumber(road);
+    std::vector<double> widths;
+    widths.reserve(static_cast<std::size_t>(lanes));
+    for (int i = 0; i < lanes; ++i) widths.push_back(libsumo::Lane::getWidth(road + "_" + std::to_string(i)));
+    return widths;
+}
+bool VehicleController::sublaneModel() const {
+    return std::stod(libsumo::Simulation::getOption("lateral-resolution")) > 0;
+}
+void VehicleController::changeSublane(double latDist) { Vehicle::changeSublane(id_, latDist); }
+int VehicleController::laneChangeMode() const { return Vehicle::getLaneChangeMode(id_); }
+void VehicleController::setLaneChangeMode(int mode) { Vehicle::setLaneChangeMode(id_, mode); }
+double VehicleController::maxSpeedLat() const { return Vehicle::getMaxSpeedLat(id_); }
+void VehicleController::setMaxSpeedLat(double mps) { Vehicle::setMaxSpeedLat(id_, mps); }
+std::string VehicleController::parameter(const std::string& key) const { return Vehicle::getParameter(id_, key); }
+void VehicleController::setParameter(const std::string& key, const std::string& value) {
+    Vehicle::setParameter(id_, key, value);
 }
 
 }  // namespace sbsim::traffic

@@ -93,6 +93,27 @@ public:
     /// when the route does not pass there (SUMO's getDrivingDistance2D).
     virtual std::optional<double> drivingDistanceTo(double x, double y) const;
 
+    // Added after the others, for the same reason: what OpenSCENARIO-grade transitions ask.
+    /// SUMO's step length (s).
+    virtual double stepLength() const;
+    /// The distance (m) the vehicle drove since it departed (SUMO's odometer).
+    virtual double odometer() const;
+    /// Its centre's lateral offset (m) from its lane's centre, positive to the left.
+    virtual double lateralLanePosition() const;
+    /// The widths (m) of the lanes of the road it is on, from the right.
+    virtual std::vector<double> laneWidths() const;
+    /// Whether SUMO runs its sublane model (--lateral-resolution), which changeSublane needs.
+    virtual bool sublaneModel() const;
+    /// Moves the vehicle `latDist` m to the left (negative: right) within its road, in the next step.
+    virtual void changeSublane(double latDist);
+    virtual int laneChangeMode() const;
+    virtual void setLaneChangeMode(int mode);
+    virtual double maxSpeedLat() const;
+    virtual void setMaxSpeedLat(double mps);
+    /// A parameter of the vehicle (e.g. "laneChangeModel.lcAccelLat").
+    virtual std::string parameter(const std::string& key) const;
+    virtual void setParameter(const std::string& key, const std::string& value);
+
 private:
     std::string id_;
     MaxSpeedListener* listener_;

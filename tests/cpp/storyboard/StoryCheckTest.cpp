@@ -34,22 +34,27 @@
 #include "sbsim/storyboard/conditions/NotCondition.h"
 #include "sbsim/storyboard/conditions/OrCondition.h"
 #include "sbsim/storyboard/conditions/PolygonCondition.h"
+#include "sbsim/storyboard/conditions/RelativeDistanceCondition.h"
 #include "sbsim/storyboard/conditions/RisingCondition.h"
 #include "sbsim/storyboard/conditions/RoadCondition.h"
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 #include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
 #include "sbsim/storyboard/conditions/StandstillCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/TraveledDistanceCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
 #include "sbsim/storyboard/criteria/WarnedBefore.h"
 #include "sbsim/storyboard/effects/CloseRoadEffect.h"
 #include "sbsim/storyboard/effects/ColorEffect.h"
 #include "sbsim/storyboard/effects/EmergencyStopEffect.h"
+#include "sbsim/storyboard/effects/LaneChangeEffect.h"
 #include "sbsim/storyboard/effects/LaneEffect.h"
+#include "sbsim/storyboard/effects/LaneOffsetEffect.h"
 #include "sbsim/storyboard/effects/RouteEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
+#include "sbsim/storyboard/effects/SpeedChangeEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/SpeedFactorEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
@@ -126,6 +131,13 @@ TEST(StoryCheck, EveryConditionDescribesItselfWithItsArguments) {
         {std::make_shared<LaneCondition>(Ids{"b12_0"}), "LaneCondition(b12_0)"},
         {std::make_shared<CollisionCondition>(), "CollisionCondition"},
         {std::make_shared<EquippedCondition>(), "EquippedCondition()"},
+        {std::make_shared<TraveledDistanceCondition>(250), "TraveledDistanceCondition(250 m)"},
+        {std::make_shared<RelativeDistanceCondition>("lead", 20, ComparisonRule::LessThan,
+                                                     RelativeDistanceCondition::Kind::Longitudinal, true),
+         "RelativeDistanceCondition(vehicle lead, longitudinal freespace, lessThan 20 m)"},
+        {std::make_shared<RelativeDistanceCondition>("lead", 3.5, ComparisonRule::GreaterOrEqual,
+                                                     RelativeDistanceCondition::Kind::Cartesian, false),
+         "RelativeDistanceCondition(vehicle lead, cartesian reference points, greaterOrEqual 3.5 m)"},
         // Logic nodes are their name: their operands are printed below them.
         {std::make_shared<NotCondition>(window(0, 1)), "NotCondition"},
         {std::make_shared<AllCondition>(std::vector<ConditionPtr>{window(0, 1)}), "AllCondition"},
@@ -147,6 +159,32 @@ TEST(StoryCheck, EveryEffectDescribesItselfWithItsArguments) {
         {std::make_shared<ColorEffect>(traffic::Color{1, 2, 3, 4}), "ColorEffect(1, 2, 3, 4)"},
         {std::make_shared<StopEffect>(), "StopEffect"},
         {std::make_shared<EmergencyStopEffect>(), "EmergencyStopEffect"},
+        {std::make_shared<SpeedChangeEffect>(
+             20, traffic::Transition{traffic::Transition::Shape::Linear, traffic::Transition::Dimension::Time, 4}),
+         "SpeedChangeEffect(20 m/s, linear over 4 s)"},
+        {std::make_shared<SpeedChangeEffect>(
+             -5, traffic::Transition{traffic::Transition::Shape::Cubic, traffic::Transition::Dimension::Rate, 2},
+             "lead", traffic::SpeedTarget::Kind::Delta, true, true),
+         "SpeedChangeEffect(lead's speed -5 m/s, continuous, cubic at 2 m/s², safe gap)"},
+        {std::make_shared<SpeedChangeEffect>(0.5, traffic::Transition{}, "lead", traffic::SpeedTarget::Kind::Factor),
+         "SpeedChangeEffect(lead's speed x 0.5, step)"},
+        {std::make_shared<LaneChangeEffect>(
+             1, traffic::Transition{traffic::Transition::Shape::Sinusoidal, traffic::Transition::Dimension::Time, 3}),
+         "LaneChangeEffect(lane 1, sinusoidal over 3 s)"},
+        {std::make_shared<LaneChangeEffect>(
+             -1, traffic::Transition{traffic::Transition::Shape::Linear, traffic::Transition::Dimension::Distance, 60},
+             LaneChangeEffect::Relative::Vehicle, "lead", 0.5),
+         "LaneChangeEffect(lead's lane -1 +0.5 m, linear over 60 m)"},
+        {std::make_shared<LaneChangeEffect>(1, traffic::Transition{}, LaneChangeEffect::Relative::Self),
+         "LaneChangeEffect(own lane +1, step)"},
+        {std::make_shared<LaneOffsetEffect>(
+             0.6, traffic::Transition{traffic::Transition::Shape::Cubic, traffic::Transition::Dimension::Time, 2},
+             std::nullopt),
+         "LaneOffsetEffect(+0.6 m, cubic over 2 s)"},
+        {std::make_shared<LaneOffsetEffect>(
+             -0.4, traffic::Transition{traffic::Transition::Shape::Sinusoidal, traffic::Transition::Dimension::Time, 1},
+             0.5),
+         "LaneOffsetEffect(-0.4 m, sinusoidal at most 0.5 m/s²)"},
     };
     for (const auto& [effect, text] : cases) EXPECT_EQ(effect->describe(), text);
     SpawnEffect::Spec spec;

@@ -28,12 +28,14 @@
 #include "sbsim/storyboard/conditions/NotCondition.h"
 #include "sbsim/storyboard/conditions/OrCondition.h"
 #include "sbsim/storyboard/conditions/PolygonCondition.h"
+#include "sbsim/storyboard/conditions/RelativeDistanceCondition.h"
 #include "sbsim/storyboard/conditions/RisingCondition.h"
 #include "sbsim/storyboard/conditions/RoadCondition.h"
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
 #include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
 #include "sbsim/storyboard/conditions/StandstillCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/TraveledDistanceCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
@@ -201,6 +203,46 @@ void bindConditions(py::module_& m) {
              }),
              py::arg("seconds"));
     py::class_<CollisionCondition, Condition, py::smart_holder>(m, "CollisionCondition").def(py::init<>());
+    py::class_<TraveledDistanceCondition, Condition, py::smart_holder>(m, "TraveledDistanceCondition")
+        .def(py::init([](const py::object& distance) {
+                 const double d = toNumber(distance, "TraveledDistanceCondition distance");
+                 if (d < 0) throw py::value_error("TraveledDistanceCondition distance must be >= 0 m");
+                 return std::make_shared<TraveledDistanceCondition>(d);
+             }),
+             py::arg("distance"))
+        .def_property_readonly("distance", &TraveledDistanceCondition::distance);
+    py::class_<RelativeDistanceCondition, Condition, py::smart_holder>(m, "RelativeDistanceCondition")
+        .def(py::init([](const std::string& vehicle, const py::object& value, const std::string& rule,
+                         const std::string& kind, bool freespace) {
+                 if (vehicle.empty()) throw py::value_error("RelativeDistanceCondition vehicle id is empty");
+                 const double d = toNumber(value, "RelativeDistanceCondition value");
+                 if (d < 0) throw py::value_error("RelativeDistanceCondition value must be >= 0 m");
+                 const auto r = ruleNamed(rule);
+                 if (!r) {
+                     throw py::value_error(
+                         "RelativeDistanceCondition rule must be 'lessThan', 'lessOrEqual', 'equalTo', "
+                         "'greaterOrEqual', 'greaterThan' or 'notEqualTo', got '" +
+                         rule + "'");
+                 }
+                 const auto k = RelativeDistanceCondition::kindNamed(kind);
+                 if (!k) {
+                     throw py::value_error(
+                         "RelativeDistanceCondition kind must be 'longitudinal', 'lateral' or 'cartesian', got '" +
+                         kind + "'");
+                 }
+                 return std::make_shared<RelativeDistanceCondition>(vehicle, d, *r, *k, freespace);
+             }),
+             py::arg("vehicle"), py::arg("value"), py::arg("rule") = "lessThan", py::arg("kind") = "cartesian",
+             py::arg("freespace") = false)
+        .def_property_readonly("vehicle", &RelativeDistanceCondition::vehicle)
+        .def_property_readonly("value", &RelativeDistanceCondition::value)
+        .def_property_readonly("rule",
+                               [](const RelativeDistanceCondition& c) { return std::string(ruleName(c.rule())); })
+        .def_property_readonly("kind",
+                               [](const RelativeDistanceCondition& c) {
+                                   return std::string(RelativeDistanceCondition::kindName(c.kind()));
+                               })
+        .def_property_readonly("freespace", &RelativeDistanceCondition::freespace);
     py::class_<AndCondition, Condition, py::smart_holder>(m, "AndCondition")
         .def(py::init<ConditionPtr, ConditionPtr>(), py::arg("a"), py::arg("b"));
     py::class_<OrCondition, Condition, py::smart_holder>(m, "OrCondition")

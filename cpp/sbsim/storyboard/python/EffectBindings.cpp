@@ -6,10 +6,13 @@
 
 #include "sbsim/storyboard/effects/ColorEffect.h"
 #include "sbsim/storyboard/effects/EmergencyStopEffect.h"
+#include "sbsim/storyboard/effects/LaneChangeEffect.h"
 #include "sbsim/storyboard/effects/LaneEffect.h"
+#include "sbsim/storyboard/effects/LaneOffsetEffect.h"
 #include "sbsim/storyboard/effects/RouteEffect.h"
 #include "sbsim/storyboard/effects/SetSpeedEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
+#include "sbsim/storyboard/effects/SpeedChangeEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/SpeedFactorEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
@@ -73,6 +76,87 @@ std::shared_ptr<RouteEffect> makeRouteEffect(const py::object& targetEdge, const
     return std::make_shared<RouteEffect>(std::nullopt, std::move(edges));
 }
 
+/// OpenSCENARIO's TransitionDynamics: shape "step" | "linear" | "cubic" | "sinusoidal", dimension
+/// "time" | "distance" | "rate" (or those given), value.
+traffic::Transition toTransition(const std::string& shape, const std::string& dimension, const py::object& value,
+                                 const char* who) {
+    const auto s = traffic::Transition::shapeNamed(shape);
+    if (!s) {
+        throw py::value_error(std::string(who) + " shape must be 'step', 'linear', 'cubic' or 'sinusoidal', got '" +
+                              shape + "'");
+    }
+    const auto d = traffic::Transition::dimensionNamed(dimension);
+    if (!d) {
+        throw py::value_error(std::string(who) + " dimension must be 'time', 'distance' or 'rate', got '" + dimension +
+                              "'");
+    }
+    const std::string what = std::string(who) + " value";
+    const double v = toNumber(value, what.c_str());
+    if (v < 0) throw py::value_error(what + " must be >= 0");
+    if (*s != traffic::Transition::Shape::Step && v == 0)
+        throw py::value_error(what + " must be > 0 for a '" + shape + "' transition");
+    return {*s, *d, v};
+}
+
+std::shared_ptr<SpeedChangeEffect> makeSpeedChangeEffect(const py::object& target, const std::string& shape,
+                                                         const std::string& dimension, const py::object& value,
+                                                         const std::optional<std::string>& relativeTo,
+                                                         const std::string& valueType, bool continuous, bool safeGap) {
+    const double t = toNumber(target, "SpeedChangeEffect target");
+    const traffic::Transition dynamics = toTransition(shape, dimension, value, "SpeedChangeEffect");
+    traffic::SpeedTarget::Kind kind = traffic::SpeedTarget::Kind::Delta;
+    if (valueType == "factor") {
+        kind = traffic::SpeedTarget::Kind::Factor;
+    } else if (valueType != "delta") {
+        throw py::value_error("SpeedChangeEffect value_type must be 'delta' or 'factor', got '" + valueType + "'");
+    }
+    if (!relativeTo && (valueType != "delta" || continuous))
+        throw py::value_error("SpeedChangeEffect value_type and continuous need relative_to, the vehicle followed");
+    if (relativeTo && relativeTo->empty()) throw py::value_error("SpeedChangeEffect relative_to needs a vehicle id");
+    if (!relativeTo && t < 0) throw py::value_error("SpeedChangeEffect needs a target speed >= 0 m/s");
+    if (kind == traffic::SpeedTarget::Kind::Factor && t < 0)
+        throw py::value_error("SpeedChangeEffect needs a factor >= 0");
+    return std::make_shared<SpeedChangeEffect>(t, dynamics, relativeTo, kind, continuous, safeGap);
+}
+
+std::shared_ptr<LaneChangeEffect> makeLaneChangeEffect(const py::object& lane, const std::string& shape,
+                                                       const std::string& dimension, const py::object& value,
+                                                       bool relative, const std::optional<std::string>& relativeTo,
+                                                       const py::object& offset) {
+    if (!py::isinstance<py::int_>(lane) || py::isinstance<py::bool_>(lane))
+        throw py::type_error("LaneChangeEffect needs a whole lane number, got " + py::repr(lane).cast<std::string>());
+    const int index = lane.cast<int>();
+    if (relative && relativeTo)
+        throw py::value_error("LaneChangeEffect: relative=True (own lane) or relative_to=vehicle, not both");
+    if (relativeTo && relativeTo->empty()) throw py::value_error("LaneChangeEffect relative_to needs a vehicle id");
+    using Relative = LaneChangeEffect::Relative;
+    const Relative kind = relativeTo ? Relative::Vehicle : relative ? Relative::Self : Relative::Absolute;
+    if (kind == Relative::Absolute && index < 0)
+        throw py::value_error("LaneChangeEffect needs a lane index >= 0 (or relative=True), got " +
+                              std::to_string(index));
+    return std::make_shared<LaneChangeEffect>(index, toTransition(shape, dimension, value, "LaneChangeEffect"), kind,
+                                              relativeTo, toNumber(offset, "LaneChangeEffect offset"));
+}
+
+std::shared_ptr<LaneOffsetEffect> makeLaneOffsetEffect(const py::object& offset, const std::string& shape,
+                                                       const py::object& duration, const py::object& maxLateralAcc) {
+    const double o = toNumber(offset, "LaneOffsetEffect offset");
+    if (duration.is_none() == maxLateralAcc.is_none() && shape != "step")
+        throw py::value_error("LaneOffsetEffect needs duration=seconds or max_lateral_acc=m/s², one of them");
+    if (!maxLateralAcc.is_none()) {
+        const double a = toNumber(maxLateralAcc, "LaneOffsetEffect max_lateral_acc");
+        if (a <= 0) throw py::value_error("LaneOffsetEffect max_lateral_acc must be > 0");
+        return std::make_shared<LaneOffsetEffect>(o, toTransition(shape, "time", py::float_(1.0), "LaneOffsetEffect"),
+                                                  a);
+    }
+    const py::object seconds = duration.is_none() ? py::object(py::float_(0.0)) : duration;
+    return std::make_shared<LaneOffsetEffect>(o, toTransition(shape, "time", seconds, "LaneOffsetEffect"),
+                                              std::nullopt);
+}
+
+std::string shapeName(const traffic::Transition& t) { return std::string(traffic::Transition::name(t.shape)); }
+std::string dimensionName(const traffic::Transition& t) { return std::string(traffic::Transition::name(t.dimension)); }
+
 }  // namespace
 
 void bindEffects(py::module_& m) {
@@ -131,6 +215,48 @@ void bindEffects(py::module_& m) {
              py::arg("via") = py::none())
         .def_property_readonly("target_edge", [](const RouteEffect& e) { return e.route().target; })
         .def_property_readonly("via", [](const RouteEffect& e) { return e.route().via; });
+    py::class_<SpeedChangeEffect, Effect, py::smart_holder>(m, "SpeedChangeEffect")
+        .def(py::init(&makeSpeedChangeEffect), py::arg("target"), py::arg("shape") = "step",
+             py::arg("dimension") = "time", py::arg("value") = 0.0, py::kw_only(), py::arg("relative_to") = py::none(),
+             py::arg("value_type") = "delta", py::arg("continuous") = false, py::arg("safe_gap") = false)
+        .def_property_readonly("target", &SpeedChangeEffect::target)
+        .def_property_readonly(
+            "shape",
+            [](const SpeedChangeEffect& e) { return std::string(traffic::Transition::name(e.dynamics().shape)); })
+        .def_property_readonly(
+            "dimension",
+            [](const SpeedChangeEffect& e) { return std::string(traffic::Transition::name(e.dynamics().dimension)); })
+        .def_property_readonly("value", [](const SpeedChangeEffect& e) { return e.dynamics().value; })
+        .def_property_readonly("relative_to", &SpeedChangeEffect::relativeTo)
+        .def_property_readonly("value_type",
+                               [](const SpeedChangeEffect& e) {
+                                   return e.kind() == traffic::SpeedTarget::Kind::Factor ? "factor" : "delta";
+                               })
+        .def_property_readonly("continuous", &SpeedChangeEffect::continuous)
+        .def_property_readonly("safe_gap", &SpeedChangeEffect::safeGap);
+    py::class_<LaneChangeEffect, Effect, py::smart_holder>(m, "LaneChangeEffect")
+        .def(py::init(&makeLaneChangeEffect), py::arg("lane"), py::arg("shape") = "step", py::arg("dimension") = "time",
+             py::arg("value") = 0.0, py::kw_only(), py::arg("relative") = false, py::arg("relative_to") = py::none(),
+             py::arg("offset") = 0.0)
+        .def_property_readonly("lane", &LaneChangeEffect::lane)
+        .def_property_readonly("shape", [](const LaneChangeEffect& e) { return shapeName(e.dynamics()); })
+        .def_property_readonly("dimension", [](const LaneChangeEffect& e) { return dimensionName(e.dynamics()); })
+        .def_property_readonly("value", [](const LaneChangeEffect& e) { return e.dynamics().value; })
+        .def_property_readonly(
+            "relative", [](const LaneChangeEffect& e) { return e.relative() == LaneChangeEffect::Relative::Self; })
+        .def_property_readonly("relative_to", &LaneChangeEffect::relativeTo)
+        .def_property_readonly("offset", &LaneChangeEffect::offset);
+    py::class_<LaneOffsetEffect, Effect, py::smart_holder>(m, "LaneOffsetEffect")
+        .def(py::init(&makeLaneOffsetEffect), py::arg("offset"), py::arg("shape") = "step", py::kw_only(),
+             py::arg("duration") = py::none(), py::arg("max_lateral_acc") = py::none())
+        .def_property_readonly("offset", &LaneOffsetEffect::offset)
+        .def_property_readonly("shape", [](const LaneOffsetEffect& e) { return shapeName(e.dynamics()); })
+        .def_property_readonly("duration",
+                               [](const LaneOffsetEffect& e) -> std::optional<double> {
+                                   if (e.maxLateralAcceleration()) return std::nullopt;
+                                   return e.dynamics().value;
+                               })
+        .def_property_readonly("max_lateral_acc", &LaneOffsetEffect::maxLateralAcceleration);
     // Artery's names: its effects derive from EffectFactory; and its older factory names.
     m.attr("EffectFactory") = m.attr("Effect");
     m.attr("SpeedEffectFactory") = m.attr("SpeedEffect");
