@@ -186,6 +186,20 @@ def test_a_timed_lane_change_takes_its_time_laterally(road: Path, tmp_path: Path
     assert end == pytest.approx(start + 3.1, abs=0.1 + 1e-9), "the event ends when the lane change is done"
 
 
+def test_a_lane_offset_within_its_max_lateral_acceleration(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(
+        scenario(tmp_path, "lane-offset.xosc"), sumocfg=road / "line.sumocfg", sumo="--lateral-resolution 0.8"
+    )
+    assert starts(events, "S/A/Offset") == [2.1]
+    y = {t: p[1] for t, p in fcd.pos["Ego"].items()}
+    y0 = y[2.1]
+    reached = min(t for t in y if abs(y[t] - y0 - 0.6) < 1e-3)  # 0.6 m to the left (+y on this road)
+    assert reached == pytest.approx(2.1 + 1.8, abs=0.1 + 1e-9), "T = sqrt(6 d / a) = 1.73 s"
+    assert y[3.0] - y0 == pytest.approx(0.6 * (3 * 0.52**2 - 2 * 0.52**3), abs=0.05), "cubic: x = 0.9 / 1.73"
+    (end,) = ends(events, "S/A/Offset")
+    assert end == pytest.approx(reached + 0.1, abs=0.1 + 1e-9), "the event ends when the offset is reached"
+
+
 def test_cut_in_in_the_shape_of_the_asam_example(road: Path, tmp_path: Path) -> None:
     events, fcd = run_xosc(
         scenario(tmp_path, "cut-in.xosc"), sumocfg=road / "line.sumocfg", sumo="--lateral-resolution 0.8"
