@@ -33,10 +33,10 @@ std::size_t CertificatePolicy::remembered() const {
     return n;
 }
 
-SignerIdentifier CertificatePolicy::sign(std::string_view station, SecurityProfile profile, kernel::SimTime now) {
+SignerIdentifier CertificatePolicy::sign(Index station, SecurityProfile profile, kernel::SimTime now) {
     if (!secured_) return SignerIdentifier::None;
     if (profile != SecurityProfile::Cam) return SignerIdentifier::Certificate;
-    Station& s = of(index(station), now);
+    Station& s = of(station, now);
     if (s.nextCertificate && now < *s.nextCertificate && !s.requested) return SignerIdentifier::Digest;
     s.nextCertificate = now + kCertificateInterval;
     s.requested = false;
@@ -51,6 +51,17 @@ void CertificatePolicy::heard(Index station, Index sender, SecurityProfile profi
     const bool wasKnown = before && now - *before <= kForgetAfter;
     // Vanetza asks for its own certificate only on a CAM from an unknown station.
     if (!wasKnown && profile == SecurityProfile::Cam) of(station, now).requested = true;
+}
+
+void CertificatePolicy::heardAll(std::span<const Index> stations, Index sender, SecurityProfile profile,
+                                 kernel::SimTime now) {
+    if (!secured_ || stations.empty()) return;
+    forgetOld(now);
+    if (sender >= heardBy_.size()) heardBy_.resize(sender + 1);
+    unknown_.clear();
+    heardBy_[sender].hearAll(stations, now, now - kForgetAfter, unknown_);
+    if (profile != SecurityProfile::Cam) return;
+    for (const Index station : unknown_) of(station, now).requested = true;
 }
 
 }  // namespace sbsim::radio

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -42,11 +43,18 @@ public:
 
     /// The index of `station` here, for the run.
     Index index(std::string_view station) { return ids_.intern(station); }
+    const std::string& name(Index station) const { return ids_.name(station); }
 
     /// How `station`'s message of `profile`, signed `now`, names its signer; records a certificate.
-    SignerIdentifier sign(std::string_view station, SecurityProfile profile, kernel::SimTime now);
+    SignerIdentifier sign(Index station, SecurityProfile profile, kernel::SimTime now);
+    SignerIdentifier sign(std::string_view station, SecurityProfile profile, kernel::SimTime now) {
+        return secured_ ? sign(index(station), profile, now) : SignerIdentifier::None;
+    }
     /// `station` received a message of `sender` at `now`.
     void heard(Index station, Index sender, SecurityProfile profile, kernel::SimTime now);
+    /// Each of `stations` (distinct; fastest in ascending order) received one message of `sender`
+    /// at `now`: as heard() for each, with one walk through the sender's table.
+    void heardAll(std::span<const Index> stations, Index sender, SecurityProfile profile, kernel::SimTime now);
     void heard(std::string_view station, std::string_view sender, SecurityProfile profile, kernel::SimTime now) {
         if (secured_) heard(index(station), index(sender), profile, now);
     }
@@ -70,6 +78,7 @@ private:
     StationIds ids_;
     std::vector<Station> stations_;   // by index
     std::vector<LastHeard> heardBy_;  // by sender's index: who heard it, when
+    std::vector<Index> unknown_;      // scratch of heardAll
     std::size_t active_ = 0;
     kernel::SimTime lastSweep_;
 };

@@ -2,58 +2,100 @@
 
 #include <algorithm>
 
-#include "sbsim/radio/CounterRandom.h"
-
 namespace sbsim::radio {
 
-std::optional<kernel::SimTime> LastHeard::hear(std::uint64_t station, kernel::SimTime now) {
-    if (2 * (used_ + 1) > table_.size()) rebuild(std::max<std::size_t>(16, 2 * table_.size()));
-    const std::size_t mask = table_.size() - 1;
-    std::size_t at = CounterRandom::mix(station) & mask;
-    while (table_[at].heardNs != kFree && table_[at].key != station) at = (at + 1) & mask;
-    Entry& e = table_[at];
-    std::optional<kernel::SimTime> before;
-    if (e.heardNs == kFree) {
-        e.key = station;
-        ++used_;
-    } else {
-        before = kernel::SimTime::fromNanoseconds(e.heardNs);
+std::size_t LastHeard::seek(std::size_t from, Index station) const {
+    const std::size_t n = stations_.size();
+    // The next receiver is usually a few places on (the stations heard lately but not now):
+    // a short scan, then a galloping search so a gap costs its logarithm.
+    for (std::size_t end = std::min(n, from + 8); from < end; ++from) {
+        if (stations_[from] >= station) return from;
     }
-    e.heardNs = now.raw();
-    return before;
+    std::size_t step = 8;
+    std::size_t hi = from;
+    while (hi < n && stations_[hi] < station) {
+        from = hi + 1;
+        hi += step;
+        step *= 2;
+    }
+    const auto first = stations_.begin();
+    return static_cast<std::size_t>(std::lower_bound(first + static_cast<std::ptrdiff_t>(from),
+                                                     first + static_cast<std::ptrdiff_t>(std::min(hi, n)), station) -
+                                    first);
+}
+
+std::optional<kernel::SimTime> LastHeard::hear(Index station, kernel::SimTime now) {
+    const auto at = std::lower_bound(stations_.begin(), stations_.end(), station);
+    const auto k = at - stations_.begin();
+    if (at != stations_.end() && *at == station) {
+        const auto before = kernel::SimTime::fromNanoseconds(heardNs_[static_cast<std::size_t>(k)]);
+        heardNs_[static_cast<std::size_t>(k)] = now.raw();
+        return before;
+    }
+    stations_.insert(at, station);
+    heardNs_.insert(heardNs_.begin() + k, now.raw());
+    return std::nullopt;
+}
+
+void LastHeard::hearAll(std::span<const Index> stations, kernel::SimTime now, kernel::SimTime since,
+                        std::vector<Index>& unknown) {
+    newcomers_.clear();
+    std::size_t at = 0;
+    Index last = 0;
+    for (const Index station : stations) {
+        if (station < last) at = 0;  // out of order: from the start again
+        last = station;
+        at = seek(at, station);
+        if (at < stations_.size() && stations_[at] == station) {
+            if (heardNs_[at] < since.raw()) unknown.push_back(station);
+            heardNs_[at] = now.raw();
+            ++at;
+        } else {
+            newcomers_.push_back(station);
+            unknown.push_back(station);
+        }
+    }
+    if (!newcomers_.empty()) addNewcomers(now);
+}
+
+void LastHeard::addNewcomers(kernel::SimTime now) {
+    std::sort(newcomers_.begin(), newcomers_.end());
+    newcomers_.erase(std::unique(newcomers_.begin(), newcomers_.end()), newcomers_.end());
+    // Merged from the back, in place: each array moves once.
+    std::size_t old = stations_.size();
+    std::size_t add = newcomers_.size();
+    stations_.resize(old + add);
+    heardNs_.resize(old + add);
+    for (std::size_t out = old + add; add > 0;) {
+        --out;
+        if (old > 0 && stations_[old - 1] > newcomers_[add - 1]) {
+            --old;
+            stations_[out] = stations_[old];
+            heardNs_[out] = heardNs_[old];
+        } else {
+            --add;
+            stations_[out] = newcomers_[add];
+            heardNs_[out] = now.raw();
+        }
+    }
 }
 
 void LastHeard::forgetBefore(kernel::SimTime before) {
     std::size_t kept = 0;
-    for (Entry& e : table_) {
-        if (e.heardNs == kFree) continue;
-        if (e.heardNs < before.raw()) {
-            e.heardNs = kFree;
-        } else {
-            ++kept;
-        }
+    for (std::size_t k = 0; k < stations_.size(); ++k) {
+        if (heardNs_[k] < before.raw()) continue;
+        stations_[kept] = stations_[k];
+        heardNs_[kept] = heardNs_[k];
+        ++kept;
     }
-    if (kept == used_) return;
-    used_ = kept;
-    if (used_ == 0) {
-        std::vector<Entry>().swap(table_);  // a station gone for good holds no table
-        return;
-    }
-    // Linear probing cannot just empty slots (a probe would stop early): laid out afresh.
-    std::size_t slots = 16;
-    while (slots < 2 * used_) slots *= 2;
-    rebuild(slots);
-}
-
-void LastHeard::rebuild(std::size_t slots) {
-    std::vector<Entry> old(slots);
-    old.swap(table_);
-    const std::size_t mask = slots - 1;
-    for (const Entry& e : old) {
-        if (e.heardNs == kFree) continue;
-        std::size_t at = CounterRandom::mix(e.key) & mask;
-        while (table_[at].heardNs != kFree) at = (at + 1) & mask;
-        table_[at] = e;
+    if (kept == stations_.size()) return;
+    stations_.resize(kept);
+    heardNs_.resize(kept);
+    if (kept == 0 || kept < stations_.capacity() / 4) {
+        // A station gone for good holds no table, one heard by fewer its smaller one.
+        stations_.shrink_to_fit();
+        heardNs_.shrink_to_fit();
+        std::vector<Index>().swap(newcomers_);
     }
 }
 

@@ -11,17 +11,15 @@ namespace {
 /// One frame's receptions at one time.
 struct FrameDelivery : kernel::Message {
     static constexpr int kKind = 0x7632'7801;
-    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::vector<Receiver*> r, std::vector<std::string> s,
+    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::shared_ptr<const Medium::Recipients> r,
                   std::uint64_t changes)
         : kernel::Message("v2x frame", kKind),
           message(std::move(m)),
-          receivers(std::move(r)),
-          stations(std::move(s)),
+          recipients(std::move(r)),
           moduleChanges(changes) {}
     std::shared_ptr<const V2xMessage> message;
-    std::vector<Receiver*> receivers;
-    std::vector<std::string> stations;  // the receivers' names, should one leave meanwhile
-    std::uint64_t moduleChanges;        // the simulation's when the receivers were taken
+    std::shared_ptr<const Medium::Recipients> recipients;  // its stations, to find them should one leave meanwhile
+    std::uint64_t moduleChanges;                           // the simulation's when the receivers were taken
 };
 }  // namespace
 
@@ -35,55 +33,58 @@ Receiver* Medium::receivingSide(const std::string& stationId) const {
 }
 
 void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
-                          std::vector<std::string> stations, kernel::SimTime delay) {
+                          std::vector<StationIndex> stations, kernel::SimTime delay) {
     if (receivers.empty()) return;
+    deliverLater(std::move(message),
+                 std::make_shared<const Recipients>(Recipients{std::move(receivers), std::move(stations)}), delay);
+}
+
+void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
+                          kernel::SimTime delay) {
+    if (recipients == nullptr || recipients->receivers.empty()) return;
     const std::uint64_t changes = simulation().moduleChanges();
-    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(receivers), std::move(stations), changes),
-               delay, *this);
+    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(recipients), changes), delay, *this);
 }
 
 void Medium::handleMessage(kernel::Message& msg) {
     if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
     const auto& frame = static_cast<const FrameDelivery&>(msg);
-    Counts* counts = countsOf(*frame.message);  // one lookup per frame, not per reception
     const V2xMessage& message = *frame.message;
-    const bool secured = certificates_.secured();
-    const SecurityProfile profile = message.securityProfile();
-    // The sender's index once per frame, each receiver's once per station (Receiver::mediumIndex_).
-    const CertificatePolicy::Index sender = secured ? certificates_.index(message.sender()) : 0;
-    if (simulation().moduleChanges() == frame.moduleChanges) {
-        for (std::size_t k = 0; k < frame.receivers.size(); ++k) {
-            if (counts != nullptr) ++counts->delivered;
-            if (secured)
-                certificates_.heard(certificateIndex(*frame.receivers[k], frame.stations[k]), sender, profile,
-                                    simTime());
-            frame.receivers[k]->receive(message);
+    const Recipients* recipients = frame.recipients.get();
+    Recipients found;
+    if (simulation().moduleChanges() != frame.moduleChanges) {
+        // Some station joined or left since the frame was sent: its receivers found again by name.
+        for (const StationIndex station : recipients->stations) {
+            Receiver* receiver = receivingSide(certificates_.name(station));
+            if (receiver == nullptr) continue;  // it left
+            found.receivers.push_back(receiver);
+            found.stations.push_back(station);
         }
-        return;
+        recipients = &found;
     }
-    for (const std::string& station : frame.stations) {
-        Receiver* receiver = receivingSide(station);
-        if (receiver == nullptr) continue;  // it left
-        if (counts != nullptr) ++counts->delivered;
-        if (secured) certificates_.heard(certificateIndex(*receiver, station), sender, profile, simTime());
-        receiver->receive(message);
-    }
-}
-
-CertificatePolicy::Index Medium::certificateIndex(Receiver& receiver, const std::string& station) {
-    if (!receiver.mediumIndex_) receiver.mediumIndex_ = certificates_.index(station);
-    return *receiver.mediumIndex_;
+    if (Counts* counts = countsOf(message)) counts->delivered += recipients->receivers.size();
+    // What each receiver heard is kept before any of them handles the message: the policy's
+    // answers for one station do not depend on the others', and a station's own sending (a
+    // forward while it receives) sees its reception recorded either way.
+    if (certificates_.secured())
+        certificates_.heardAll(recipients->stations, message.senderIndex_, message.securityProfile(), simTime());
+    for (Receiver* receiver : recipients->receivers) receiver->receive(message);
 }
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {
+    // The sender's name is looked up once per frame: its sequence and certificate go by index.
+    const StationIndex index = stationIndex(sender);
     message.sender_ = sender;
+    message.senderIndex_ = index;
     message.sentAt_ = simTime();
-    message.sequence_ = sequences_[sender]++;
+    if (sequences_.size() <= index) sequences_.resize(index + 1, 0);
+    message.sequence_ = sequences_[index]++;
     const SecurityProfile profile = message.securityProfile();
     message.frameBytes_ = radio::frameBytes(message.byteSize(), message.gnTransport(), profile,
-                                            certificates_.sign(sender, profile, simTime()));
-    Counts& c = counts_[std::string(message.typeName())];
-    ++(message.geonet().hops() > 1 ? c.forwarded : c.sent);
+                                            certificates_.sign(index, profile, simTime()));
+    auto c = counts_.find(message.typeName());
+    if (c == counts_.end()) c = counts_.emplace(std::string(message.typeName()), Counts{}).first;
+    ++(message.geonet().hops() > 1 ? c->second.forwarded : c->second.sent);
 }
 
 Medium::Counts* Medium::countsOf(const V2xMessage& message) {

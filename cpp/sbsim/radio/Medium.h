@@ -6,7 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
+#include <string_view>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
@@ -45,6 +45,13 @@ public:
         }
     };
     static constexpr double kDistanceBin = 50;
+    /// A station's index for the run (StationIds), as media hand receivers to deliverLater().
+    using StationIndex = StationIds::Index;
+    /// A frame's receivers (their stationIndex() in `stations`), shareable by the frames of a step.
+    struct Recipients {
+        std::vector<Receiver*> receivers;
+        std::vector<StationIndex> stations;
+    };
     /// Channel busy ratio over every station's 100 ms samples.
     /// What the link budget did: links drawn in full, interference only (their mean power, no
     /// draw) and skipped below the floor, over the run (ChannelSettings::linkTiers).
@@ -103,20 +110,23 @@ protected:
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
     /// The receiving side of `stationId`'s module; null for a vehicle that is not a station.
     Receiver* receivingSide(const std::string& stationId) const;
-    /// Delivers `message` to `receivers` (in this order; `stations` names them) after `delay`,
-    /// from one kernel event. A station that has left by then is skipped, as its own event would
-    /// have been dropped: the pointers are used only while no module joined or left meanwhile,
+    /// `station`'s index for the run (interned on first use): a medium looks it up once per station
+    /// and step, and hands deliverLater() indices, not names to copy per reception.
+    StationIndex stationIndex(std::string_view station) { return certificates_.index(station); }
+    /// Delivers `message` to `receivers` (in this order; `stations` are their stationIndex()) after
+    /// `delay`, from one kernel event. A station that has left by then is skipped, as its own event
+    /// would have been dropped: the pointers are used only while no module joined or left meanwhile,
     /// else the stations are looked up again by name.
     void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
-                      std::vector<std::string> stations, kernel::SimTime delay);
+                      std::vector<StationIndex> stations, kernel::SimTime delay);
+    /// The same with receivers a medium keeps (and may hand several frames) rather than copies.
+    void deliverLater(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
+                      kernel::SimTime delay);
 
 private:
-    /// `receiver`'s index in certificates_ (`station` names it), looked up once per station.
-    CertificatePolicy::Index certificateIndex(Receiver& receiver, const std::string& station);
-
     Directory directory_;
     std::map<std::string, Counts, std::less<>> counts_;
-    std::unordered_map<std::string, std::uint64_t> sequences_;  // next per sender
+    std::vector<std::uint64_t> sequences_;  // next per sender, by station index
     MessageTrace* trace_ = nullptr;
     FixedStations fixed_;
     CertificatePolicy certificates_;

@@ -1,9 +1,6 @@
 #pragma once
 
-#include <optional>
-
 #include "sbsim/kernel/Export.h"
-#include "sbsim/radio/StationIds.h"
 #include "sbsim/radio/V2xMessage.h"
 
 namespace sbsim::radio {
@@ -17,12 +14,6 @@ public:
 
 protected:
     ~Receiver() = default;
-
-private:
-    friend class Medium;
-    // The station's index in its medium's bookkeeping, from the first frame the medium handed it:
-    // a reception then costs the medium no lookup of the station's id.
-    std::optional<StationIds::Index> mediumIndex_;
 };
 
 }  // namespace sbsim::radio

@@ -69,6 +69,7 @@ private:
     friend class geonet::Router;
     geonet::PacketHeader geonet_;
     std::string sender_;
+    std::uint32_t senderIndex_ = 0;  // the medium's station index of sender_, stamped with it
     kernel::SimTime sentAt_;
     std::uint64_t sequence_ = 0;
     std::size_t frameBytes_ = 0;

@@ -10,6 +10,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "ServicesTestSupport.h"
@@ -161,6 +162,48 @@ TEST(DiscMedium, MessageToAVehicleThatLeftBeforeDeliveryIsDropped) {
     EXPECT_EQ(c->indications[0].at, secs(1.5));
     EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {2, 1}}})) << "dropped messages are not counted as delivered";
     EXPECT_EQ(b->callsAfterFinish + c->callsAfterFinish, 0);
+}
+
+// Without packet errors or a trace a frame takes its sender's receivers of the step (taken once
+// per step and module change) instead of visiting each link: the same stations hear the same
+// frames in the same order, with the same counts per distance bin, as with a trace (which visits
+// each link), with several frames a step and a station departing at the next.
+TEST(DiscMedium, AFrameReachesTheSameStationsTracedOrNot) {
+    struct Quiet : radio::MessageTrace {
+        void record(const radio::TraceLine&, SimTime) override {}
+    } quiet;
+    const auto run = [&](bool traced) {
+        Harness h(kAllButBare, disc(300));
+        if (traced) h.medium.setTrace(&quiet);
+        std::vector<VehicleSnapshot::Vehicle> first;
+        std::vector<std::string> senders;
+        for (int k = 0; k < 40; ++k) {
+            const std::string id = (k % 7 == 3 ? "bare" : "v") + std::to_string(k);
+            first.push_back(vehicle(id, 37.0 * (k % 10), 61.0 * (k / 10)));
+            if (k % 7 != 3 && k % 3 == 0) senders.push_back(id);
+        }
+        h.step(secs(1), first);
+        std::vector<VehicleSnapshot::Vehicle> second = first;
+        second.push_back(vehicle("late", 100, 100));
+        h.step(secs(1.5), second);
+        int seq = 0;
+        for (const SimTime t : {secs(1), secs(1.2), secs(1.5), secs(1.7)}) {
+            for (const std::string& id : senders) sendAt(h, t, id, "Ping", seq++);
+        }
+        h.sim.run(secs(2));
+        std::map<std::string, std::vector<std::string>> heard;
+        for (const auto& v : second) {
+            if (const ProbeRecord* r = h.log.find(v.id))
+                for (const Indication& i : r->indications)
+                    heard[v.id].push_back(i.sender + "#" + std::to_string(i.seq));
+        }
+        const auto& c = h.medium.counts().at("Ping");
+        return std::make_tuple(heard, c.linkStations, c.linkReceptions, c.delivered);
+    };
+    const auto plain = run(false);
+    EXPECT_EQ(plain, run(true));
+    EXPECT_FALSE(std::get<0>(plain).at("late").empty());
+    EXPECT_GT(std::get<3>(plain), 100u);
 }
 
 // --- packet errors ---------------------------------------------------------------------------

@@ -75,7 +75,7 @@ void ChannelMedium::handleMessage(kernel::Message& msg) {
 
 ChannelMedium::Slot ChannelMedium::stationOf(const std::string& id) {
     if (const auto it = stations_.slotOf.find(id); it != stations_.slotOf.end()) return it->second;
-    const Slot s = stations_.add(id);
+    const Slot s = stations_.add(id, stationIndex(id));
     reception_.addStation();
     load_.addStation(simTime());
     access_.addStation(stations_.keys[s]);
@@ -233,7 +233,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     const bool drawnDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform ||
                             settings_.extraDelay == ChannelSettings::ExtraDelay::Gamma;
     std::vector<Receiver*> receivers;
-    std::vector<std::string> stations;
+    std::vector<StationIndex> stations;
     const kernel::SimTime sharedDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Constant
                                             ? kernel::SimTime::fromSeconds(settings_.delay)
                                             : kernel::SimTime::zero();
@@ -310,10 +310,10 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
             trace()->record(line, simTime());
         }
         if (drawnDelay) {
-            deliverLater(tx->message, {receiver}, {stations_.ids[r]}, extra);
+            deliverLater(tx->message, {receiver}, {stations_.index[r]}, extra);
         } else {
             receivers.push_back(receiver);
-            stations.push_back(stations_.ids[r]);
+            stations.push_back(stations_.index[r]);
         }
     }
     flush();

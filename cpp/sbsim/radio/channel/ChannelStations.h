@@ -21,7 +21,8 @@ struct ChannelStations {
 
     std::unordered_map<std::string, Slot> slotOf;
     std::vector<std::string> ids;
-    std::vector<std::uint64_t> keys;  // CounterRandom::keyOf(id)
+    std::vector<std::uint64_t> keys;   // CounterRandom::keyOf(id)
+    std::vector<std::uint32_t> index;  // the medium's Medium::stationIndex(id)
     std::vector<double> x, y;
     std::vector<std::uint8_t> present;  // in the last snapshot
     std::vector<Receiver*> receiver;    // the receiving side as of the last step; null: gone
@@ -29,12 +30,14 @@ struct ChannelStations {
     std::vector<Slot> slotOfIndex;  // per snapshot index, -1 = not a station
 
     Slot size() const { return static_cast<Slot>(ids.size()); }
-    /// Makes `id`, not a station yet, the next slot (absent, at the origin).
-    Slot add(const std::string& id) {
+    /// Makes `id`, not a station yet, the next slot (absent, at the origin); `stationIndex` is its
+    /// Medium::stationIndex().
+    Slot add(const std::string& id, std::uint32_t stationIndex) {
         const Slot s = size();
         slotOf.emplace(id, s);
         ids.push_back(id);
         keys.push_back(CounterRandom::keyOf(id));
+        index.push_back(stationIndex);
         x.push_back(0);
         y.push_back(0);
         present.push_back(0);

@@ -42,12 +42,18 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     const auto fixedSelf = self ? std::nullopt : fixed.indexOf(sender);
     if (!self && !fixedSelf) return;  // not on the road (yet): nobody hears it
     if (gridTime_ != snapshot_.time()) {
-        grid_.build(snapshot_, settings_.range);
+        // Cells of a quarter of the range: a neighbourhood scans about 1.6 times its disc, where
+        // cells of the range scan nearly three times it.
+        grid_.build(snapshot_, settings_.range / 4);
         gridTime_ = snapshot_.time();
         receiverKnown_.clear();
-        for (Neighbourhood& n : near_) n.known = false;
+        for (Neighbourhood& n : near_) n.known = n.receiversKnown = false;
         near_.resize(snapshot_.ids().size());
+        stationIndices_.resize(snapshot_.ids().size());
+        for (std::size_t i = 0; i < stationIndices_.size(); ++i) stationIndices_[i] = stationIndex(snapshot_.ids()[i]);
     }
+    while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
+        fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));
     if (receiverKnown_.empty() || receiversChanges_ != simulation().moduleChanges()) {
         receiverKnown_.assign(snapshot_.ids().size(), 0);
         receivers_.assign(snapshot_.ids().size(), nullptr);
@@ -71,10 +77,13 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     // With a trace, stations out to the trace range are visited too (to report them out of range);
     // the draws stay those of the stations in range, in the same ascending order.
     std::vector<Receiver*> receivers;
-    std::vector<std::string> stations;
+    std::vector<StationIndex> stations;
     Counts* counts = countsOf(*shared);
+    // Every station in range receives, nothing traced: a frame takes its sender's receivers of the step.
+    const bool everyoneInRange = trace() == nullptr && !settings_.fadeStart;
+    std::shared_ptr<const Recipients> shareable;  // then the vehicles' receivers, as the step's
     const double radius = trace() != nullptr ? std::max(settings_.range, settings_.traceRange) : settings_.range;
-    const auto consider = [&](Receiver* receiver, const std::string& station, double distance) {
+    const auto consider = [&](Receiver* receiver, StationIndex index, const std::string& station, double distance) {
         if (receiver == nullptr) return;  // a vehicle without services
         const double p = receptionProbability(distance);
         std::optional<LossReason> loss;
@@ -100,7 +109,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
         if (!loss) {
             receivers.push_back(receiver);
-            stations.push_back(station);
+            stations.push_back(index);
         }
     };
     const auto vehicleReceiver = [&](traffic::VehicleSnapshot::Index other) {
@@ -120,21 +129,71 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
                 near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
             near.known = true;
             near.radius = radius;
+            near.receiversKnown = false;
         }
-        for (std::size_t k = 0; k < near.others.size(); ++k) {
+        if (everyoneInRange) {
+            if (!near.receiversKnown || near.receiversChanges != receiversChanges_) takeReceivers(near);
+            shareable = near.recipients;
+            if (counts != nullptr && !near.perBin.empty()) {
+                if (counts->linkStations.size() < near.perBin.size()) {
+                    counts->linkStations.resize(near.perBin.size());
+                    counts->linkReceptions.resize(near.perBin.size());
+                }
+                for (std::size_t b = 0; b < near.perBin.size(); ++b) {
+                    counts->linkStations[b] += near.perBin[b];
+                    counts->linkReceptions[b] += near.perBin[b];
+                }
+            }
+        }
+        for (std::size_t k = 0; !everyoneInRange && k < near.others.size(); ++k) {
             const auto other = near.others[k];
-            consider(vehicleReceiver(other), snapshot_.ids()[other], near.distance[k]);
+            consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other], near.distance[k]);
         }
     } else {
         // A roadside unit sends about once a second: its neighbours are looked up afresh.
         for (const auto other : grid_.around(from.x(), from.y(), radius)) {
-            consider(vehicleReceiver(other), snapshot_.ids()[other], (positions.col(other) - from).norm());
+            consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other],
+                     (positions.col(other) - from).norm());
         }
     }
     fixed.forEachWithin(from, radius, fixedSelf, [&](FixedStations::Index k, double distance) {
-        consider(receivingSide(fixed.ids()[k]), fixed.ids()[k], distance);
+        consider(receivingSide(fixed.ids()[k]), fixedIndices_[k], fixed.ids()[k], distance);
     });
+    if (shareable != nullptr) {
+        if (receivers.empty()) return deliverLater(shared, std::move(shareable), settings_.latency);
+        // Stationary stations in range: after the vehicles, in a list of the frame's own.
+        receivers.insert(receivers.begin(), shareable->receivers.begin(), shareable->receivers.end());
+        stations.insert(stations.begin(), shareable->stations.begin(), shareable->stations.end());
+    }
     deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
+}
+
+void DiscMedium::takeReceivers(Neighbourhood& near) {
+    // Refilled in place unless a frame on the air still holds them.
+    if (near.recipients == nullptr || near.recipients.use_count() > 1) near.recipients = std::make_shared<Recipients>();
+    std::vector<Receiver*>& receivers = near.recipients->receivers;
+    std::vector<StationIndex>& stations = near.recipients->stations;
+    receivers.clear();
+    stations.clear();
+    near.perBin.clear();
+    for (std::size_t k = 0; k < near.others.size(); ++k) {
+        const auto other = near.others[k];
+        const double distance = near.distance[k];
+        if (distance > settings_.range) continue;
+        if (!receiverKnown_[other]) {
+            receivers_[other] = receivingSide(snapshot_.ids()[other]);
+            receiverKnown_[other] = 1;
+        }
+        if (receivers_[other] == nullptr) continue;  // a vehicle without services
+        receivers.push_back(receivers_[other]);
+        stations.push_back(stationIndices_[other]);
+        if (!(distance >= 0)) continue;  // as Medium::countLink
+        const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
+        if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
+        ++near.perBin[bin];
+    }
+    near.receiversKnown = true;
+    near.receiversChanges = receiversChanges_;
 }
 
 }  // namespace sbsim::radio

@@ -38,6 +38,11 @@ private:
     /// module joins or leaves): null while unknown or not a station.
     std::vector<Receiver*> receivers_;
     std::vector<unsigned char> receiverKnown_;
+    /// Per snapshot index, the station's stationIndex(), interned in the snapshot's order when the
+    /// step's grid is built (so a frame's receivers come in ascending indices, as the certificate
+    /// policy's tables are sorted); per stationary station, the same.
+    std::vector<StationIndex> stationIndices_;
+    std::vector<StationIndex> fixedIndices_;
     std::uint64_t receiversChanges_ = 0;
     /// Per snapshot index, the stations within the visit radius and their distances, computed at
     /// the sender's first frame of a step and reused by its others (a beacon sends several).
@@ -46,7 +51,16 @@ private:
         double radius = 0;
         std::vector<traffic::NeighbourGrid::Index> others;
         std::vector<double> distance;
+        /// Without packet errors or a trace every station in range receives: the stations in
+        /// range (receivers, their indices, in the order above) and their count per distance bin,
+        /// taken once per step and module change, so a frame copies them instead of visiting each link.
+        bool receiversKnown = false;
+        std::uint64_t receiversChanges = 0;
+        std::shared_ptr<Recipients> recipients;  // shared with the frames on the air
+        std::vector<std::uint64_t> perBin;
     };
+    /// `near`'s receivers in range, as of the current modules.
+    void takeReceivers(Neighbourhood& near);
     std::vector<Neighbourhood> near_;
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
 };
