@@ -327,7 +327,10 @@ class SpeedChangeEffect(Effect):
     ``continuous=True``, every step. Exact by default (SUMO's acceleration bounds and safe speed off, the
     speed limit disregarded; the vehicle's max speed and any SpeedEffect cap still hold); ``safe_gap=True``
     keeps SUMO's safe gap to the leader, which also bounds the change to the vehicle's accel/decel. A
-    StopEffect or EmergencyStopEffect rules over it while active. Domain "speed"."""
+    StopEffect or EmergencyStopEffect rules over it while active. ``keep=True``: once the change ran, the
+    vehicle keeps the target after the story ends (SUMO's setSpeed, as SetSpeedEffect), as an OpenSCENARIO
+    entity does. As a ScenarioMachine action it is complete when the change ran (continuous: never).
+    Domain "speed"."""
 
     target: float
     shape: str
@@ -337,6 +340,7 @@ class SpeedChangeEffect(Effect):
     value_type: str
     continuous: bool
     safe_gap: bool
+    keep: bool
     def __init__(
         self,
         target: float,
@@ -348,6 +352,7 @@ class SpeedChangeEffect(Effect):
         value_type: Literal["delta", "factor"] = "delta",
         continuous: bool = False,
         safe_gap: bool = False,
+        keep: bool = False,
     ) -> None: ...
 
 class LaneChangeEffect(Effect):
@@ -554,6 +559,9 @@ class ScenarioMachine:
         max_executions: int = 1,
         priority: str = "parallel",
     ) -> int: ...
+    def add_action(self, event: int, action: Effect) -> None:
+        """The event ends only once this effect (applied by its story) is complete: a transition
+        when it reached its target, a one-shot effect at once."""
     def __len__(self) -> int: ...
     def state(self, element: int) -> str: ...
     def executions(self, element: int) -> int: ...

@@ -66,13 +66,15 @@ def scenario(tmp_path: Path, name: str) -> Path:
     return tmp_path / "corpus" / name
 
 
-def run_xosc(xosc: Path, *extra: str, sumocfg: Path | None = None) -> tuple[list[dict[str, Any]], FcdTrace]:
+def run_xosc(
+    xosc: Path, *extra: str, sumocfg: Path | None = None, sumo: str = ""
+) -> tuple[list[dict[str, Any]], FcdTrace]:
     events = xosc.with_suffix(".events.jsonl")
     fcd = xosc.with_suffix(".fcd.xml")
     result = run(
         sumocfg,
         events=events,
-        sumo_options=[f"--fcd-output {fcd} --precision 4"],
+        sumo_options=[f"--fcd-output {fcd} --precision 4 {sumo}".strip()],
         extra=["--scenario", str(xosc), *extra],
         timeout=120,
     )
@@ -130,6 +132,100 @@ def test_overwrite_stops_the_running_event(road: Path, tmp_path: Path) -> None:
     assert fcd.speed["Ego"][7.0] == pytest.approx(25.0)
 
 
+def ends(events: list[dict[str, Any]], story: str) -> list[float]:
+    return [e["t"] for e in events if e["type"] == "deactivate" and e["story"] == story]
+
+
+def test_linear_and_cubic_speed_transitions_reach_their_target_and_keep_it(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "speed-transitions.xosc"), sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Linear") == [2.1] and starts(events, "S/A/Cubic") == [2.1]
+    lin, cub = fcd.speed["Lin"], fcd.speed["Cub"]
+    one_step = 10 / 4 * 0.1  # m/s the linear change makes in a step
+    reached = min(t for t, v in lin.items() if v >= 20 - 1e-3)
+    assert reached == pytest.approx(6.1, abs=0.1 + 1e-9), "linear: 20 m/s within one step of 4 s after 2.1"
+    assert lin[4.1] == pytest.approx(15.0, abs=one_step), "linear: the midpoint at half time"
+    assert lin[3.1] == pytest.approx(12.5, abs=one_step)
+    assert cub[4.1] == pytest.approx(15.0, abs=one_step), "cubic: the midpoint speed at half time"
+    assert cub[3.1] == pytest.approx(11.5625, abs=0.15), "cubic: 3x^2 - 2x^3 at a quarter, below linear's 12.5"
+    assert min(t for t, v in cub.items() if v >= 20 - 1e-3) == pytest.approx(6.1, abs=0.1 + 1e-9)
+    # Each event runs while its transition does, then ends; the cars keep 20 m/s (the road allows 33.33).
+    for story in ("S/A/Linear", "S/A/Cubic"):
+        (end,) = ends(events, story)
+        assert end == pytest.approx(6.2, abs=0.1 + 1e-9)
+    assert lin[11.0] == pytest.approx(20.0) and cub[11.0] == pytest.approx(20.0)
+
+
+def test_overwrite_stops_a_running_speed_transition(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "overwrite-transition.xosc"), sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Rise") == [2.1] and starts(events, "S/A/Hold") == [4.1]
+    assert ends(events, "S/A/Rise") == [4.1], "Hold's start stops Rise"
+    speed = fcd.speed["Ego"]
+    assert speed[4.0] == pytest.approx(10 + 20 * 1.9 / 10, abs=0.2), "Rise ran until then"
+    assert max(v for t, v in speed.items() if t > 4.1) < 14.5, "and no further"
+    assert speed[11.0] == pytest.approx(12.0)
+
+
+def test_a_timed_lane_change_takes_its_time_laterally(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(
+        scenario(tmp_path, "lane-change.xosc"), sumocfg=road / "line.sumocfg", sumo="--lateral-resolution 0.8"
+    )
+    appeared = min(fcd.pos["Ego"])
+    (start,) = starts(events, "S/A/Change")
+    assert start == pytest.approx(appeared + 2.0, abs=0.1 + 1e-9), "40 m driven at 20 m/s"
+    y = {t: p[1] for t, p in fcd.pos["Ego"].items()}
+    y0 = y[round(start - 0.1, 1)]
+    moving = sorted(t for t in y if abs(y[t] - y0) > 1e-3)
+    y1 = y[max(y)]
+    assert abs(y1 - y0) == pytest.approx(3.2, abs=0.01), "one lane width across"
+    done = min(t for t in moving if abs(y[t] - y1) < 1e-3)
+    assert done - moving[0] == pytest.approx(3.0, abs=0.1 + 1e-9), "3 s laterally"
+    half = round(moving[0] - 0.1 + 1.5, 1)
+    assert abs(y[half] - y0) == pytest.approx(1.6, abs=0.2), "sinusoidal: half the way at half the time"
+    assert fcd.lane["Ego"][max(y)].endswith("_1")
+    (end,) = ends(events, "S/A/Change")
+    assert end == pytest.approx(start + 3.1, abs=0.1 + 1e-9), "the event ends when the lane change is done"
+
+
+def test_a_lane_offset_within_its_max_lateral_acceleration(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(
+        scenario(tmp_path, "lane-offset.xosc"), sumocfg=road / "line.sumocfg", sumo="--lateral-resolution 0.8"
+    )
+    assert starts(events, "S/A/Offset") == [2.1]
+    y = {t: p[1] for t, p in fcd.pos["Ego"].items()}
+    y0 = y[2.1]
+    reached = min(t for t in y if abs(y[t] - y0 - 0.6) < 1e-3)  # 0.6 m to the left (+y on this road)
+    assert reached == pytest.approx(2.1 + 1.8, abs=0.1 + 1e-9), "T = sqrt(6 d / a) = 1.73 s"
+    assert y[3.0] - y0 == pytest.approx(0.6 * (3 * 0.52**2 - 2 * 0.52**3), abs=0.05), "cubic: x = 0.9 / 1.73"
+    (end,) = ends(events, "S/A/Offset")
+    assert end == pytest.approx(reached + 0.1, abs=0.1 + 1e-9), "the event ends when the offset is reached"
+
+
+def test_cut_in_in_the_shape_of_the_asam_example(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(
+        scenario(tmp_path, "cut-in.xosc"), sumocfg=road / "line.sumocfg", sumo="--lateral-resolution 0.8"
+    )
+    ego, adv = fcd.pos["Ego"], fcd.pos["Adversary"]
+    appeared = min(adv)
+    gap = {t: adv[t][0] - ego[t][0] - 5.0 for t in adv if t in ego}  # freespace, front bumpers, both 5 m
+    (cut,) = starts(events, "S/A/CutIn")
+    assert cut == pytest.approx(appeared + 5.0, abs=0.2), "15 m ahead after 50 m of relative travel at 10 m/s"
+    assert gap[cut] >= 15 > gap[round(cut - 0.1, 1)], "the falling edge of 'less than 15 m'"
+    (cut_end,) = ends(events, "S/A/CutIn")
+    assert cut_end == pytest.approx(cut + 2.1, abs=0.1 + 1e-9), "a 2 s lane change"
+    assert fcd.lane["Adversary"][cut_end] == fcd.lane["Ego"][cut_end]
+    assert adv[cut_end][1] == pytest.approx(ego[cut_end][1], abs=0.01), "in the centre of Ego's lane"
+    assert starts(events, "S/A/Slow") == [cut_end], "Slow starts on CutIn's endTransition"
+    speed = fcd.speed["Adversary"]
+    slowed = min(t for t, v in speed.items() if t > cut_end and v <= 15 + 1e-3)
+    assert slowed == pytest.approx(cut_end + 7.5, abs=0.2), "30 -> 15 m/s at 2 m/s^2"
+    last = max(gap)
+    (slow_end,) = ends(events, "S/A/Slow")
+    assert slow_end == pytest.approx(cut_end + 7.6, abs=0.1 + 1e-9), "Slow ends the step after it reached 15 m/s"
+    assert speed[last] == pytest.approx(15.0, abs=0.01), "and Adversary keeps 15 m/s"
+    assert fcd.speed["Ego"][last] < 16, "Ego (SUMO's driver, 20 m/s) slowed down behind it"
+    assert min(g for t, g in gap.items() if t >= cut) > 0, "no collision once it is ahead"
+
+
 def test_opendrive_highway_and_a_catalog_vehicle(tmp_path: Path) -> None:
     xosc = scenario(tmp_path, "slow-lead.xosc")
     events, fcd = run_xosc(xosc)
@@ -139,9 +235,10 @@ def test_opendrive_highway_and_a_catalog_vehicle(tmp_path: Path) -> None:
     assert fcd.lane["Lead"][0.2] == "-1_1"
     assert fcd.type["Lead"][0.2] == "xosc_Lead"
     (follow,) = starts(events, "S/A/Follow")
-    gap = fcd.pos["Lead"][follow][0] - fcd.pos["Ego"][follow][0]
+    # Between the centres: Lead 12 m, Ego 5 m long, so 3.5 m less than between the front bumpers.
+    gap = fcd.pos["Lead"][follow][0] - fcd.pos["Ego"][follow][0] - 3.5
     before = round(follow - 0.1, 1)
-    assert gap <= 40 < fcd.pos["Lead"][before][0] - fcd.pos["Ego"][before][0]
+    assert gap <= 40 < fcd.pos["Lead"][before][0] - fcd.pos["Ego"][before][0] - 3.5
     cache = xosc.parent / ".sbsim"
     assert "origId" in (cache / "highway.net.xml").read_text(), "converted with --output.original-names"
     (types,) = cache.glob("*.vtypes.add.xml")
@@ -170,7 +267,7 @@ def test_unsupported_elements_are_one_error_with_their_lines(road: Path, tmp_pat
     xosc = scenario(tmp_path, "unsupported.xosc")
     result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
     line = assert_bad_input(result, "3 unsupported OpenSCENARIO elements", "<Pedestrian> (line 18)")
-    assert "<LateralAction> (line 42): LaneChangeAction" in line
+    assert "<LaneChangeActionDynamics> (line 43): a lane change by rate" in line
     assert "<TrafficSignalCondition> (line 59)" in line
 
 
@@ -254,7 +351,7 @@ def test_every_mapped_condition(road: Path, tmp_path: Path) -> None:
         "AccelerationConditionLess(-2",
         "StandstillCondition(1 s)",
         "CollisionCondition",
-        "DistanceCondition(vehicle Other, 30 m)",
+        "RelativeDistanceCondition(vehicle Other, cartesian reference points, lessThan 30 m)",
         "SpawnEffect('Late', route B0C0 C0D0, type xosc_Late)",
         "story 'S/A/Add (world)'",
     ):

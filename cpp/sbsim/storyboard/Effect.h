@@ -56,6 +56,10 @@ public:
     virtual std::optional<std::string> domain() const { return std::nullopt; }
     /// Reports to `sbsim check` what looks wrong in this effect (an id the network lacks).
     virtual void check(CheckContext& /*ctx*/) const {}
+    /// As an OpenSCENARIO action (ScenarioMachine::addAction): whether it has done what it does on
+    /// every vehicle it is applied to, so that its event may end. A one-shot effect is complete
+    /// once applied; a transition when it reached its target; a continuous one never.
+    virtual bool complete() const { return true; }
 };
 
 using EffectPtr = std::shared_ptr<Effect>;

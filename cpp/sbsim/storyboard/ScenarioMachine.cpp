@@ -149,6 +149,16 @@ std::size_t ScenarioMachine::add(ElementSpec spec) {
     return index;
 }
 
+void ScenarioMachine::addAction(std::size_t event, std::shared_ptr<const Effect> action) {
+    Element& e = elements_.at(event);
+    if (e.spec.kind != Kind::event) {
+        throw std::invalid_argument(
+            fmt::format("{} '{}': only an event has actions", kindName(e.spec.kind), e.spec.name));
+    }
+    if (!action) throw std::invalid_argument(fmt::format("Event '{}': a null action", e.spec.name));
+    e.actions.push_back(std::move(action));
+}
+
 const ScenarioMachine::Element& ScenarioMachine::at(std::size_t element) const {
     if (element >= elements_.size()) throw std::out_of_range(fmt::format("no storyboard element {}", element));
     return elements_[element];
@@ -270,7 +280,9 @@ void ScenarioMachine::step(const EvaluationContext& given) {
                 }
                 continue;
             }
-            if (e.spec.kind == Kind::event && e.started && *e.started < now) {
+            const auto complete = [](const std::shared_ptr<const Effect>& a) { return a->complete(); };
+            if (e.spec.kind == Kind::event && e.started && *e.started < now &&
+                std::all_of(e.actions.begin(), e.actions.end(), complete)) {
                 move(e, e.executions < e.spec.maxExecutions ? State::standby : State::complete, Transition::end);
             }
             continue;

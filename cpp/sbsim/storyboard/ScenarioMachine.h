@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/storyboard/Condition.h"
+#include "sbsim/storyboard/Effect.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -34,9 +36,15 @@ namespace sbsim::storyboard {
 ///   steps, also while the element runs); it starts the element only from standby. A condition
 ///   not evaluated at the step before forgets its previous value. Conditions are time-only
 ///   (TimeCondition, EntityCondition, ...): the machine evaluates them once, not per vehicle.
-/// - An Event's actions are instantaneous (sbsim's one-shot effects): a started event runs for the
-///   step it started in and ends at the next (endTransition) — back to standby while executions
-///   are left (maximumExecutionCount), else complete. It never restarts in the step it ended.
+/// - An Event completes when all its actions do (addAction: each effect's complete()). A started
+///   event runs at least for the step it started in; from the next step on it ends
+///   (endTransition) at the first step all its actions report complete — at once for one-shot
+///   effects (SetSpeedEffect: so one step), when its target is reached for a transition
+///   (SpeedChangeEffect, LaneChangeEffect, LaneOffsetEffect), never for a continuous one (it runs
+///   until stopped) — back to standby while executions are left (maximumExecutionCount), else
+///   complete. It never restarts in the step it ended. The entity keeps the reached state after:
+///   an effect that completed leaves its final command in force when its story ends (a speed
+///   change sets its target speed once more, as SetSpeedEffect does); a stopped one does not.
 ///   Priority: `overwrite` stops (stopTransition → complete) every running event of its
 ///   maneuver; `skip` does not start while another of its maneuver runs (skipTransition);
 ///   `parallel` starts regardless.
@@ -90,6 +98,11 @@ public:
     /// Without a prepared context (a test of one snapshot), advances on `ctx`.
     void advance(const EvaluationContext& ctx);
 
+    /// Adds an action (the effect its event's story applies) to `event`, which then ends only once
+    /// every action of it is complete(). Throws std::invalid_argument for a null effect or an
+    /// element that is not an event.
+    void addAction(std::size_t event, std::shared_ptr<const Effect> action);
+
     State state(std::size_t element) const { return at(element).state; }
     /// Whether `element` made transition `t` at time `now` (this step, once advanced).
     bool transitionedAt(std::size_t element, Transition t, kernel::SimTime now) const;
@@ -125,6 +138,7 @@ private:
         std::uint64_t executions = 0;
         std::vector<std::vector<ConditionMemory>> startMemory;
         std::vector<std::vector<ConditionMemory>> stopMemory;
+        std::vector<std::shared_ptr<const Effect>> actions;  ///< an event's
     };
 
     const Element& at(std::size_t element) const;

@@ -39,7 +39,7 @@ double LateralTransition::next(double now, double dt, const LateralPlace& place,
     const double from = start_.across(widths);
     const double to = target_.across(widths);
     const double progress = dynamics_.progress(now + dt - startTime_, driven - startDriven_ + speed * dt, to - from);
-    if (progress >= 1) reached_ = true;
+    if (progress >= 1) *reached_ = true;
     const double wanted = from + (to - from) * Transition::shaped(dynamics_.shape, progress);
     return wanted - place.across(widths);
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -36,7 +37,10 @@ public:
     /// odometer reads `driven` m (read only for a distance dimension). The first call starts it.
     double next(double now, double dt, const LateralPlace& place, const std::vector<double>& widths, double speed,
                 double driven);
-    bool reached() const { return reached_; }
+    bool reached() const { return *reached_; }
+    /// reached(), shared by the copies of this transition: the effect that hands it to an
+    /// EffectStack keeps this to ask (OpenSCENARIO: its event ends).
+    std::shared_ptr<const bool> reachedFlag() const { return reached_; }
     bool needsOdometer() const { return dynamics_.dimension == Transition::Dimension::Distance; }
     const Transition& dynamics() const { return dynamics_; }
     const LateralPlace& target() const { return target_; }
@@ -45,7 +49,7 @@ private:
     Transition dynamics_;
     LateralPlace target_;
     bool started_ = false;
-    bool reached_ = false;
+    std::shared_ptr<bool> reached_ = std::make_shared<bool>(false);
     std::optional<double> maxAcceleration_;  // m/s²: the time follows at the start
     LateralPlace start_;
     double startTime_ = 0;

@@ -28,7 +28,8 @@ double SpeedTransition::next(double now, double dt, double speed, double driven)
     const double goal = target();
     // Progress at the end of the coming step; by distance, it drives about `speed` m/s meanwhile.
     const double progress = dynamics_.progress(now + dt - startTime_, driven - startDriven_ + speed * dt, startDelta_);
-    if (progress >= 1) reached_ = true;
+    if (progress >= 1) outcome_->reached = true;
+    outcome_->target = goal;
     return startSpeed_ + (goal - startSpeed_) * Transition::shaped(dynamics_.shape, progress);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -37,7 +38,14 @@ public:
     /// The first call starts the change.
     double next(double now, double dt, double speed, double driven);
     /// Whether the change has run (the target is held from then on).
-    bool reached() const { return reached_; }
+    bool reached() const { return outcome_->reached; }
+    /// Whether it ran and the target it held last, shared by the copies of this transition: the
+    /// effect that hands it to an EffectStack keeps this to ask (OpenSCENARIO: its event ends).
+    struct Outcome {
+        bool reached = false;
+        double target = 0;  ///< m/s
+    };
+    std::shared_ptr<const Outcome> outcome() const { return outcome_; }
     /// The speed mode to command from the vehicle's own `own`: SUMO's bounds on acceleration and
     /// deceleration (bits 1, 2) and, without safeGap, its safe speed (bit 0, which bounds them too)
     /// off; its lane speed limit and speed factor disregarded (bit 6), so the target is the speed.
@@ -53,7 +61,7 @@ private:
     SpeedTarget target_;
     bool safeGap_;
     bool started_ = false;
-    bool reached_ = false;
+    std::shared_ptr<Outcome> outcome_ = std::make_shared<Outcome>();
     double startTime_ = 0;
     double startSpeed_ = 0;
     double startDriven_ = 0;

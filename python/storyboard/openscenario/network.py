@@ -104,6 +104,24 @@ class Network:
             raise ScenarioError(f"{what}: s={s:g} is off edge '{road}' (length {lane.length:g} m)")
         return lane, min(s, lane.length)
 
+    def lane_index(self, lane_id: int, what: str) -> int:
+        """SUMO's lane index (from the right) of OpenDRIVE lane `lane_id` (an AbsoluteTargetLane,
+        which names no road): the one index every road's lane of that id converted to, or on a SUMO
+        network the index (>= 0) or the lane counted from the left (< 0) on edges alike."""
+        suffix = f"_{lane_id}"
+        converted = {lane.index for lane in self.lanes.values() if any(o.endswith(suffix) for o in lane.orig)}
+        if not converted:
+            counts = {len(lanes) for lanes in self.edges.values()}
+            converted = {lane_id if lane_id >= 0 else n + lane_id for n in counts}
+            if any(i < 0 or i >= n for i in converted for n in counts):
+                raise ScenarioError(f"{what}: lane {lane_id} is not on every edge of {self.path}")
+        if len(converted) != 1:
+            raise ScenarioError(
+                f"{what}: lane {lane_id} is SUMO lane {' or '.join(map(str, sorted(converted)))} depending on the "
+                f"road; an AbsoluteTargetLane needs one (use a RelativeTargetLane)"
+            )
+        return converted.pop()
+
     def world_position(self, x: float, y: float, what: str) -> tuple[Lane, float]:
         """The lane nearest to OpenDRIVE world point (x, y) (within 10 m), and the position on it."""
         px, py = x + self.offset[0], y + self.offset[1]

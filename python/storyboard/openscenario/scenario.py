@@ -30,6 +30,8 @@ VEHICLE_CLASSES = {
     "bicycle": "bicycle",
 }
 
+SHAPES = ("step", "linear", "cubic", "sinusoidal")
+DIMENSIONS = ("time", "distance", "rate")
 RULES = ("greaterThan", "lessThan", "equalTo", "greaterOrEqual", "lessOrEqual", "notEqualTo")
 EDGES = ("none", "rising", "falling", "risingOrFalling")
 STATES = (
@@ -546,7 +548,11 @@ class Importer:
             speed = inner.find("SpeedAction") if inner.tag == "LongitudinalAction" else None
             if speed is not None:
                 return self.read_speed(speed, scope, name)
-            self.problems.add(inner, self.later(inner))
+            if inner.tag == "LateralAction" and len(inner) == 1 and inner[0].tag == "LaneChangeAction":
+                return self.read_lane_change(inner[0], scope, name, actors)
+            if inner.tag == "LateralAction" and len(inner) == 1 and inner[0].tag == "LaneOffsetAction":
+                return self.read_lane_offset(inner[0], scope, name)
+            self.problems.add(inner)
             return None
         if kind.tag == "UserDefinedAction" and len(kind) == 1 and kind[0].tag == "CustomCommandAction":
             command = kind[0]
@@ -581,7 +587,7 @@ class Importer:
                 f"SpawnEffect({sumo_id})",
                 lambda b: b.sb.SpawnEffect(sumo_id, route=route, type=vtype, lane=index, position=pos),
             )
-        self.problems.add(kind, self.later(kind))
+        self.problems.add(kind)
         return None
 
     def read_parameter_action(self, action: Any, scope: Scope, name: str) -> Action | None:
@@ -606,27 +612,118 @@ class Importer:
             name, True, f"ParameterEffect({ref} {op})", lambda b: b.sb.ParameterEffect(b.params, ref, op, operand)
         )
 
-    def later(self, element: Any) -> str:
-        """Why an action is unsupported, for the actions another part of sbsim brings."""
-        tag = element[0].tag if len(element) else element.tag
-        if tag in ("LaneChangeAction", "LaneOffsetAction"):
-            return f"{tag} (lateral transitions are not in sbsim's story vocabulary yet)"
-        return ""
+    def transition(self, dynamics: Any, scope: Scope) -> tuple[str, str, float] | None:
+        """TransitionDynamics as (shape, dimension, value); None (a problem) for what sbsim lacks."""
+        shape = self.text(dynamics, "dynamicsShape", scope)
+        dimension = self.text(dynamics, "dynamicsDimension", scope, "time")
+        if shape not in SHAPES or dimension not in DIMENSIONS:
+            self.problems.add(dynamics, f"dynamicsShape '{shape}' with dynamicsDimension '{dimension}'")
+            return None
+        if dynamics.get("followingMode") not in (None, "position"):
+            self.problems.add(dynamics, "followingMode 'follow' (the shape is followed exactly)")
+            return None
+        return shape, dimension, self.number(dynamics, "value", scope, "0")
 
     def read_speed(self, speed: Any, scope: Scope, name: str) -> Action | None:
         dynamics = speed.find("SpeedActionDynamics")
-        target = speed.find("SpeedActionTarget/AbsoluteTargetSpeed")
+        target = speed.find("SpeedActionTarget")
+        if dynamics is None or target is None or len(target) != 1:
+            self.problems.add(speed, "a SpeedAction needs SpeedActionDynamics and a SpeedActionTarget")
+            return None
+        law = self.transition(dynamics, scope)
+        if law is None:
+            return None
+        shape, dimension, by = law
+        inner = target[0]
+        if inner.tag == "AbsoluteTargetSpeed":
+            value = self.number(inner, "value", scope)
+            if shape == "step":
+                # At once, within SUMO's safety checks (its acceleration bounds), kept after.
+                return Action(name, False, f"SetSpeedEffect({value:g} m/s)", lambda b: b.sb.SetSpeedEffect(value))
+
+            def absolute(b: Build) -> Any:
+                return b.sb.SpeedChangeEffect(value, shape, dimension, by, keep=True)
+
+            return Action(name, False, f"SpeedChangeEffect({value:g} m/s, {shape} {dimension} {by:g})", absolute)
+        if inner.tag == "RelativeTargetSpeed":
+            other = self.sumo_id(self.text(inner, "entityRef", scope), inner)
+            value = self.number(inner, "value", scope)
+            kind = self.text(inner, "speedTargetValueType", scope)
+            continuous = self.text(inner, "continuous", scope, "false") == "true"
+            if kind not in ("delta", "factor"):
+                raise ScenarioError(
+                    f"{where(self.path, inner)}: speedTargetValueType '{kind}' is none of delta, factor"
+                )
+
+            def relative(b: Build) -> Any:
+                return b.sb.SpeedChangeEffect(
+                    value, shape, dimension, by, relative_to=other, value_type=kind, continuous=continuous, keep=True
+                )
+
+            return Action(name, False, f"SpeedChangeEffect({other}'s speed {kind} {value:g})", relative)
+        self.problems.add(inner)
+        return None
+
+    def read_lane_change(self, change: Any, scope: Scope, name: str, actors: list[str]) -> Action | None:
+        dynamics = change.find("LaneChangeActionDynamics")
+        target = change.find("LaneChangeTarget")
+        if dynamics is None or target is None or len(target) != 1:
+            self.problems.add(change, "a LaneChangeAction needs LaneChangeActionDynamics and a LaneChangeTarget")
+            return None
+        law = self.transition(dynamics, scope)
+        if law is None:
+            return None
+        shape, dimension, by = law
+        if dimension == "rate":
+            self.problems.add(dynamics, "a lane change by rate (time and distance are)")
+            return None
+        offset = self.number(change, "targetLaneOffset", scope, "0")
+        inner = target[0]
+        if inner.tag == "RelativeTargetLane":
+            other = self.sumo_id(self.text(inner, "entityRef", scope), inner)
+            lanes = int(self.number(inner, "value", scope))  # positive: to the left, as SUMO's index goes
+            own = actors == [other]
+
+            def relative(b: Build) -> Any:
+                if own:
+                    return b.sb.LaneChangeEffect(lanes, shape, dimension, by, relative=True, offset=offset)
+                return b.sb.LaneChangeEffect(lanes, shape, dimension, by, relative_to=other, offset=offset)
+
+            return Action(name, False, f"LaneChangeEffect({other}'s lane {lanes:+d})", relative)
+        if inner.tag == "AbsoluteTargetLane":
+            index = self.network.lane_index(int(self.number(inner, "value", scope)), where(self.path, inner))
+
+            def absolute(b: Build) -> Any:
+                return b.sb.LaneChangeEffect(index, shape, dimension, by, offset=offset)
+
+            return Action(name, False, f"LaneChangeEffect(lane {index})", absolute)
+        self.problems.add(inner)
+        return None
+
+    def read_lane_offset(self, action: Any, scope: Scope, name: str) -> Action | None:
+        dynamics = action.find("LaneOffsetActionDynamics")
+        target = action.find("LaneOffsetTarget/AbsoluteTargetLaneOffset")
         if dynamics is None or target is None:
-            self.problems.add(speed, "a SpeedAction needs SpeedActionDynamics and an AbsoluteTargetSpeed")
+            self.problems.add(action, "a LaneOffsetAction needs its dynamics and an AbsoluteTargetLaneOffset")
+            return None
+        if self.text(action, "continuous", scope, "false") == "true":
+            self.problems.add(action, "continuous=true (the offset is reached once, then SUMO aligns the vehicle)")
             return None
         shape = self.text(dynamics, "dynamicsShape", scope)
-        if shape != "step":
-            self.problems.add(
-                dynamics, f"dynamicsShape '{shape}' (speed transitions are not in sbsim's story vocabulary yet)"
-            )
+        if shape not in SHAPES:
+            self.problems.add(dynamics, f"dynamicsShape '{shape}'")
             return None
-        value = self.number(target, "value", scope)
-        return Action(name, False, f"SetSpeedEffect({value:g} m/s)", lambda b: b.sb.SetSpeedEffect(value))
+        acc = float(self.number(dynamics, "maxLateralAcc", scope)) if dynamics.get("maxLateralAcc") else None
+        if acc is None and shape != "step":
+            self.problems.add(dynamics, f"a {shape} lane offset without maxLateralAcc (its time comes from it)")
+            return None
+        offset = self.number(target, "value", scope)
+        return Action(
+            name,
+            False,
+            f"LaneOffsetEffect({offset:+g} m)",
+            lambda b: b.sb.LaneOffsetEffect(offset, shape, max_lateral_acc=acc),
+        )
 
     # -- triggers and conditions ---------------------------------------------------------------
     def read_trigger(self, trigger: Any, scope: Scope) -> Trigger:
@@ -747,8 +844,13 @@ class Importer:
                 return None
             point = self.network.xy(lane, pos)
             return lambda b: b.sb.DistanceCondition(point, tolerance)
-        if tag in ("DistanceCondition", "RelativeDistanceCondition"):
+        if tag == "DistanceCondition":
             return self.distance(c, scope)
+        if tag == "RelativeDistanceCondition":
+            return self.relative_distance(c, scope)
+        if tag == "TraveledDistanceCondition":
+            traveled = self.number(c, "value", scope)
+            return lambda b: b.sb.TraveledDistanceCondition(traveled)
         if tag == "RelativeSpeedCondition":
             other = self.sumo_id(self.text(c, "entityRef", scope), c)
             value, rule = self.number(c, "value", scope), self.rule(c, scope)
@@ -802,6 +904,19 @@ class Importer:
 
         return build
 
+    def relative_distance(self, c: Any, scope: Scope) -> Recipe | None:
+        other = self.sumo_id(self.text(c, "entityRef", scope), c)
+        value, rule = self.number(c, "value", scope), self.rule(c, scope)
+        kind = self.text(c, "relativeDistanceType", scope)
+        kinds = {"longitudinal": "longitudinal", "lateral": "lateral", "cartesianDistance": "cartesian"}
+        kinds["euclidianDistance"] = "cartesian"  # 1.0's name
+        system = self.text(c, "coordinateSystem", scope, "entity")
+        if kind not in kinds or system != "entity":
+            self.problems.add(c, f"relativeDistanceType '{kind}' in coordinateSystem '{system}' (entity is)")
+            return None
+        freespace = self.text(c, "freespace", scope) == "true"
+        return lambda b: b.sb.RelativeDistanceCondition(other, value, rule, kinds[kind], freespace)
+
     def distance(self, c: Any, scope: Scope) -> Recipe | None:
         value, rule = self.number(c, "value", scope), self.rule(c, scope)
         if rule not in ("lessThan", "lessOrEqual", "greaterThan", "greaterOrEqual"):
@@ -815,21 +930,18 @@ class Importer:
             self.problems.add(c, "freespace=true (distances are between front bumpers)")
             return None
         target: Any
-        if c.tag == "RelativeDistanceCondition":
-            target = self.sumo_id(self.text(c, "entityRef", scope), c)
+        position = c.find("Position")
+        entity = position.find("RelativeObjectPosition") if position is not None else None
+        if position is not None and len(position) == 1 and position[0].tag == "EntityPosition":
+            target = self.sumo_id(self.text(position[0], "entityRef", scope), position[0])
+        elif entity is not None:
+            self.problems.add(entity)
+            return None
         else:
-            position = c.find("Position")
-            entity = position.find("RelativeObjectPosition") if position is not None else None
-            if position is not None and len(position) == 1 and position[0].tag == "EntityPosition":
-                target = self.sumo_id(self.text(position[0], "entityRef", scope), position[0])
-            elif entity is not None:
-                self.problems.add(entity)
+            lane, pos = self.position(position, scope, where(self.path, c))
+            if lane is None:
                 return None
-            else:
-                lane, pos = self.position(position, scope, where(self.path, c))
-                if lane is None:
-                    return None
-                target = self.network.xy(lane, pos)
+            target = self.network.xy(lane, pos)
 
         def build(b: Build) -> Any:
             within = b.sb.DistanceCondition(target, value)

@@ -4,8 +4,9 @@ One ScenarioMachine holds the storyboard's states. Stories, named for the OpenSC
 - "Storyboard" (a WorldStory): active while the storyboard runs (its stop trigger's conditions);
 - "Init": spawns the positioned entities at the first step; "Init/<entity>" sets an Init speed;
 - "<Story>/<Act>" (a WorldStory): active while the act runs;
-- "<Story>/<Act>/<Event>": active for the event's actors at the step it starts, with its actions
-  as effects (a world one, an AddEntityAction, in "<Story>/<Act>/<Event> (world)").
+- "<Story>/<Act>/<Event>": active for the event's actors while the event runs (the step it starts,
+  and until its transitions reached their targets), with its actions as effects (a world one, an
+  AddEntityAction, in "<Story>/<Act>/<Event> (world)").
 """
 
 from __future__ import annotations
@@ -125,6 +126,8 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
             raise ScenarioError(f"{xosc}: event '{e.path}' acts on vehicles, but its ManeuverGroup has no actors")
         world = [a.recipe(build) for a in e.actions if a.world]
         private = [a.recipe(build) for a in e.actions if not a.world]
+        for effect in private:  # the event ends once each is complete (a transition: its target reached)
+            machine.add_action(indices[id(e)], effect)
         if world:
             board.registerStory(
                 sb.WorldStory(sb.ElementCondition(machine, indices[id(e)]), world, name=f"{name} (world)")

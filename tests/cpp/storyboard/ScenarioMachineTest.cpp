@@ -132,6 +132,55 @@ TEST_F(Machine, OverwriteStopsTheRunningEventsOfItsManeuver) {
     EXPECT_EQ(m->executions(a), 1u);
 }
 
+/// An action whose completion the test sets (a transition reaching its target).
+class Transition : public Effect {
+public:
+    void apply(EffectScope& /*scope*/) override {}
+    void remove(EffectScope& /*scope*/) override {}
+    bool complete() const override { return done; }
+    bool done = false;
+};
+
+TEST_F(Machine, AnEventRunsUntilAllItsActionsAreComplete) {
+    const std::size_t e = event("E", {});
+    auto first = std::make_shared<Transition>();
+    auto second = std::make_shared<Transition>();
+    m->addAction(e, first);
+    m->addAction(e, second);
+    // First done from step 3 on, second from step 5 on: the event ends at 5, its maneuver with it.
+    const auto at = runs(e, 7, [&](int next) {
+        first->done = next >= 3;
+        second->done = next >= 5;
+    });
+    EXPECT_EQ(at, (std::vector<int>{1, 2, 3, 4}));
+    EXPECT_TRUE(m->transitionedAt(e, M::Transition::end, SimTime::fromSeconds(5)));
+    EXPECT_EQ(m->state(maneuver), M::State::complete);
+}
+
+TEST_F(Machine, ACompleteActionStillRunsItsFirstStep) {
+    const std::size_t e = event("E", {});
+    auto done = std::make_shared<Transition>();
+    done->done = true;
+    m->addAction(e, done);
+    EXPECT_EQ(runs(e, 3), (std::vector<int>{1}));
+}
+
+TEST_F(Machine, OverwriteStopsARunningTransition) {
+    auto late = std::make_shared<Switch>();
+    const std::size_t a = event("A", {});
+    auto never = std::make_shared<Transition>();
+    m->addAction(a, never);
+    const std::size_t b = event("B", when(late), 1, M::Priority::overwrite);
+    EXPECT_EQ(runs(a, 3, [&](int next) { late->on = next >= 3; }), (std::vector<int>{1, 2}));
+    EXPECT_TRUE(m->transitionedAt(a, M::Transition::stop, SimTime::fromSeconds(3)));
+    EXPECT_EQ(m->state(b), M::State::running);
+}
+
+TEST_F(Machine, OnlyAnEventTakesActions) {
+    EXPECT_THROW(m->addAction(maneuver, std::make_shared<Transition>()), std::invalid_argument);
+    EXPECT_THROW(m->addAction(event("E", {}), nullptr), std::invalid_argument);
+}
+
 TEST_F(Machine, SkipDoesNotStartWhileAnotherEventOfItsManeuverRuns) {
     auto sw = std::make_shared<Switch>();
     const std::size_t a = event("A", when(sw), 1);

@@ -165,6 +165,30 @@ TEST(LateralTransition, SinusoidalLaneChangeOverThreeSeconds) {
     EXPECT_TRUE(change.reached());
 }
 
+TEST(SpeedTransition, ItsOutcomeIsSharedByItsCopies) {
+    // The effect keeps the outcome, the EffectStack a copy that it drives: the effect sees it run.
+    const SpeedTransition made({Shape::Linear, Dimension::Time, 1.0}, {SpeedTarget::Kind::Absolute, 20});
+    const auto outcome = made.outcome();
+    SpeedTransition driven = made;
+    for (int k = 0; k < 9; ++k) driven.next(k * 0.1, 0.1, 10, 0);
+    EXPECT_FALSE(outcome->reached) << "0.9 s of 1 s";
+    EXPECT_DOUBLE_EQ(outcome->target, 20.0);
+    driven.next(0.9, 0.1, 19, 0);
+    EXPECT_TRUE(outcome->reached) << "the step that ends at 1 s reaches it";
+}
+
+TEST(LateralTransition, ReachedIsSharedByItsCopies) {
+    const std::vector<double> widths{3.2, 3.2};
+    const LateralTransition made({Shape::Linear, Dimension::Time, 0.5}, {1, 0});
+    const auto reached = made.reachedFlag();
+    LateralTransition driven = made;
+    LateralPlace place{0, 0};
+    for (int k = 0; k < 4; ++k) place.offset += driven.next(k * 0.1, 0.1, place, widths, 20, 0);
+    EXPECT_FALSE(*reached);
+    driven.next(0.4, 0.1, place, widths, 20, 0);
+    EXPECT_TRUE(*reached);
+}
+
 TEST(LateralTransition, MaxLateralAccelerationGivesTheTime) {
     const std::vector<double> widths{3.2};
     // 0.6 m at 0.4 m/s² sinusoidal: T = π sqrt(0.6 / 0.8) = 2.72 s; cubic: sqrt(6 · 0.6 / 0.4) = 3 s.

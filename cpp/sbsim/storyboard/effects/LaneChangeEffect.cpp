@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -29,8 +30,13 @@ void LaneChangeEffect::apply(EffectScope& scope) {
     int lane = lane_;
     if (relative_ == Relative::Self) lane += scope.vehicle().laneIndex();
     if (relative_ == Relative::Vehicle) lane += scope.controllerOf(*relativeTo_)->laneIndex();
-    scope.stack().pushLateralTransition(scope.token(),
-                                        traffic::LateralTransition(dynamics_, traffic::LateralPlace{lane, offset_}));
+    traffic::LateralTransition transition(dynamics_, traffic::LateralPlace{lane, offset_});
+    active_[scope.token()] = transition.reachedFlag();
+    scope.stack().pushLateralTransition(scope.token(), std::move(transition));
+}
+
+bool LaneChangeEffect::complete() const {
+    return std::all_of(active_.begin(), active_.end(), [](const auto& a) { return *a.second; });
 }
 
 std::string LaneChangeEffect::describe() const {

@@ -1,9 +1,12 @@
 #pragma once
 
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "sbsim/storyboard/Effect.h"
+#include "sbsim/traffic/EffectStack.h"
 #include "sbsim/traffic/Transition.h"
 
 namespace sbsim::storyboard {
@@ -24,7 +27,12 @@ public:
     std::string describe() const override;
     std::optional<std::string> domain() const override { return "lane"; }
     void apply(EffectScope& scope) override;
-    void remove(EffectScope& scope) override { scope.stack().remove(scope.token()); }
+    void remove(EffectScope& scope) override {
+        scope.stack().remove(scope.token());
+        active_.erase(scope.token());
+    }
+    /// Once the manoeuvre reached its target on every vehicle it acts on.
+    bool complete() const override;
     void check(CheckContext& ctx) const override;
 
     int lane() const { return lane_; }
@@ -39,6 +47,7 @@ private:
     Relative relative_;
     std::optional<std::string> relativeTo_;
     double offset_;
+    std::map<traffic::EffectStack::Token, std::shared_ptr<const bool>> active_;  ///< reached, per activation
 };
 
 }  // namespace sbsim::storyboard

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,10 +26,16 @@ LaneOffsetEffect::LaneOffsetEffect(double offset, traffic::Transition dynamics,
 
 void LaneOffsetEffect::apply(EffectScope& scope) {
     const traffic::LateralPlace target{scope.vehicle().laneIndex(), offset_};
-    scope.stack().pushLateralTransition(scope.token(), maxLateralAcceleration_
-                                                           ? traffic::LateralTransition::withMaxAcceleration(
-                                                                 dynamics_.shape, *maxLateralAcceleration_, target)
-                                                           : traffic::LateralTransition(dynamics_, target));
+    traffic::LateralTransition transition =
+        maxLateralAcceleration_
+            ? traffic::LateralTransition::withMaxAcceleration(dynamics_.shape, *maxLateralAcceleration_, target)
+            : traffic::LateralTransition(dynamics_, target);
+    active_[scope.token()] = transition.reachedFlag();
+    scope.stack().pushLateralTransition(scope.token(), std::move(transition));
+}
+
+bool LaneOffsetEffect::complete() const {
+    return std::all_of(active_.begin(), active_.end(), [](const auto& a) { return *a.second; });
 }
 
 std::string LaneOffsetEffect::describe() const {

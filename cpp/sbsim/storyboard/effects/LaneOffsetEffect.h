@@ -1,9 +1,12 @@
 #pragma once
 
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "sbsim/storyboard/Effect.h"
+#include "sbsim/traffic/EffectStack.h"
 #include "sbsim/traffic/Transition.h"
 
 namespace sbsim::storyboard {
@@ -20,7 +23,12 @@ public:
     std::string describe() const override;
     std::optional<std::string> domain() const override { return "lane"; }
     void apply(EffectScope& scope) override;
-    void remove(EffectScope& scope) override { scope.stack().remove(scope.token()); }
+    void remove(EffectScope& scope) override {
+        scope.stack().remove(scope.token());
+        active_.erase(scope.token());
+    }
+    /// Once the manoeuvre reached its target on every vehicle it acts on.
+    bool complete() const override;
 
     double offset() const { return offset_; }
     const traffic::Transition& dynamics() const { return dynamics_; }
@@ -29,7 +37,8 @@ public:
 private:
     double offset_;
     traffic::Transition dynamics_;
-    std::optional<double> maxLateralAcceleration_;  ///< m/s²
+    std::optional<double> maxLateralAcceleration_;                               ///< m/s²
+    std::map<traffic::EffectStack::Token, std::shared_ptr<const bool>> active_;  ///< reached, per activation
 };
 
 }  // namespace sbsim::storyboard

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -24,13 +25,14 @@ void requireTransition(const traffic::Transition& dynamics, std::string_view who
 }  // namespace
 
 SpeedChangeEffect::SpeedChangeEffect(double target, traffic::Transition dynamics, std::optional<std::string> relativeTo,
-                                     traffic::SpeedTarget::Kind kind, bool continuous, bool safeGap)
+                                     traffic::SpeedTarget::Kind kind, bool continuous, bool safeGap, bool keep)
     : target_(target),
       dynamics_(dynamics),
       relativeTo_(std::move(relativeTo)),
       kind_(relativeTo_ ? kind : traffic::SpeedTarget::Kind::Absolute),
       continuous_(continuous && relativeTo_.has_value()),
-      safeGap_(safeGap) {
+      safeGap_(safeGap),
+      keep_(keep) {
     if (!std::isfinite(target)) throw std::invalid_argument("SpeedChangeEffect needs a finite target");
     if (kind_ == traffic::SpeedTarget::Kind::Absolute && target < 0) {
         throw std::invalid_argument(fmt::format("SpeedChangeEffect needs a speed >= 0 in m/s, got {:f}", target));
@@ -60,7 +62,22 @@ void SpeedChangeEffect::apply(EffectScope& scope) {
             }
         };
     }
-    scope.stack().pushSpeedTransition(scope.token(), traffic::SpeedTransition(dynamics_, std::move(target), safeGap_));
+    traffic::SpeedTransition transition(dynamics_, std::move(target), safeGap_);
+    active_[scope.token()] = transition.outcome();
+    scope.stack().pushSpeedTransition(scope.token(), std::move(transition));
+}
+
+void SpeedChangeEffect::remove(EffectScope& scope) {
+    scope.stack().remove(scope.token());
+    const auto it = active_.find(scope.token());
+    if (it == active_.end()) return;
+    if (keep_ && it->second->reached) scope.vehicle().setSpeed(it->second->target);
+    active_.erase(it);
+}
+
+bool SpeedChangeEffect::complete() const {
+    if (continuous_) return false;  // it follows its reference until stopped
+    return std::all_of(active_.begin(), active_.end(), [](const auto& a) { return a.second->reached; });
 }
 
 std::string SpeedChangeEffect::describe() const {
@@ -76,8 +93,8 @@ std::string SpeedChangeEffect::describe() const {
             target = fmt::format("{}'s speed x {:g}", *relativeTo_, target_);
             break;
     }
-    return fmt::format("SpeedChangeEffect({}{}, {}{})", target, continuous_ ? ", continuous" : "",
-                       dynamics_.describe("m/s²"), safeGap_ ? ", safe gap" : "");
+    return fmt::format("SpeedChangeEffect({}{}, {}{}{})", target, continuous_ ? ", continuous" : "",
+                       dynamics_.describe("m/s²"), safeGap_ ? ", safe gap" : "", keep_ ? ", kept" : "");
 }
 
 void SpeedChangeEffect::check(CheckContext& ctx) const {

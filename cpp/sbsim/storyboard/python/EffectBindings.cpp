@@ -101,7 +101,8 @@ traffic::Transition toTransition(const std::string& shape, const std::string& di
 std::shared_ptr<SpeedChangeEffect> makeSpeedChangeEffect(const py::object& target, const std::string& shape,
                                                          const std::string& dimension, const py::object& value,
                                                          const std::optional<std::string>& relativeTo,
-                                                         const std::string& valueType, bool continuous, bool safeGap) {
+                                                         const std::string& valueType, bool continuous, bool safeGap,
+                                                         bool keep) {
     const double t = toNumber(target, "SpeedChangeEffect target");
     const traffic::Transition dynamics = toTransition(shape, dimension, value, "SpeedChangeEffect");
     traffic::SpeedTarget::Kind kind = traffic::SpeedTarget::Kind::Delta;
@@ -116,7 +117,7 @@ std::shared_ptr<SpeedChangeEffect> makeSpeedChangeEffect(const py::object& targe
     if (!relativeTo && t < 0) throw py::value_error("SpeedChangeEffect needs a target speed >= 0 m/s");
     if (kind == traffic::SpeedTarget::Kind::Factor && t < 0)
         throw py::value_error("SpeedChangeEffect needs a factor >= 0");
-    return std::make_shared<SpeedChangeEffect>(t, dynamics, relativeTo, kind, continuous, safeGap);
+    return std::make_shared<SpeedChangeEffect>(t, dynamics, relativeTo, kind, continuous, safeGap, keep);
 }
 
 std::shared_ptr<LaneChangeEffect> makeLaneChangeEffect(const py::object& lane, const std::string& shape,
@@ -218,7 +219,8 @@ void bindEffects(py::module_& m) {
     py::class_<SpeedChangeEffect, Effect, py::smart_holder>(m, "SpeedChangeEffect")
         .def(py::init(&makeSpeedChangeEffect), py::arg("target"), py::arg("shape") = "step",
              py::arg("dimension") = "time", py::arg("value") = 0.0, py::kw_only(), py::arg("relative_to") = py::none(),
-             py::arg("value_type") = "delta", py::arg("continuous") = false, py::arg("safe_gap") = false)
+             py::arg("value_type") = "delta", py::arg("continuous") = false, py::arg("safe_gap") = false,
+             py::arg("keep") = false)
         .def_property_readonly("target", &SpeedChangeEffect::target)
         .def_property_readonly(
             "shape",
@@ -233,7 +235,8 @@ void bindEffects(py::module_& m) {
                                    return e.kind() == traffic::SpeedTarget::Kind::Factor ? "factor" : "delta";
                                })
         .def_property_readonly("continuous", &SpeedChangeEffect::continuous)
-        .def_property_readonly("safe_gap", &SpeedChangeEffect::safeGap);
+        .def_property_readonly("safe_gap", &SpeedChangeEffect::safeGap)
+        .def_property_readonly("keep", &SpeedChangeEffect::keep);
     py::class_<LaneChangeEffect, Effect, py::smart_holder>(m, "LaneChangeEffect")
         .def(py::init(&makeLaneChangeEffect), py::arg("lane"), py::arg("shape") = "step", py::arg("dimension") = "time",
              py::arg("value") = 0.0, py::kw_only(), py::arg("relative") = false, py::arg("relative_to") = py::none(),

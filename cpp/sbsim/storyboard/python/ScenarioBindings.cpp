@@ -138,6 +138,13 @@ void bindScenario(py::module_& m) {
             },
             py::arg("name"), py::arg("kind"), py::arg("parent") = py::none(), py::arg("start") = py::none(),
             py::arg("stop") = py::none(), py::arg("max_executions") = 1, py::arg("priority") = "parallel")
+        .def(
+            "add_action",
+            [](M& self, std::size_t event, std::shared_ptr<Effect> action) {
+                if (event >= self.size()) throw py::index_error("no storyboard element " + std::to_string(event));
+                self.addAction(event, std::move(action));
+            },
+            py::arg("event"), py::arg("action"))
         .def("__len__", &M::size)
         .def("state", [](const M& self, std::size_t e) { return std::string(M::stateName(self.state(e))); })
         .def("executions", &M::executions)
