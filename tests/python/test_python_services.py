@@ -365,7 +365,14 @@ def test_the_python_warning_story_warns_more_vehicles_and_further_as_more_are_eq
         result = run(
             folder / "warning.sumocfg",
             story=folder / "story.py",
-            extra=["--services", str(folder / "services.xml"), "--penetration", penetration, "--statistics", str(stats)],
+            extra=[
+                "--services",
+                str(folder / "services.xml"),
+                "--penetration",
+                penetration,
+                "--statistics",
+                str(stats),
+            ],
             timeout=300,
         )
         assert_no_crash(result)
