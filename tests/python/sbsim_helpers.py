@@ -84,6 +84,18 @@ def write_story(directory: Path, source: str, name: str = "story.py") -> Path:
     return path
 
 
+def write_file(directory: Path, name: str, text: str) -> Path:
+    """`text`, dedented and without its leading blank lines, as `directory/name`."""
+    path = Path(directory) / name
+    path.write_text(textwrap.dedent(text).lstrip(), encoding="utf-8")
+    return path
+
+
+def services_file(directory: Path, *entries: str, name: str = "services.xml") -> Path:
+    """A services file holding `entries` (XML elements) in a <services> element."""
+    return write_file(directory, name, "<services>\n" + "\n".join(f"  {e}" for e in entries) + "\n</services>\n")
+
+
 @dataclass
 class FcdTrace:
     """Per-vehicle states from SUMO's ``--fcd-output``, keyed by sbsim time.

@@ -5,14 +5,13 @@ their DENM memory, and bad arguments are exit 2 naming the service, station, tim
 
 from __future__ import annotations
 
-import textwrap
 from collections import Counter
 from pathlib import Path
 
 import pandas as pd
 from sbsim.messages import read_message_lines
 from sbsim.runner import RunResult, read_events, run
-from sbsim_helpers import assert_bad_input, assert_no_crash, write_story
+from sbsim_helpers import assert_bad_input, assert_no_crash, services_file, write_file, write_story
 
 #: RsuDenService cause="3" from="10" until="60" area="150" validity="100" (interval 1 s), in Python: repeated
 #: until the event ends at 60 s, valid for 100 s (so receivers drop it at 60 s for the cancellation, not expiry).
@@ -82,16 +81,6 @@ def createStories(board):
 UNIT = (300.0, 300.0)
 
 
-def write(directory: Path, name: str, text: str) -> Path:
-    path = directory / name
-    path.write_text(textwrap.dedent(text).lstrip(), encoding="utf-8")
-    return path
-
-
-def services_file(directory: Path, *entries: str, name: str = "services.xml") -> Path:
-    return write(directory, name, "<services>\n" + "\n".join(f"  {e}" for e in entries) + "\n</services>\n")
-
-
 def run_ok(cfg: Path, *extra: str, story: Path | None = None, events: Path | None = None) -> RunResult:
     result = run(cfg, story=story, events=events, end=80.0, seed=7, extra=list(extra), timeout=300)
     assert_no_crash(result)
@@ -102,7 +91,7 @@ def run_ok(cfg: Path, *extra: str, story: Path | None = None, events: Path | Non
 def test_a_python_units_denm_is_rsu_den_services_byte_for_byte_with_any_threads(
     loops_cfg: Path, tmp_path: Path
 ) -> None:
-    write(tmp_path, "den.py", ANNOUNCER)
+    write_file(tmp_path, "den.py", ANNOUNCER)
     unit = f'<rsu id="rsu0" x="{UNIT[0]:g}" y="{UNIT[1]:g}">{{}}</rsu>'
     cpp = services_file(
         tmp_path,
@@ -136,7 +125,7 @@ def test_a_python_units_denm_is_rsu_den_services_byte_for_byte_with_any_threads(
 
 
 def test_a_python_denm_reaches_denm_condition_stories_and_its_end_drops_it(loops_cfg: Path, tmp_path: Path) -> None:
-    write(tmp_path, "den.py", ANNOUNCER)
+    write_file(tmp_path, "den.py", ANNOUNCER)
     story = write_story(tmp_path, DENM_STORY)
     services = services_file(
         tmp_path,
@@ -185,7 +174,7 @@ def test_a_python_denm_reaches_denm_condition_stories_and_its_end_drops_it(loops
 
 
 def test_send_denm_needs_sends_denms(loops_cfg: Path, tmp_path: Path) -> None:
-    source = write(tmp_path, "den.py", ANNOUNCER)
+    source = write_file(tmp_path, "den.py", ANNOUNCER)
     services = services_file(
         tmp_path, '<rsu id="rsu0" x="300" y="300"><service type="python:den.py:Undeclared"/></rsu>'
     )
@@ -201,7 +190,7 @@ def test_send_denm_needs_sends_denms(loops_cfg: Path, tmp_path: Path) -> None:
 def test_bad_send_denm_arguments_are_exit_2_naming_service_station_time_file_and_line(
     loops_cfg: Path, tmp_path: Path
 ) -> None:
-    source = write(tmp_path, "den.py", ANNOUNCER)
+    source = write_file(tmp_path, "den.py", ANNOUNCER)
     services = services_file(tmp_path, '<service type="python:den.py:BadCause"/>')
     result = run(loops_cfg, end=20.0, seed=7, extra=["--services", str(services)], timeout=120)
     assert_no_crash(result)
@@ -213,7 +202,7 @@ def test_bad_send_denm_arguments_are_exit_2_naming_service_station_time_file_and
 
 
 def test_sends_denms_must_be_a_bool(loops_cfg: Path, tmp_path: Path) -> None:
-    write(tmp_path, "den.py", ANNOUNCER)
+    write_file(tmp_path, "den.py", ANNOUNCER)
     services = services_file(tmp_path, '<service type="python:den.py:NotBool"/>')
     for extra in (["check"], []):
         result = run(loops_cfg, end=5.0, extra=[*extra, "--services", str(services)], timeout=120)
@@ -221,7 +210,7 @@ def test_sends_denms_must_be_a_bool(loops_cfg: Path, tmp_path: Path) -> None:
 
 
 def test_a_python_services_file_is_an_input_no_output_may_overwrite(loops_cfg: Path, tmp_path: Path) -> None:
-    source = write(tmp_path, "den.py", ANNOUNCER)
+    source = write_file(tmp_path, "den.py", ANNOUNCER)
     services = services_file(tmp_path, '<service type="python:den.py:Watcher"/>')
     before = source.read_bytes()
     result = run(loops_cfg, end=5.0, extra=["--services", str(services), "--messages", str(source)], timeout=120)

@@ -5,7 +5,6 @@ statistics agree with the trace, and an exception is exit 2 naming the Python fi
 
 from __future__ import annotations
 
-import textwrap
 from collections import Counter
 from pathlib import Path
 
@@ -13,7 +12,7 @@ import pandas as pd
 import pytest
 from sbsim.messages import read_message_lines
 from sbsim.runner import RunResult, run
-from sbsim_helpers import assert_bad_input, assert_no_crash, write_story
+from sbsim_helpers import assert_bad_input, assert_no_crash, services_file, write_file, write_story
 
 BEACON = """
 from storyboard.services import Service
@@ -76,16 +75,6 @@ def createStories(board):
 """
 
 
-def write(directory: Path, name: str, text: str) -> Path:
-    path = directory / name
-    path.write_text(textwrap.dedent(text).lstrip(), encoding="utf-8")
-    return path
-
-
-def services_file(directory: Path, *entries: str, name: str = "services.xml") -> Path:
-    return write(directory, name, "<services>\n" + "\n".join(f"  {e}" for e in entries) + "\n</services>\n")
-
-
 def run_ok(cfg: Path, *extra: str, story: Path | None = None, end: float = 40.0) -> RunResult:
     result = run(cfg, story=story, end=end, seed=7, extra=list(extra), timeout=300)
     assert_no_crash(result)
@@ -95,7 +84,7 @@ def run_ok(cfg: Path, *extra: str, story: Path | None = None, end: float = 40.0)
 
 @pytest.mark.parametrize("radio", ["disc", "channel"])
 def test_python_beacon_trace_is_the_cpp_beacons_byte_for_byte(loops_cfg: Path, tmp_path: Path, radio: str) -> None:
-    write(tmp_path, "beacon.py", BEACON)
+    write_file(tmp_path, "beacon.py", BEACON)
     cpp = services_file(tmp_path, '<service type="Beacon" interval="0.2" bytes="300"/>', name="cpp.xml")
     py = services_file(tmp_path, '<service type="python:beacon.py:PyBeacon" interval="0.2" bytes="300"/>')
     extra = ["--radio", str(Path(__file__).resolve().parents[2] / "bench" / "radio.toml")] if radio == "channel" else []
@@ -117,7 +106,7 @@ def test_python_beacon_trace_is_the_cpp_beacons_byte_for_byte(loops_cfg: Path, t
 
 
 def test_python_and_cpp_services_see_the_same_calls(loops_cfg: Path, services_module: Path, tmp_path: Path) -> None:
-    write(tmp_path, "calls.py", CALL_LOG)
+    write_file(tmp_path, "calls.py", CALL_LOG)
     story = write_story(tmp_path, SIGNAL_STORY)
     services = services_file(
         tmp_path,
@@ -183,7 +172,7 @@ class Declared(Service):
 
 
 def test_an_exception_is_exit_2_naming_service_station_time_file_and_line(loops_cfg: Path, tmp_path: Path) -> None:
-    source = write(tmp_path, "mistakes.py", MISTAKES)
+    source = write_file(tmp_path, "mistakes.py", MISTAKES)
     services = services_file(tmp_path, '<service type="CaService"/>', '<service type="python:mistakes.py:Boom"/>')
     trace = tmp_path / "trace.jsonl"
     result = run(loops_cfg, end=40.0, seed=7, extra=["--services", str(services), "--messages", str(trace)])
@@ -216,7 +205,7 @@ def test_an_exception_is_exit_2_naming_service_station_time_file_and_line(loops_
 def test_mistakes_are_refused_before_the_run(
     loops_cfg: Path, tmp_path: Path, entry: str, needle: str, command: str
 ) -> None:
-    write(tmp_path, "mistakes.py", MISTAKES)
+    write_file(tmp_path, "mistakes.py", MISTAKES)
     services = services_file(tmp_path, f"<service {entry}/>")
     extra = ["check"] if command == "check" else []
     result = run(loops_cfg, end=10.0, extra=[*extra, "--services", str(services)], timeout=120)
@@ -252,7 +241,7 @@ def createStories(board):
 
 
 def test_commands_compose_with_stories_and_are_restored(loops_cfg: Path, tmp_path: Path) -> None:
-    write(tmp_path, "commands.py", COMMANDS)
+    write_file(tmp_path, "commands.py", COMMANDS)
     story = write_story(tmp_path, CAP_STORY)
     services = services_file(tmp_path, '<service type="python:commands.py:Slow"/>')
     stats = tmp_path / "stats.parquet"
@@ -269,8 +258,8 @@ def test_commands_compose_with_stories_and_are_restored(loops_cfg: Path, tmp_pat
 
 
 def test_threads_do_not_change_the_trace_or_the_statistics(loops_cfg: Path, tmp_path: Path) -> None:
-    write(tmp_path, "beacon.py", BEACON)
-    write(tmp_path, "calls.py", CALL_LOG)
+    write_file(tmp_path, "beacon.py", BEACON)
+    write_file(tmp_path, "calls.py", CALL_LOG)
     services = services_file(
         tmp_path,
         '<service type="CaService"/>',
@@ -340,7 +329,7 @@ class Listener(Service):
 
 
 def test_a_roadside_units_python_service_sends_payloads_vehicles_read(loops_cfg: Path, tmp_path: Path) -> None:
-    write(tmp_path, "roadside.py", ROADSIDE)
+    write_file(tmp_path, "roadside.py", ROADSIDE)
     services = services_file(
         tmp_path,
         '<service type="python:roadside.py:Listener"/>',
