@@ -495,3 +495,31 @@ def test_delay_skip_and_an_acts_stop_trigger(road: Path, tmp_path: Path) -> None
     ], "the act's stop trigger (t > 4.5) ends both at 4.6"
     (act_end,) = [e for e in events if e["type"] == "deactivate" and e["story"] == "S/A"]
     assert act_end["t"] == 4.6
+
+
+def test_the_cut_in_example_runs_among_traffic_with_cams(tmp_path: Path) -> None:
+    example = Path(__file__).resolve().parents[2] / "examples" / "openscenario-cut-in"
+    xosc = tmp_path / "cut-in.xosc"  # the importer writes .sbsim/ beside it: not into the repository
+    shutil.copy(example / "cut-in.xosc", xosc)
+    messages = tmp_path / "messages.jsonl"
+    events, fcd = run_xosc(
+        xosc,
+        "--services",
+        str(example / "services.xml"),
+        "--messages",
+        str(messages),
+        sumocfg=example / "cut-in.sumocfg",
+    )
+    # Both appear at 0.2 s; Adversary is 15 m ahead (freespace) after 100 + 5 + 15 m of relative travel at 10 m/s.
+    (cut,) = starts(events, "S/A/CutIn")
+    assert cut == pytest.approx(12.2, abs=0.11)
+    (cut_end,) = ends(events, "S/A/CutIn")
+    assert cut_end == pytest.approx(cut + 2.0, abs=0.11), "a 2 s lane change"
+    assert fcd.lane["Adversary"][cut_end] == fcd.lane["Ego"][cut_end]
+    assert fcd.pos["Adversary"][cut_end][1] == pytest.approx(fcd.pos["Ego"][cut_end][1], abs=0.01)
+    assert starts(events, "S/A/Slow") == [cut_end]
+    # The motorway's own traffic runs around them, and the CAMs reach the entities.
+    assert len(fcd.speed) > 10
+    lines = [json.loads(line) for line in messages.read_text().splitlines()]
+    heard = {m["sender"] for m in lines if m["event"] == "rx" and m["type"] == "CAM" and m["station"] == "Ego"}
+    assert "Adversary" in heard and len(heard) > 5
