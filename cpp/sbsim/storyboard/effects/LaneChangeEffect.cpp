@@ -31,12 +31,8 @@ void LaneChangeEffect::apply(EffectScope& scope) {
     if (relative_ == Relative::Self) lane += scope.vehicle().laneIndex();
     if (relative_ == Relative::Vehicle) lane += scope.controllerOf(*relativeTo_)->laneIndex();
     traffic::LateralTransition transition(dynamics_, traffic::LateralPlace{lane, offset_});
-    active_[scope.token()] = transition.reachedFlag();
+    reached_.track(scope.token(), transition.reachedFlag());
     scope.stack().pushLateralTransition(scope.token(), std::move(transition));
-}
-
-bool LaneChangeEffect::complete() const {
-    return std::all_of(active_.begin(), active_.end(), [](const auto& a) { return *a.second; });
 }
 
 std::string LaneChangeEffect::describe() const {

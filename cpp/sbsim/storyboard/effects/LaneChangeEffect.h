@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sbsim/storyboard/Effect.h"
+#include "sbsim/storyboard/effects/ReachedFlags.h"
 #include "sbsim/traffic/EffectStack.h"
 #include "sbsim/traffic/Transition.h"
 
@@ -29,10 +30,10 @@ public:
     void apply(EffectScope& scope) override;
     void remove(EffectScope& scope) override {
         scope.stack().remove(scope.token());
-        active_.erase(scope.token());
+        reached_.forget(scope.token());
     }
     /// Once the manoeuvre reached its target on every vehicle it acts on.
-    bool complete() const override;
+    bool complete() const override { return reached_.allReached(); }
     void check(CheckContext& ctx) const override;
 
     int lane() const { return lane_; }
@@ -47,7 +48,7 @@ private:
     Relative relative_;
     std::optional<std::string> relativeTo_;
     double offset_;
-    std::map<traffic::EffectStack::Token, std::shared_ptr<const bool>> active_;  ///< reached, per activation
+    ReachedFlags reached_;
 };
 
 }  // namespace sbsim::storyboard

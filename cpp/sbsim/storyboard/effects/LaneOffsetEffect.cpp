@@ -30,12 +30,8 @@ void LaneOffsetEffect::apply(EffectScope& scope) {
         maxLateralAcceleration_
             ? traffic::LateralTransition::withMaxAcceleration(dynamics_.shape, *maxLateralAcceleration_, target)
             : traffic::LateralTransition(dynamics_, target);
-    active_[scope.token()] = transition.reachedFlag();
+    reached_.track(scope.token(), transition.reachedFlag());
     scope.stack().pushLateralTransition(scope.token(), std::move(transition));
-}
-
-bool LaneOffsetEffect::complete() const {
-    return std::all_of(active_.begin(), active_.end(), [](const auto& a) { return *a.second; });
 }
 
 std::string LaneOffsetEffect::describe() const {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sbsim/storyboard/Effect.h"
+#include "sbsim/storyboard/effects/ReachedFlags.h"
 #include "sbsim/traffic/EffectStack.h"
 #include "sbsim/traffic/Transition.h"
 
@@ -25,10 +26,10 @@ public:
     void apply(EffectScope& scope) override;
     void remove(EffectScope& scope) override {
         scope.stack().remove(scope.token());
-        active_.erase(scope.token());
+        reached_.forget(scope.token());
     }
     /// Once the manoeuvre reached its target on every vehicle it acts on.
-    bool complete() const override;
+    bool complete() const override { return reached_.allReached(); }
 
     double offset() const { return offset_; }
     const traffic::Transition& dynamics() const { return dynamics_; }
@@ -37,8 +38,8 @@ public:
 private:
     double offset_;
     traffic::Transition dynamics_;
-    std::optional<double> maxLateralAcceleration_;                               ///< m/s²
-    std::map<traffic::EffectStack::Token, std::shared_ptr<const bool>> active_;  ///< reached, per activation
+    std::optional<double> maxLateralAcceleration_;  ///< m/s²
+    ReachedFlags reached_;
 };
 
 }  // namespace sbsim::storyboard
