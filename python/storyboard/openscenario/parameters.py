@@ -88,3 +88,15 @@ class Scope:
         except ExpressionError as e:
             raise ScenarioError(f"{what}: {e}") from None
         return text
+
+
+def as_stored(declared: Any, value: Any, what: str) -> Any:
+    """`value` as ScenarioParameters keeps a parameter declared as `declared`: text, or a number."""
+    if isinstance(declared, str):
+        return str(value)
+    if isinstance(declared, bool):
+        return 1.0 if str(value).lower() in ("true", "1") else 0.0
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise ScenarioError(f"{what}: '{value}' is not a number") from None

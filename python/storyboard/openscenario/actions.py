@@ -1,0 +1,205 @@
+"""Event actions as recipes for sbsim effects: speed, lane change, lane offset, add/delete entity,
+parameter set/modify, and sbsim's SignalEffect as a CustomCommandAction."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .errors import ScenarioError, where
+from .model import Action, Build
+from .parameters import Scope, as_stored
+from .reader import Reader
+
+SHAPES = ("step", "linear", "cubic", "sinusoidal")
+DIMENSIONS = ("time", "distance", "rate")
+
+
+class ActionReader(Reader):
+    # -- actions -----------------------------------------------------------------------------
+    def read_action(self, action: Any, scope: Scope, actors: list[str]) -> Action | None:
+        name = self.text(action, "name", scope)
+        if len(action) != 1:
+            self.problems.add(action, "an Action holds one action")
+            return None
+        kind = action[0]
+        if kind.tag == "PrivateAction" and len(kind) == 1:
+            inner = kind[0]
+            speed = inner.find("SpeedAction") if inner.tag == "LongitudinalAction" else None
+            if speed is not None:
+                return self.read_speed(speed, scope, name)
+            if inner.tag == "LateralAction" and len(inner) == 1 and inner[0].tag == "LaneChangeAction":
+                return self.read_lane_change(inner[0], scope, name, actors)
+            if inner.tag == "LateralAction" and len(inner) == 1 and inner[0].tag == "LaneOffsetAction":
+                return self.read_lane_offset(inner[0], scope, name)
+            self.problems.add(inner)
+            return None
+        if kind.tag == "UserDefinedAction" and len(kind) == 1 and kind[0].tag == "CustomCommandAction":
+            command = kind[0]
+            if self.text(command, "type", scope) != "SignalEffect":
+                self.problems.add(command, "CustomCommandAction type other than 'SignalEffect'")
+                return None
+            cause = str(scope.resolve((command.text or "").strip(), where(self.path, command)))
+            if not cause:
+                raise ScenarioError(f"{where(self.path, command)}: a SignalEffect needs its cause as the text")
+            return Action(name, False, f"SignalEffect('{cause}')", lambda b: b.sb.SignalEffect(cause))
+        if kind.tag == "GlobalAction" and len(kind) == 1 and kind[0].tag == "ParameterAction":
+            return self.read_parameter_action(kind[0], scope, name)
+        if kind.tag == "GlobalAction" and kind.find("EntityAction/DeleteEntityAction") is not None:
+            entity_action = kind.find("EntityAction")
+            sumo_id = self.sumo_id(self.text(entity_action, "entityRef", scope), entity_action)
+            return Action(name, True, f"RemoveVehicleEffect({sumo_id})", lambda b: b.sb.RemoveVehicleEffect(sumo_id))
+        if kind.tag == "GlobalAction" and kind.find("EntityAction/AddEntityAction") is not None:
+            entity_action = kind.find("EntityAction")
+            entity = self.text(entity_action, "entityRef", scope)
+            sumo_id = self.sumo_id(entity, entity_action)
+            self.added.add(entity)
+            add = entity_action.find("AddEntityAction")
+            lane, pos = self.position(add.find("Position"), scope, where(self.path, add))
+            if lane is None:
+                return None
+            route = self.network.follow(lane)
+            vtype = self.entities[entity].vtype
+            index = lane.index
+            return Action(
+                name,
+                True,
+                f"SpawnEffect({sumo_id})",
+                lambda b: b.sb.SpawnEffect(sumo_id, route=route, type=vtype, lane=index, position=pos),
+            )
+        self.problems.add(kind)
+        return None
+
+    def read_parameter_action(self, action: Any, scope: Scope, name: str) -> Action | None:
+        ref = self.text(action, "parameterRef", scope)
+        here = where(self.path, action)
+        if ref not in self.globals:
+            raise ScenarioError(f"{here}: '{ref}' is no global parameter (only those may change in a run)")
+        op: str
+        operand: Any
+        if len(action) == 1 and action[0].tag == "SetAction":
+            op, operand = "set", as_stored(self.globals[ref], self.value(action[0], "value", scope), here)
+        elif len(action) == 1 and action[0].tag == "ModifyAction" and len(action[0]) == 1 and len(action[0][0]) == 1:
+            rule = action[0][0][0]
+            if rule.tag not in ("AddValue", "MultiplyByValue") or isinstance(self.globals[ref], str):
+                self.problems.add(rule, "AddValue or MultiplyByValue of a number")
+                return None
+            op, operand = ("add" if rule.tag == "AddValue" else "multiply"), self.number(rule, "value", scope)
+        else:
+            self.problems.add(action)
+            return None
+        return Action(
+            name, True, f"ParameterEffect({ref} {op})", lambda b: b.sb.ParameterEffect(b.params, ref, op, operand)
+        )
+
+    def transition(self, dynamics: Any, scope: Scope) -> tuple[str, str, float] | None:
+        """TransitionDynamics as (shape, dimension, value); None (a problem) for what sbsim lacks."""
+        shape = self.text(dynamics, "dynamicsShape", scope)
+        dimension = self.text(dynamics, "dynamicsDimension", scope, "time")
+        if shape not in SHAPES or dimension not in DIMENSIONS:
+            self.problems.add(dynamics, f"dynamicsShape '{shape}' with dynamicsDimension '{dimension}'")
+            return None
+        if dynamics.get("followingMode") not in (None, "position"):
+            self.problems.add(dynamics, "followingMode 'follow' (the shape is followed exactly)")
+            return None
+        return shape, dimension, self.number(dynamics, "value", scope, "0")
+
+    def read_speed(self, speed: Any, scope: Scope, name: str) -> Action | None:
+        dynamics = speed.find("SpeedActionDynamics")
+        target = speed.find("SpeedActionTarget")
+        if dynamics is None or target is None or len(target) != 1:
+            self.problems.add(speed, "a SpeedAction needs SpeedActionDynamics and a SpeedActionTarget")
+            return None
+        law = self.transition(dynamics, scope)
+        if law is None:
+            return None
+        shape, dimension, by = law
+        inner = target[0]
+        if inner.tag == "AbsoluteTargetSpeed":
+            value = self.number(inner, "value", scope)
+            if shape == "step":
+                # At once, within SUMO's safety checks (its acceleration bounds), kept after.
+                return Action(name, False, f"SetSpeedEffect({value:g} m/s)", lambda b: b.sb.SetSpeedEffect(value))
+
+            def absolute(b: Build) -> Any:
+                return b.sb.SpeedChangeEffect(value, shape, dimension, by, keep=True)
+
+            return Action(name, False, f"SpeedChangeEffect({value:g} m/s, {shape} {dimension} {by:g})", absolute)
+        if inner.tag == "RelativeTargetSpeed":
+            other = self.sumo_id(self.text(inner, "entityRef", scope), inner)
+            value = self.number(inner, "value", scope)
+            kind = self.text(inner, "speedTargetValueType", scope)
+            continuous = self.text(inner, "continuous", scope, "false") == "true"
+            if kind not in ("delta", "factor"):
+                raise ScenarioError(
+                    f"{where(self.path, inner)}: speedTargetValueType '{kind}' is none of delta, factor"
+                )
+
+            def relative(b: Build) -> Any:
+                return b.sb.SpeedChangeEffect(
+                    value, shape, dimension, by, relative_to=other, value_type=kind, continuous=continuous, keep=True
+                )
+
+            return Action(name, False, f"SpeedChangeEffect({other}'s speed {kind} {value:g})", relative)
+        self.problems.add(inner)
+        return None
+
+    def read_lane_change(self, change: Any, scope: Scope, name: str, actors: list[str]) -> Action | None:
+        dynamics = change.find("LaneChangeActionDynamics")
+        target = change.find("LaneChangeTarget")
+        if dynamics is None or target is None or len(target) != 1:
+            self.problems.add(change, "a LaneChangeAction needs LaneChangeActionDynamics and a LaneChangeTarget")
+            return None
+        law = self.transition(dynamics, scope)
+        if law is None:
+            return None
+        shape, dimension, by = law
+        if dimension == "rate":
+            self.problems.add(dynamics, "a lane change by rate (time and distance are)")
+            return None
+        offset = self.number(change, "targetLaneOffset", scope, "0")
+        inner = target[0]
+        if inner.tag == "RelativeTargetLane":
+            other = self.sumo_id(self.text(inner, "entityRef", scope), inner)
+            lanes = int(self.number(inner, "value", scope))  # positive: to the left, as SUMO's index goes
+            own = actors == [other]
+
+            def relative(b: Build) -> Any:
+                if own:
+                    return b.sb.LaneChangeEffect(lanes, shape, dimension, by, relative=True, offset=offset)
+                return b.sb.LaneChangeEffect(lanes, shape, dimension, by, relative_to=other, offset=offset)
+
+            return Action(name, False, f"LaneChangeEffect({other}'s lane {lanes:+d})", relative)
+        if inner.tag == "AbsoluteTargetLane":
+            index = self.network.lane_index(int(self.number(inner, "value", scope)), where(self.path, inner))
+
+            def absolute(b: Build) -> Any:
+                return b.sb.LaneChangeEffect(index, shape, dimension, by, offset=offset)
+
+            return Action(name, False, f"LaneChangeEffect(lane {index})", absolute)
+        self.problems.add(inner)
+        return None
+
+    def read_lane_offset(self, action: Any, scope: Scope, name: str) -> Action | None:
+        dynamics = action.find("LaneOffsetActionDynamics")
+        target = action.find("LaneOffsetTarget/AbsoluteTargetLaneOffset")
+        if dynamics is None or target is None:
+            self.problems.add(action, "a LaneOffsetAction needs its dynamics and an AbsoluteTargetLaneOffset")
+            return None
+        if self.text(action, "continuous", scope, "false") == "true":
+            self.problems.add(action, "continuous=true (the offset is reached once, then SUMO aligns the vehicle)")
+            return None
+        shape = self.text(dynamics, "dynamicsShape", scope)
+        if shape not in SHAPES:
+            self.problems.add(dynamics, f"dynamicsShape '{shape}'")
+            return None
+        acc = float(self.number(dynamics, "maxLateralAcc", scope)) if dynamics.get("maxLateralAcc") else None
+        if acc is None and shape != "step":
+            self.problems.add(dynamics, f"a {shape} lane offset without maxLateralAcc (its time comes from it)")
+            return None
+        offset = self.number(target, "value", scope)
+        return Action(
+            name,
+            False,
+            f"LaneOffsetEffect({offset:+g} m)",
+            lambda b: b.sb.LaneOffsetEffect(offset, shape, max_lateral_acc=acc),
+        )

@@ -1,0 +1,92 @@
+"""ScenarioObjects as SUMO vehicle types: vehicles, catalog references with parameter assignments."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from .errors import ScenarioError, where
+from .model import Entity
+from .parameters import Scope
+from .reader import Reader, parse_file
+
+# vehicleCategory -> SUMO vehicle class.
+VEHICLE_CLASSES = {
+    "car": "passenger",
+    "van": "delivery",
+    "truck": "truck",
+    "trailer": "trailer",
+    "semitrailer": "trailer",
+    "bus": "bus",
+    "motorbike": "motorcycle",
+    "bicycle": "bicycle",
+}
+
+
+class EntityReader(Reader):
+    def read_object(self, obj: Any, scope: Scope) -> None:
+        name = self.text(obj, "name", scope)
+        self.only(obj, {"Vehicle", "CatalogReference", "ObjectController"})
+        controller = obj.find("ObjectController")
+        if controller is not None and len(controller):
+            self.problems.add(controller, "controllers (SUMO's driver model drives)")
+        vehicle = obj.find("Vehicle")
+        local = scope
+        reference = obj.find("CatalogReference")
+        if reference is not None:
+            vehicle, local = self.from_catalog(reference, scope)
+        if vehicle is None:
+            if reference is None and not any(c.tag not in ("Vehicle", "ObjectController") for c in obj):
+                self.problems.add(obj, "only Vehicle entities")
+            return
+        local = local.declare(vehicle.find("ParameterDeclarations"), self.path)
+        self.only(vehicle, {"ParameterDeclarations", "Performance", "BoundingBox", "Axles", "Properties"})
+        category = self.text(vehicle, "vehicleCategory", local)
+        if category not in VEHICLE_CLASSES:
+            self.problems.add(vehicle, f"vehicleCategory '{category}'")
+            return
+        dims = vehicle.find("BoundingBox/Dimensions")
+        perf = vehicle.find("Performance")
+        length = self.number(dims, "length", local) if dims is not None else 4.5
+        width = self.number(dims, "width", local) if dims is not None else 1.8
+        height = self.number(dims, "height", local) if dims is not None else 1.5
+        sumo_id = self.binds.get(name, name)
+        self.entities[name] = Entity(
+            name,
+            sumo_id,
+            VEHICLE_CLASSES[category],
+            length,
+            width,
+            height,
+            self.number(perf, "maxSpeed", local) if perf is not None else 70.0,
+            self.number(perf, "maxAcceleration", local) if perf is not None else 2.6,
+            self.number(perf, "maxDeceleration", local) if perf is not None else 4.5,
+            name in self.binds,
+        )
+
+    def from_catalog(self, reference: Any, scope: Scope) -> tuple[Any, Scope]:
+        catalog = self.text(reference, "catalogName", scope)
+        entry = self.text(reference, "entryName", scope)
+        directory = self.catalog_dirs.get("VehicleCatalog")
+        if directory is None:
+            raise ScenarioError(f"{where(self.path, reference)}: no VehicleCatalog directory in CatalogLocations")
+        assignments: dict[str, Any] = {}
+        holder = reference.find("ParameterAssignments")
+        if holder is not None:
+            for a in holder.iterfind("ParameterAssignment"):
+                assignments[self.text(a, "parameterRef", scope)] = self.value(a, "value", scope)
+        for file in sorted(directory.glob("*.xosc")):
+            doc = parse_file(file)
+            for cat in doc.getroot().iterfind("Catalog"):
+                if cat.get("name") != catalog:
+                    continue
+                for vehicle in cat.iterfind("Vehicle"):
+                    if vehicle.get("name") == entry:
+                        declared = vehicle.find("ParameterDeclarations")
+                        local = Scope(parent=scope).declare(declared, file, assignments, set())
+                        # The entry's own declarations are applied here; declare() again does nothing new.
+                        if declared is not None:
+                            vehicle.remove(declared)
+                        return vehicle, local
+        raise ScenarioError(
+            f"{where(self.path, reference)}: catalog '{catalog}' has no vehicle '{entry}' in {directory}"
+        )
