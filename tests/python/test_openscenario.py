@@ -245,6 +245,24 @@ def test_opendrive_highway_and_a_catalog_vehicle(tmp_path: Path) -> None:
     assert '<vType id="xosc_Lead" vClass="truck" length="12" width="2.5"' in types.read_text()
 
 
+def test_a_catalog_maneuver_with_its_parameters_assigned(road: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "catalog-maneuver.xosc")
+    events, fcd = run_xosc(xosc, sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Brake") == [4.1], "At = 4 assigned (the catalog's default is 5)"
+    assert fcd.speed["Ego"][4.1] == pytest.approx(20.0)
+    assert fcd.speed["Ego"][4.8] == pytest.approx(15.0), "TargetSpeed = 15 assigned (the default is 10)"
+    # A reference to no entry names the catalog and the reference's line; an element the importer cannot
+    # run inside a catalog names the catalog's file.
+    xosc.write_text(xosc.read_text().replace('entryName="SlowDown"', 'entryName="SpeedUp"'))
+    result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
+    assert_bad_input(result, f"{xosc}:", "<CatalogReference>", "catalog 'ManeuverCatalog' has no maneuver 'SpeedUp'")
+    xosc.write_text(xosc.read_text().replace('entryName="SpeedUp"', 'entryName="SlowDown"'))
+    catalog = xosc.parent / "catalogs" / "ManeuverCatalog.xosc"
+    catalog.write_text(catalog.read_text().replace("SimulationTimeCondition", "TimeOfDayCondition"))
+    result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
+    assert "ManeuverCatalog.xosc:" in assert_bad_input(result, "unsupported")
+
+
 def test_bind_makes_a_sumo_vehicle_the_entity(road: Path, tmp_path: Path) -> None:
     events, fcd = run_xosc(scenario(tmp_path, "step-speed.xosc"), "--bind", "Ego=veh0", sumocfg=road / "bound.sumocfg")
     assert "Ego" not in fcd.speed

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from .errors import ScenarioError, where
 from .model import Entity
 from .parameters import Scope
-from .reader import Reader, parse_file
+from .reader import Reader
 
 # vehicleCategory -> SUMO vehicle class.
 VEHICLE_CLASSES = {
@@ -33,7 +32,7 @@ class EntityReader(Reader):
         local = scope
         reference = obj.find("CatalogReference")
         if reference is not None:
-            vehicle, local = self.from_catalog(reference, scope)
+            vehicle, local = self.catalog_entry(reference, scope, "Vehicle")
         if vehicle is None:
             if reference is None and not any(c.tag not in ("Vehicle", "ObjectController") for c in obj):
                 self.problems.add(obj, "only Vehicle entities")
@@ -61,32 +60,4 @@ class EntityReader(Reader):
             self.number(perf, "maxAcceleration", local) if perf is not None else 2.6,
             self.number(perf, "maxDeceleration", local) if perf is not None else 4.5,
             name in self.binds,
-        )
-
-    def from_catalog(self, reference: Any, scope: Scope) -> tuple[Any, Scope]:
-        catalog = self.text(reference, "catalogName", scope)
-        entry = self.text(reference, "entryName", scope)
-        directory = self.catalog_dirs.get("VehicleCatalog")
-        if directory is None:
-            raise ScenarioError(f"{where(self.path, reference)}: no VehicleCatalog directory in CatalogLocations")
-        assignments: dict[str, Any] = {}
-        holder = reference.find("ParameterAssignments")
-        if holder is not None:
-            for a in holder.iterfind("ParameterAssignment"):
-                assignments[self.text(a, "parameterRef", scope)] = self.value(a, "value", scope)
-        for file in sorted(directory.glob("*.xosc")):
-            doc = parse_file(file)
-            for cat in doc.getroot().iterfind("Catalog"):
-                if cat.get("name") != catalog:
-                    continue
-                for vehicle in cat.iterfind("Vehicle"):
-                    if vehicle.get("name") == entry:
-                        declared = vehicle.find("ParameterDeclarations")
-                        local = Scope(parent=scope).declare(declared, file, assignments, set())
-                        # The entry's own declarations are applied here; declare() again does nothing new.
-                        if declared is not None:
-                            vehicle.remove(declared)
-                        return vehicle, local
-        raise ScenarioError(
-            f"{where(self.path, reference)}: catalog '{catalog}' has no vehicle '{entry}' in {directory}"
         )

@@ -24,7 +24,8 @@ def read_xml(path: Path, what: str) -> Any:
 def where(path: Path, element: Any) -> str:
     """`file:line: <Tag>` for an lxml element (its line, as lxml records it)."""
     tag = element.tag if isinstance(element.tag, str) else "comment"
-    return f"{path}:{element.sourceline}: <{tag}>"
+    source = element.getroottree().docinfo.URL  # a catalog's element names the catalog's file
+    return f"{source or path}:{element.sourceline}: <{tag}>"
 
 
 @dataclass
@@ -36,7 +37,13 @@ class Problems:
 
     def add(self, element: Any, why: str = "") -> None:
         tag = element.tag if isinstance(element.tag, str) else "comment"
-        text = f"<{tag}> (line {element.sourceline})"
+        source = element.getroottree().docinfo.URL
+        line = (
+            f"line {element.sourceline}"
+            if not source or Path(source) == self.path
+            else f"{source}:{element.sourceline}"
+        )
+        text = f"<{tag}> ({line})"
         if why:
             text += f": {why}"
         self.unsupported.append(text)

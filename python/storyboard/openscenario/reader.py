@@ -41,7 +41,7 @@ class Reader:
         self.problems = Problems(path)
         self.used: set[str] = set()
         self.entities: dict[str, Entity] = {}
-        self.catalog_dirs: dict[str, Path] = {}
+        self.catalog_dirs: dict[str, Path] = {}  # "VehicleCatalog" -> its directory
         self.added: set[str] = set()  # entities an AddEntityAction puts on the road
         self.placed: dict[str, tuple[Lane, float]] = {}  # Init positions so far (for relative ones)
         self.xodr = xodr
@@ -125,3 +125,33 @@ class Reader:
             return target, s
         self.problems.add(p)
         return None, 0.0
+
+    def catalog_entry(self, reference: Any, scope: Scope, kind: str) -> tuple[Any, Scope]:
+        """The `kind` (Vehicle, Maneuver) a CatalogReference names, and the scope of its parameters: the
+        entry's declarations with the reference's assignments."""
+        catalog = self.text(reference, "catalogName", scope)
+        entry = self.text(reference, "entryName", scope)
+        directory = self.catalog_dirs.get(f"{kind}Catalog")
+        if directory is None:
+            raise ScenarioError(f"{where(self.path, reference)}: no {kind}Catalog directory in CatalogLocations")
+        assignments: dict[str, Any] = {}
+        holder = reference.find("ParameterAssignments")
+        if holder is not None:
+            for a in holder.iterfind("ParameterAssignment"):
+                assignments[self.text(a, "parameterRef", scope)] = self.value(a, "value", scope)
+        for file in sorted(directory.glob("*.xosc")):
+            doc = parse_file(file)
+            for cat in doc.getroot().iterfind("Catalog"):
+                if cat.get("name") != catalog:
+                    continue
+                for element in cat.iterfind(kind):
+                    if element.get("name") == entry:
+                        declared = element.find("ParameterDeclarations")
+                        local = Scope(parent=scope).declare(declared, file, assignments, set())
+                        # The entry's own declarations are applied here; declare() again does nothing new.
+                        if declared is not None:
+                            element.remove(declared)
+                        return element, local
+        raise ScenarioError(
+            f"{where(self.path, reference)}: catalog '{catalog}' has no {kind.lower()} '{entry}' in {directory}"
+        )

@@ -22,6 +22,9 @@ from .network import Network
 from .parameters import Scope
 from .reader import parse_file
 
+# The catalogs entities and maneuver groups can name (CatalogLocations).
+CATALOGS = ("VehicleCatalog", "ManeuverCatalog")
+
 __all__ = ["Build", "Element", "Scenario", "Trigger", "logic_file", "read"]
 
 
@@ -68,7 +71,7 @@ class Importer(ConditionReader, ActionReader, InitReader, EntityReader):
         if catalogs is not None:
             for location in catalogs:
                 directory = location.find("Directory")
-                if location.tag != "VehicleCatalog" or directory is None:
+                if location.tag not in CATALOGS or directory is None:
                     self.problems.add(location)
                     continue
                 self.catalog_dirs[location.tag] = (self.path.parent / self.text(directory, "path", scope)).resolve()
@@ -157,8 +160,11 @@ class Importer(ConditionReader, ActionReader, InitReader, EntityReader):
         for child in group:
             if child.tag == "Maneuver":
                 element.children.append(self.read_maneuver(child, scope, act_path, element.actors))
-            elif child.tag not in ("Actors",):
-                self.problems.add(child, "catalog maneuvers" if child.tag == "CatalogReference" else "")
+            elif child.tag == "CatalogReference":
+                maneuver, local = self.catalog_entry(child, scope, "Maneuver")
+                element.children.append(self.read_maneuver(maneuver, local, act_path, element.actors))
+            elif child.tag != "Actors":
+                self.problems.add(child)
         return element
 
     def read_maneuver(self, maneuver: Any, scope: Scope, act_path: str, actors: list[str]) -> Element:
