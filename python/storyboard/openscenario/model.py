@@ -85,6 +85,7 @@ class Element:
     max_executions: int = 1
     priority: str = "parallel"
     actors: list[str] = field(default_factory=list)
+    select_triggering: bool = False  # a maneuver group's actors include its act's triggering entities
     actions: list[Action] = field(default_factory=list)
 
 

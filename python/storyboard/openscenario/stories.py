@@ -86,6 +86,7 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
             stop=_trigger(e.stop, build),
             max_executions=e.max_executions,
             priority=e.priority,
+            select_triggering_entities=e.kind == "maneuver_group" and e.select_triggering,
         )
 
     board.registerStory(sb.WorldStory(sb.ElementCondition(machine, 0), [], name="Storyboard"))
@@ -122,7 +123,9 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
             continue
         name = e.path if e.path not in names else f"{e.path}#{indices[id(e)]}"
         names.add(name)
-        if not e.actors and any(not a.world for a in e.actions):
+        # Actors: the group's, and (selectTriggeringEntities) those that started its act, known at run time.
+        acting = bool(e.actors) or e.select_triggering
+        if not acting and any(not a.world for a in e.actions):
             raise ScenarioError(f"{xosc}: event '{e.path}' acts on vehicles, but its ManeuverGroup has no actors")
         world = [a.recipe(build) for a in e.actions if a.world]
         private = [a.recipe(build) for a in e.actions if not a.world]
@@ -134,7 +137,7 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
             )
         if private or not world:
             condition = sb.ElementCondition(machine, indices[id(e)], e.actors or None)
-            if e.actors:
+            if acting:
                 board.registerStory(sb.Story(condition, private, name=name))
             else:
                 board.registerStory(sb.WorldStory(condition, [], name=name))
