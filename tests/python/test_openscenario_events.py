@@ -1,6 +1,7 @@
 """sbsim --scenario: event actions and storyboard features of issue 31 beyond the first import —
 TeleportAction and RoutingAction (AssignRoute, AcquirePosition) in events, a ManeuverGroup's
-maximumExecutionCount and selectTriggeringEntities, a lane change by rate, relative and continuous
+maximumExecutionCount and selectTriggeringEntities, a lane change by rate, a SpeedAction's
+followingMode, relative and continuous
 lane offsets, an actor that leaves mid-transition, and the conditions SUMO cannot say (Offroad,
 EndOfRoad). Scenarios in tests/openscenario/, each with its expected outcome worked out in its
 comment; the straight road and the helpers are test_openscenario.py's, the grid is this file's."""
@@ -129,6 +130,16 @@ def test_a_lane_change_by_rate_takes_distance_over_rate(road: Path, tmp_path: Pa
     assert abs(y[moving[0]] - y0) == pytest.approx(0.16, abs=0.01)
     (end,) = ends(events, "S/A/Change")
     assert end == pytest.approx(2.1 + 2.1, abs=0.1 + 1e-9)
+
+
+def test_following_mode_follow_keeps_the_entitys_own_dynamics(road: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "following-mode.xosc"), sumocfg=road / "line.sumocfg")
+    assert starts(events, "S/A/Exact") == [2.1] == starts(events, "S/A/Follow")
+    exact, follow = fcd.speed["Exact"], fcd.speed["Follow"]
+    assert exact[3.1] == pytest.approx(30.0), "position: the shape exactly, 20 m/s^2"
+    assert follow[3.1] == pytest.approx(14.0), "follow: at most its maxAcceleration, 4 m/s^2"
+    assert min(t for t, v in follow.items() if v >= 30 - 1e-6) == pytest.approx(7.1), "30 m/s after 20 / 4 = 5 s"
+    assert ends(events, "S/A/Exact") == [3.1] == ends(events, "S/A/Follow"), "the shape's 1 s has run"
 
 
 def test_relative_and_continuous_lane_offsets(road: Path, tmp_path: Path) -> None:
