@@ -114,6 +114,11 @@ def test_select_triggering_entities_acts_on_the_entity_that_fired(road: Path, tm
     (t,) = [t for t, _ in slowed]
     assert fcd.speed["B"][round(t + 2.0, 1)] == pytest.approx(5.0), "15 m/s down at 8 m/s^2 within 1.9 s"
     assert fcd.speed["A"][round(t + 2.0, 1)] == pytest.approx(10.0)
+    xosc = scenario(tmp_path / "check", "select-triggering.xosc")
+    check = run(road / "line.sumocfg", extra=["check", "--scenario", str(xosc)], timeout=120)
+    assert check.returncode == 0, check.stderr
+    assert "ElementCondition(Event 'Slow', actors: the entities that triggered its act)" in check.stdout
+    assert "TriggeringEntitiesCondition(any of A, B)" in check.stdout
 
 
 def test_a_lane_change_by_rate_takes_distance_over_rate(road: Path, tmp_path: Path) -> None:

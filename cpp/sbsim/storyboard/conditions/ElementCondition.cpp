@@ -39,7 +39,9 @@ std::string ElementCondition::describe() const {
     std::string s = fmt::format("ElementCondition({} '{}'", ScenarioMachine::kindName(machine_->kind(element_)),
                                 machine_->name(element_));
     if (!actors_.empty()) s += fmt::format(", actors {}", describeIds(actors_));
-    if (selects_) s += ", and the entities that triggered its act";
+    if (selects_)
+        s += actors_.empty() ? ", actors: the entities that triggered its act"
+                             : " and the entities that triggered its act";
     const std::string triggers = machine_->describeTriggers(element_);
     if (!triggers.empty()) s += "; " + triggers;
     return s + ")";
