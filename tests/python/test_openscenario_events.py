@@ -99,6 +99,13 @@ def test_routing_actions_make_the_entities_drive_there(grid: Path, tmp_path: Pat
     assert edges_driven(fcd, "Hop")[:2] == ["A0B0", "B1C1"]
 
 
+def test_an_init_acquire_position_routes_the_entity_there(grid: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "acquire-init.xosc"), sumocfg=grid / "grid.sumocfg")
+    assert edges_driven(fcd, "Far")[:3] == ["A0B0", "B0B1", "B1C1"]
+    (here,) = signals(events, "here")
+    assert here >= 49 and fcd.lane["Far"][here] == "B1C1_0"
+
+
 def test_a_maneuver_group_with_maximum_execution_count_two_runs_twice(road: Path, tmp_path: Path) -> None:
     events, _ = run_xosc(scenario(tmp_path, "group-twice.xosc"), sumocfg=road / "line.sumocfg")
     assert signals(events, "tick") == [1.1, 1.3]

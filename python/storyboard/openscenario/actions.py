@@ -242,11 +242,6 @@ class ActionReader(Reader):
         )
 
     # -- teleport and routing -----------------------------------------------------------------
-    def onward(self, lane: Any) -> list[str]:
-        """The edges from `lane`'s on, keeping straight on (as an entity without a route drives)."""
-        route = self.network.follow(lane)
-        return route if route[0] == lane.edge else [lane.edge, *route]
-
     def read_teleport(self, action: Any, scope: Scope, name: str) -> Action | None:
         position = action.find("Position")
         here = where(self.path, action)
@@ -309,13 +304,7 @@ class ActionReader(Reader):
         else:
             self.problems.add(routing)
             return None
-        edges: list[str] = []
-        for lane in lanes:
-            if not edges or edges[-1] != lane.edge:
-                edges.append(lane.edge)
-        after = self.onward(lanes[-1])
-        target = after[-1]
-        via = [*edges, *after[1:-1]] if target != edges[-1] else edges[:-1]
+        target, via, edges = self.through(lanes)
         kind = "AcquirePosition" if routing.tag == "AcquirePositionAction" else "AssignRoute"
         return Action(
             name,

@@ -53,6 +53,7 @@ class Start:
     pos: float = 0.0
     speed: float | None = None
     route: list[str] | None = None
+    acquire: tuple[str, list[str]] | None = None  # AcquirePositionAction: (target edge, via edges)
 
 
 @dataclass

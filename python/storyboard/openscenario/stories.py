@@ -2,7 +2,8 @@
 
 One ScenarioMachine holds the storyboard's states. Stories, named for the OpenSCENARIO element:
 - "Storyboard" (a WorldStory): active while the storyboard runs (its stop trigger's conditions);
-- "Init": spawns the positioned entities at the first step; "Init/<entity>" sets an Init speed;
+- "Init": spawns the positioned entities at the first step; "Init/<entity>" sets an Init speed and
+  routes it to the position of an Init AcquirePositionAction;
 - "<Story>/<Act>" (a WorldStory): active while the act runs;
 - "<Story>/<Act>/<Event>": active for the event's actors while the event runs (the step it starts,
   and until its transitions reached their targets), with its actions as effects (a world one, an
@@ -110,11 +111,12 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
     if spawns:
         board.registerStory(sb.WorldStory(sb.TimeCondition(0), spawns, name="Init"))
     for s in scenario.starts:
-        if s.speed is not None:
+        effects = [] if s.speed is None else [sb.SetSpeedEffect(s.speed)]
+        if s.acquire is not None:  # routed once, when it is on the road
+            effects.append(sb.RouteEffect(s.acquire[0], via=s.acquire[1], keep=True))
+        if effects:
             entity = scenario.entities[s.entity]
-            board.registerStory(
-                sb.Story(sb.CarSetCondition(entity.sumo_id), [sb.SetSpeedEffect(s.speed)], name=f"Init/{s.entity}")
-            )
+            board.registerStory(sb.Story(sb.CarSetCondition(entity.sumo_id), effects, name=f"Init/{s.entity}"))
     names: set[str] = set()
     for e, _ in elements:
         if e.kind == "act":
