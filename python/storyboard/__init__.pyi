@@ -245,8 +245,16 @@ class EntityCondition(Condition):
 
     def __init__(self, vehicle: str, condition: Condition) -> None: ...
 
+class TriggeringEntitiesCondition(Condition):
+    """OpenSCENARIO's ByEntityCondition: each EntityCondition (one per triggering entity) evaluated every
+    time; true when any (``rule="all"``: every one) holds, its others the entities it holds for (the
+    triggering entities a ManeuverGroup with selectTriggeringEntities takes as actors)."""
+
+    def __init__(self, entities: Sequence[EntityCondition], rule: Literal["any", "all"] = "any") -> None: ...
+
 class ElementCondition(Condition):
-    """True while an element of a ScenarioMachine runs (for its actors, or the world)."""
+    """True while an element of a ScenarioMachine runs (for its actors, or the world); when its
+    ManeuverGroup selects triggering entities, also for the entities that started its act."""
 
     def __init__(self, machine: ScenarioMachine, element: int, actors: str | Iterable[str] | None = None) -> None: ...
 
@@ -309,9 +317,39 @@ class LaneEffect(Effect):
     def __init__(self, lane_index: int) -> None: ...
 
 class RouteEffect(Effect):
+    """Routes the vehicle while the story is active (to ``target_edge``, or to its destination through
+    ``via``); after, to the destination it had. ``keep=True`` (OpenSCENARIO's RoutingAction): routed once at
+    activation through ``via`` to ``target_edge`` (default: its destination; both may be given) and kept;
+    complete at once, a route SUMO cannot find ends the run (exit code 2)."""
+
     target_edge: str | None
     via: list[str]
-    def __init__(self, target_edge: str | None = None, *, via: Iterable[str] | None = None) -> None: ...
+    keep: bool
+    def __init__(
+        self, target_edge: str | None = None, *, via: Iterable[str] | None = None, keep: bool = False
+    ) -> None: ...
+
+class TeleportEffect(Effect):
+    """OpenSCENARIO's TeleportAction in an event: puts the vehicle at ``position`` m on lane ``lane`` of
+    ``edge`` at once (SUMO's moveTo; it keeps its speed), or, with ``relative_to``, ``lane`` lanes to the
+    left of that vehicle's lane and ``position`` m ahead of it as it is at activation. A target off the
+    vehicle's route is routed to first (changeTarget); after that move it drives on along ``onward``
+    (edges from the target edge) if given, else to its destination. Complete at once."""
+
+    edge: str | None
+    lane: int
+    position: float
+    relative_to: str | None
+    onward: list[str]
+    def __init__(
+        self,
+        edge: str | None = None,
+        lane: int = 0,
+        position: float = 0.0,
+        *,
+        relative_to: str | None = None,
+        onward: Iterable[str] | None = None,
+    ) -> None: ...
 
 #: OpenSCENARIO's TransitionDynamics: dynamicsShape and dynamicsDimension.
 _TransitionShape = Literal["step", "linear", "cubic", "sinusoidal"]
@@ -390,12 +428,16 @@ class LaneOffsetEffect(Effect):
     the left) off the centre of the lane it is on at activation with ``shape`` over ``duration`` s or, as
     LaneOffsetActionDynamics gives it, within ``max_lateral_acc`` m/s² (cubic: T = sqrt(6 d / a), sinusoidal:
     T = pi sqrt(d / (2 a)), linear as cubic), each step through SUMO's sublane model, and holds it while the
-    story is active; then SUMO aligns the vehicle again. Domain "lane"."""
+    story is active; then SUMO aligns the vehicle again. ``relative_to`` (RelativeTargetLaneOffset): ``offset``
+    m off that vehicle's own offset at activation. ``continuous=True``: held until the story ends, so as a
+    ScenarioMachine action it is never complete (its event runs until stopped). Domain "lane"."""
 
     offset: float
     shape: str
     duration: float | None
     max_lateral_acc: float | None
+    relative_to: str | None
+    continuous: bool
     def __init__(
         self,
         offset: float,
@@ -403,6 +445,8 @@ class LaneOffsetEffect(Effect):
         *,
         duration: float | None = None,
         max_lateral_acc: float | None = None,
+        relative_to: str | None = None,
+        continuous: bool = False,
     ) -> None: ...
 
 EffectFactory = Effect
@@ -558,13 +602,18 @@ class ScenarioMachine:
         stop: Sequence[Sequence[_TriggerCondition]] | None = None,
         max_executions: int = 1,
         priority: str = "parallel",
-    ) -> int: ...
+        select_triggering_entities: bool = False,
+    ) -> int:
+        """``max_executions`` of an event or a maneuver group (which then runs again, its events as new);
+        ``select_triggering_entities`` (a maneuver group): the entities that started its act are actors."""
     def add_action(self, event: int, action: Effect) -> None:
         """The event ends only once this effect (applied by its story) is complete: a transition
         when it reached its target, a one-shot effect at once."""
     def __len__(self) -> int: ...
     def state(self, element: int) -> str: ...
     def executions(self, element: int) -> int: ...
+    def triggering_entities(self, element: int) -> list[str]:
+        """The entities that fired the element's start trigger when it last started."""
     @property
     def ended(self) -> bool: ...
 

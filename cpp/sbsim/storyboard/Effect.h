@@ -41,7 +41,7 @@ public:
 
 /// An effect of a story (Artery's EffectFactory role): apply() when the story activates for a
 /// vehicle, remove() when it deactivates because its condition turned false. When a vehicle
-/// leaves the simulation nothing is called: there is nothing left to command.
+/// leaves the simulation only vehicleLeft() is called: there is nothing left to command.
 class SBSIM_API Effect {
 public:
     virtual ~Effect() = default;
@@ -60,6 +60,10 @@ public:
     /// every vehicle it is applied to, so that its event may end. A one-shot effect is complete
     /// once applied; a transition when it reached its target; a continuous one never.
     virtual bool complete() const { return true; }
+    /// The vehicle of activation `token` (`scope` as at its apply) left the simulation while the
+    /// story was active: no command may go to it. An effect that keeps state per activation
+    /// forgets it here (a transition that never reaches its target must not hold its event open).
+    virtual void vehicleLeft(traffic::EffectStack::Token /*token*/) {}
 };
 
 using EffectPtr = std::shared_ptr<Effect>;

@@ -136,6 +136,8 @@ std::size_t ScenarioMachine::add(ElementSpec spec) {
         throw std::invalid_argument(who + ": only acts and the storyboard have a stop trigger");
     }
     if (spec.maxExecutions == 0) throw std::invalid_argument(who + ": maximumExecutionCount must be at least 1");
+    if (spec.selectTriggeringEntities && spec.kind != Kind::maneuverGroup)
+        throw std::invalid_argument(who + ": only a maneuver group selects triggering entities");
     checkTrigger(spec.start, who);
     checkTrigger(spec.stop, who);
 
@@ -195,19 +197,57 @@ void ScenarioMachine::stopSubtree(std::size_t element) {
     for (const std::size_t c : e.children) stopSubtree(c);
 }
 
+std::optional<std::size_t> ScenarioMachine::groupOf(std::size_t element) const {
+    std::optional<std::size_t> e = element;
+    while (e && elements_[*e].spec.kind != Kind::maneuverGroup) {
+        const Kind k = elements_[*e].spec.kind;
+        if (k != Kind::event && k != Kind::maneuver) return std::nullopt;
+        e = elements_[*e].spec.parent;
+    }
+    return e;
+}
+
+bool ScenarioMachine::selectsTriggeringEntities(std::size_t element) const {
+    at(element);
+    const auto group = groupOf(element);
+    return group && elements_[*group].spec.selectTriggeringEntities;
+}
+
+const std::vector<std::string>& ScenarioMachine::selectedActors(std::size_t element) const {
+    static const std::vector<std::string> none;
+    if (!selectsTriggeringEntities(element)) return none;
+    return elements_[*elements_[*groupOf(element)].spec.parent].triggeredBy;  // its Act's
+}
+
+void ScenarioMachine::resetSubtree(std::size_t element) {
+    Element& e = elements_[element];
+    e.state = State::standby;
+    e.transition = Transition::none;
+    e.transitionTime.reset();
+    e.started.reset();
+    e.executions = 0;
+    e.triggeredBy.clear();
+    for (auto& group : e.startMemory) std::fill(group.begin(), group.end(), ConditionMemory{});
+    for (auto& group : e.stopMemory) std::fill(group.begin(), group.end(), ConditionMemory{});
+    for (const std::size_t c : e.children) resetSubtree(c);
+}
+
 bool ScenarioMachine::fires(const Trigger& trigger, std::vector<std::vector<ConditionMemory>>& memory,
-                            const EvaluationContext& ctx, VehicleIndex ego) {
+                            const EvaluationContext& ctx, VehicleIndex ego, std::vector<std::string>* entities) {
     const SimTime now = ctx.now();
     bool any = false;
+    std::vector<std::string> groupEntities;
     // Every condition is evaluated every step its element waits, so edges and delays see each
     // step (no short-circuit across conditions).
     for (std::size_t g = 0; g < trigger.size(); ++g) {
         bool all = true;
+        groupEntities.clear();
         for (std::size_t c = 0; c < trigger[g].size(); ++c) {
             const TriggerCondition& tc = trigger[g][c];
             ConditionMemory& m = memory[g][c];
             if (m.evaluated != previous_) m.last = false;  // not evaluated at the step before
-            const bool value = tc.condition->test(ctx, ego).isTrue();
+            const ConditionResult result = tc.condition->test(ctx, ego);
+            const bool value = result.isTrue();
             bool edged = false;
             switch (tc.edge) {
                 case Edge::none:
@@ -225,18 +265,27 @@ bool ScenarioMachine::fires(const Trigger& trigger, std::vector<std::vector<Cond
             }
             m.last = value;
             m.evaluated = now;
+            // The entities a true result holds for (its others), as the snapshot names them.
+            std::vector<std::string> held;
+            if (edged && value) {
+                for (const VehicleIndex o : result.others()) held.push_back(ctx.snapshot().ids()[o]);
+            }
             bool seen = edged;
             if (tc.delay > 0) {
-                if (edged) m.pending.push_back(now + SimTime::fromSeconds(tc.delay));
+                if (edged) m.pending.emplace_back(now + SimTime::fromSeconds(tc.delay), std::move(held));
                 seen = false;
-                while (!m.pending.empty() && m.pending.front() <= now) {
+                held.clear();
+                while (!m.pending.empty() && m.pending.front().first <= now) {
+                    held = std::move(m.pending.front().second);
                     m.pending.pop_front();
                     seen = true;
                 }
             }
             all = all && seen;
+            if (seen) groupEntities.insert(groupEntities.end(), held.begin(), held.end());
         }
         any = any || all;
+        if (all && entities != nullptr) entities->insert(entities->end(), groupEntities.begin(), groupEntities.end());
     }
     return any;
 }
@@ -264,8 +313,9 @@ void ScenarioMachine::step(const EvaluationContext& given) {
         const bool triggered =
             e.spec.kind == Kind::act || e.spec.kind == Kind::event || e.spec.kind == Kind::storyboard;
         bool fired = !triggered || e.spec.start.empty();
+        std::vector<std::string> firing;  // the entities that fired it
         if (triggered && !e.spec.start.empty() && e.state != State::complete && parentRunning(e)) {
-            fired = fires(e.spec.start, e.startMemory, *ctx, ego);
+            fired = fires(e.spec.start, e.startMemory, *ctx, ego, &firing);
         }
         if (e.state == State::running) {
             if (!parentRunning(e)) {
@@ -308,6 +358,9 @@ void ScenarioMachine::step(const EvaluationContext& given) {
         move(e, State::running, Transition::start);
         e.started = now;
         ++e.executions;
+        std::sort(firing.begin(), firing.end());
+        firing.erase(std::unique(firing.begin(), firing.end()), firing.end());
+        e.triggeredBy = std::move(firing);
     }
     // Completions bottom up: children come after their parent, so a reverse pass sees a
     // maneuver's events before the maneuver.
@@ -316,7 +369,14 @@ void ScenarioMachine::step(const EvaluationContext& given) {
         if (e.state != State::running || e.spec.kind == Kind::event || e.spec.kind == Kind::storyboard) continue;
         const bool allComplete = std::all_of(e.children.begin(), e.children.end(),
                                              [this](std::size_t c) { return elements_[c].state == State::complete; });
-        if (allComplete) move(e, State::complete, Transition::end);
+        if (!allComplete) continue;
+        if (e.spec.kind == Kind::maneuverGroup && e.executions < e.spec.maxExecutions) {
+            // Again from the next step: its maneuvers and events as new.
+            move(e, State::standby, Transition::end);
+            for (const std::size_t c : e.children) resetSubtree(c);
+        } else {
+            move(e, State::complete, Transition::end);
+        }
     }
     previous_ = now;
 }

@@ -48,6 +48,13 @@ namespace sbsim::storyboard {
 ///   Priority: `overwrite` stops (stopTransition → complete) every running event of its
 ///   maneuver; `skip` does not start while another of its maneuver runs (skipTransition);
 ///   `parallel` starts regardless.
+/// - A ManeuverGroup that ended (all its children complete) goes back to standby while executions
+///   are left (maximumExecutionCount), its maneuvers and events back to standby with no executions
+///   and fresh trigger memories, and starts again at the next step; else it completes.
+/// - Triggering entities: a trigger condition's true result names the entities it holds for (its
+///   others: TriggeringEntitiesCondition). An element's start records the entities of the
+///   conditions of the groups that fired. A ManeuverGroup with selectTriggeringEntities takes the
+///   entities that fired its Act's start trigger as actors (actors()), besides its own.
 /// - An element whose parent is no longer running is stopped. A Maneuver, ManeuverGroup, Act or
 ///   Story completes (endTransition) when all its children are complete. An Act's or the
 ///   Storyboard's stop trigger stops it; the Storyboard's stop ends the run (onEnd()).
@@ -76,6 +83,7 @@ public:
         Trigger stop;  ///< acts and the storyboard
         std::uint64_t maxExecutions = 1;
         Priority priority = Priority::parallel;
+        bool selectTriggeringEntities = false;  ///< maneuver groups
     };
 
     ScenarioMachine() = default;
@@ -106,8 +114,15 @@ public:
     State state(std::size_t element) const { return at(element).state; }
     /// Whether `element` made transition `t` at time `now` (this step, once advanced).
     bool transitionedAt(std::size_t element, Transition t, kernel::SimTime now) const;
-    /// How often the element started so far.
+    /// How often the element started so far (since its ManeuverGroup last started).
     std::uint64_t executions(std::size_t element) const { return at(element).executions; }
+    /// The entities that fired the element's start trigger when it last started (ascending ids).
+    const std::vector<std::string>& triggeringEntities(std::size_t element) const { return at(element).triggeredBy; }
+    /// Whether the ManeuverGroup above `element` (or `element` itself) selects triggering entities.
+    bool selectsTriggeringEntities(std::size_t element) const;
+    /// The actors chosen at run time for `element` (an event, maneuver or group): the entities that
+    /// started its Act, when its ManeuverGroup selects triggering entities; else none.
+    const std::vector<std::string>& selectedActors(std::size_t element) const;
     /// Whether the storyboard was stopped (the run ends).
     bool ended() const { return ended_; }
     /// Called once when the storyboard's stop trigger fires.
@@ -126,7 +141,8 @@ private:
     struct ConditionMemory {
         bool last = false;
         std::optional<kernel::SimTime> evaluated;  ///< the step it was last evaluated
-        std::deque<kernel::SimTime> pending;       ///< edge-processed true results awaiting their delay
+        /// Edge-processed true results awaiting their delay, with the entities they held for.
+        std::deque<std::pair<kernel::SimTime, std::vector<std::string>>> pending;
     };
     struct Element {
         ElementSpec spec;
@@ -139,12 +155,16 @@ private:
         std::vector<std::vector<ConditionMemory>> startMemory;
         std::vector<std::vector<ConditionMemory>> stopMemory;
         std::vector<std::shared_ptr<const Effect>> actions;  ///< an event's
+        std::vector<std::string> triggeredBy;                ///< at its last start
     };
 
     const Element& at(std::size_t element) const;
     void step(const EvaluationContext& ctx);
+    /// Whether `trigger` fires; the entities of the fired groups' conditions go to `entities`.
     bool fires(const Trigger& trigger, std::vector<std::vector<ConditionMemory>>& memory, const EvaluationContext& ctx,
-               VehicleIndex ego);
+               VehicleIndex ego, std::vector<std::string>* entities = nullptr);
+    std::optional<std::size_t> groupOf(std::size_t element) const;
+    void resetSubtree(std::size_t element);
     bool parentRunning(const Element& e) const;
     void move(Element& e, State to, Transition t);
     void stopSubtree(std::size_t element);

@@ -108,6 +108,7 @@ void VehiclePass::vehicleLeft(const std::string& id, kernel::SimTime now) {
     if (it == vehicles_.end()) return;
     for (std::size_t s = 0; s < stories_.size(); ++s) {
         if (!it->second.active[s]) continue;
+        for (const AppliedEffect& applied : it->second.applied[s]) applied.effect->vehicleLeft(applied.token);
         stories_[s].story->counters().deactivated();
         if (log_ != nullptr) log_->deactivate(now_, stories_[s].story->name(), id, "vehicle_left");
     }

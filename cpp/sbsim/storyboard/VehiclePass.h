@@ -49,7 +49,8 @@ public:
     void observe(ActivationObserver& observer) { observer_ = &observer; }
 
     /// The vehicle left: each story active on it is deactivated with reason "vehicle_left" (no
-    /// commands to SUMO: there is nothing left to command) and its state dropped.
+    /// commands to SUMO: there is nothing left to command; its effects hear vehicleLeft()) and its
+    /// state dropped.
     void vehicleLeft(const std::string& id, kernel::SimTime now);
     /// Evaluates every story for every vehicle of ctx's snapshot, on `parallel` where pure.
     void run(const EvaluationContext& ctx, kernel::ParallelFor& parallel);

@@ -106,5 +106,20 @@ std::string VehicleController::parameter(const std::string& key) const { return 
 void VehicleController::setParameter(const std::string& key, const std::string& value) {
     Vehicle::setParameter(id_, key, value);
 }
+double VehicleController::lanePosition() const { return Vehicle::getLanePosition(id_); }
+void VehicleController::moveTo(const std::string& laneId, double position) {
+    try {
+        Vehicle::moveTo(id_, laneId, position, libsumo::MOVE_TELEPORT);
+    } catch (const libsumo::TraCIException& e) {
+        throw CommandRefused(e.what());
+    }
+}
+void VehicleController::setRoute(const std::vector<std::string>& edges) {
+    try {
+        Vehicle::setRoute(id_, edges);
+    } catch (const libsumo::TraCIException& e) {
+        throw CommandRefused(e.what());
+    }
+}
 
 }  // namespace sbsim::traffic

@@ -114,6 +114,16 @@ public:
     virtual std::string parameter(const std::string& key) const;
     virtual void setParameter(const std::string& key, const std::string& value);
 
+    // Added after the others, for the same reason: OpenSCENARIO's TeleportAction and RoutingAction.
+    /// Its front bumper's distance (m) from the start of its lane.
+    virtual double lanePosition() const;
+    /// Puts the vehicle at `position` m on lane `laneId` now (SUMO's moveTo, a teleport); the lane's
+    /// edge must be on its route, ahead or behind. Throws CommandRefused when SUMO refuses.
+    virtual void moveTo(const std::string& laneId, double position);
+    /// Replaces its route by `edges`, the first of which is the edge it is on; throws
+    /// CommandRefused for a route SUMO refuses (not connected, not starting there).
+    virtual void setRoute(const std::vector<std::string>& edges);
+
 private:
     std::string id_;
     MaxSpeedListener* listener_;

@@ -1,5 +1,6 @@
-"""Event actions as recipes for sbsim effects: speed, lane change, lane offset, add/delete entity,
-parameter set/modify, and sbsim's SignalEffect as a CustomCommandAction."""
+"""Event actions as recipes for sbsim effects: speed, lane change, lane offset, teleport, routing
+(assign route, acquire position), add/delete entity, parameter set/modify, and sbsim's SignalEffect
+as a CustomCommandAction."""
 
 from __future__ import annotations
 
@@ -31,6 +32,10 @@ class ActionReader(Reader):
                 return self.read_lane_change(inner[0], scope, name, actors)
             if inner.tag == "LateralAction" and len(inner) == 1 and inner[0].tag == "LaneOffsetAction":
                 return self.read_lane_offset(inner[0], scope, name)
+            if inner.tag == "TeleportAction":
+                return self.read_teleport(inner, scope, name)
+            if inner.tag == "RoutingAction" and len(inner) == 1:
+                return self.read_routing(inner[0], scope, name)
             self.problems.add(inner)
             return None
         if kind.tag == "UserDefinedAction" and len(kind) == 1 and kind[0].tag == "CustomCommandAction":
@@ -91,17 +96,27 @@ class ActionReader(Reader):
             name, True, f"ParameterEffect({ref} {op})", lambda b: b.sb.ParameterEffect(b.params, ref, op, operand)
         )
 
-    def transition(self, dynamics: Any, scope: Scope) -> tuple[str, str, float] | None:
-        """TransitionDynamics as (shape, dimension, value); None (a problem) for what sbsim lacks."""
+    def transition(self, dynamics: Any, scope: Scope, follow: bool = False) -> tuple[str, str, float] | None:
+        """TransitionDynamics as (shape, dimension, value); None (a problem) for what sbsim lacks.
+        `follow`: the caller can honour followingMode 'follow' (else only 'position' is read)."""
         shape = self.text(dynamics, "dynamicsShape", scope)
         dimension = self.text(dynamics, "dynamicsDimension", scope, "time")
         if shape not in SHAPES or dimension not in DIMENSIONS:
             self.problems.add(dynamics, f"dynamicsShape '{shape}' with dynamicsDimension '{dimension}'")
             return None
-        if dynamics.get("followingMode") not in (None, "position"):
-            self.problems.add(dynamics, "followingMode 'follow' (the shape is followed exactly)")
+        mode = self.text(dynamics, "followingMode", scope, "position")
+        if mode not in ("position", "follow") or (mode == "follow" and not follow):
+            self.problems.add(
+                dynamics,
+                f"followingMode '{mode}' here (a lateral manoeuvre follows its shape exactly: SUMO's sublane "
+                "model has no own lateral dynamics to follow it with)",
+            )
             return None
         return shape, dimension, self.number(dynamics, "value", scope, "0")
+
+    def follows(self, dynamics: Any, scope: Scope) -> bool:
+        """followingMode 'follow': the entity follows the shape within its own dynamics."""
+        return self.text(dynamics, "followingMode", scope, "position") == "follow"
 
     def read_speed(self, speed: Any, scope: Scope, name: str) -> Action | None:
         dynamics = speed.find("SpeedActionDynamics")
@@ -109,10 +124,13 @@ class ActionReader(Reader):
         if dynamics is None or target is None or len(target) != 1:
             self.problems.add(speed, "a SpeedAction needs SpeedActionDynamics and a SpeedActionTarget")
             return None
-        law = self.transition(dynamics, scope)
+        law = self.transition(dynamics, scope, follow=True)
         if law is None:
             return None
         shape, dimension, by = law
+        # followingMode 'follow': SUMO keeps the safe gap, which bounds the change to the entity's
+        # acceleration and deceleration (its own dynamics); 'position': the shape exactly.
+        gap = self.follows(dynamics, scope)
         inner = target[0]
         if inner.tag == "AbsoluteTargetSpeed":
             value = self.number(inner, "value", scope)
@@ -121,7 +139,7 @@ class ActionReader(Reader):
                 return Action(name, False, f"SetSpeedEffect({value:g} m/s)", lambda b: b.sb.SetSpeedEffect(value))
 
             def absolute(b: Build) -> Any:
-                return b.sb.SpeedChangeEffect(value, shape, dimension, by, keep=True)
+                return b.sb.SpeedChangeEffect(value, shape, dimension, by, safe_gap=gap, keep=True)
 
             return Action(name, False, f"SpeedChangeEffect({value:g} m/s, {shape} {dimension} {by:g})", absolute)
         if inner.tag == "RelativeTargetSpeed":
@@ -136,7 +154,15 @@ class ActionReader(Reader):
 
             def relative(b: Build) -> Any:
                 return b.sb.SpeedChangeEffect(
-                    value, shape, dimension, by, relative_to=other, value_type=kind, continuous=continuous, keep=True
+                    value,
+                    shape,
+                    dimension,
+                    by,
+                    relative_to=other,
+                    value_type=kind,
+                    continuous=continuous,
+                    safe_gap=gap,
+                    keep=True,
                 )
 
             return Action(name, False, f"SpeedChangeEffect({other}'s speed {kind} {value:g})", relative)
@@ -152,10 +178,7 @@ class ActionReader(Reader):
         law = self.transition(dynamics, scope)
         if law is None:
             return None
-        shape, dimension, by = law
-        if dimension == "rate":
-            self.problems.add(dynamics, "a lane change by rate (time and distance are)")
-            return None
+        shape, dimension, by = law  # by rate: m/s across the road, so it takes |lateral distance| / rate s
         offset = self.number(change, "targetLaneOffset", scope, "0")
         inner = target[0]
         if inner.tag == "RelativeTargetLane":
@@ -181,12 +204,23 @@ class ActionReader(Reader):
 
     def read_lane_offset(self, action: Any, scope: Scope, name: str) -> Action | None:
         dynamics = action.find("LaneOffsetActionDynamics")
-        target = action.find("LaneOffsetTarget/AbsoluteTargetLaneOffset")
+        target = action.find("LaneOffsetTarget")
+        target = target[0] if target is not None and len(target) == 1 else None
         if dynamics is None or target is None:
-            self.problems.add(action, "a LaneOffsetAction needs its dynamics and an AbsoluteTargetLaneOffset")
+            self.problems.add(action, "a LaneOffsetAction needs its dynamics and a LaneOffsetTarget")
             return None
-        if self.text(action, "continuous", scope, "false") == "true":
-            self.problems.add(action, "continuous=true (the offset is reached once, then SUMO aligns the vehicle)")
+        # continuous: the offset is held while the event runs (it ends only when stopped).
+        continuous = self.text(action, "continuous", scope, "false") == "true"
+        other: str | None = None
+        if target.tag == "RelativeTargetLaneOffset":
+            other = self.sumo_id(self.text(target, "entityRef", scope), target)
+            if continuous:
+                self.problems.add(
+                    action, "continuous=true with a RelativeTargetLaneOffset (the other's offset is read at the start)"
+                )
+                return None
+        elif target.tag != "AbsoluteTargetLaneOffset":
+            self.problems.add(target)
             return None
         shape = self.text(dynamics, "dynamicsShape", scope)
         if shape not in SHAPES:
@@ -197,9 +231,84 @@ class ActionReader(Reader):
             self.problems.add(dynamics, f"a {shape} lane offset without maxLateralAcc (its time comes from it)")
             return None
         offset = self.number(target, "value", scope)
+        what = f"{other}'s offset {offset:+g} m" if other else f"{offset:+g} m"
         return Action(
             name,
             False,
-            f"LaneOffsetEffect({offset:+g} m)",
-            lambda b: b.sb.LaneOffsetEffect(offset, shape, max_lateral_acc=acc),
+            f"LaneOffsetEffect({what}{', held' if continuous else ''})",
+            lambda b: b.sb.LaneOffsetEffect(
+                offset, shape, max_lateral_acc=acc, relative_to=other, continuous=continuous
+            ),
+        )
+
+    # -- teleport and routing -----------------------------------------------------------------
+    def read_teleport(self, action: Any, scope: Scope, name: str) -> Action | None:
+        position = action.find("Position")
+        here = where(self.path, action)
+        if position is not None and len(position) == 1 and position[0].tag == "RelativeLanePosition":
+            # Relative to where the other entity is when the event starts (not to its Init place).
+            p = position[0]
+            other = self.sumo_id(self.text(p, "entityRef", scope), p)
+            if abs(self.number(p, "offset", scope, "0")) > 1e-9 or p.get("dsLane") is not None:
+                self.problems.add(p, "a lateral offset or dsLane")
+                return None
+            d_lane = int(self.number(p, "dLane", scope))
+            ds = self.number(p, "ds", scope, "0")
+            return Action(
+                name,
+                False,
+                f"TeleportEffect({other}'s lane {d_lane:+d}, {ds:+g} m)",
+                lambda b: b.sb.TeleportEffect(lane=d_lane, position=ds, relative_to=other),
+            )
+        lane, pos = self.position(position, scope, here)
+        if lane is None:
+            return None
+        onward = self.onward(lane)
+        return Action(
+            name,
+            False,
+            f"TeleportEffect({lane.id} at {pos:g} m)",
+            lambda b: b.sb.TeleportEffect(lane.edge, lane.index, pos, onward=onward),
+        )
+
+    def event_position(self, position: Any, scope: Scope, what: str) -> tuple[Any, float]:
+        """A fixed position of an event's action (a relative one would need its entity's place then)."""
+        if position is not None and len(position) == 1 and position[0].tag.startswith("Relative"):
+            self.problems.add(position[0], "a relative position here (its entity's place is known only at run time)")
+            return None, 0.0
+        return self.position(position, scope, what)
+
+    def read_routing(self, routing: Any, scope: Scope, name: str) -> Action | None:
+        """AssignRouteAction: through its waypoints' edges in order; AcquirePositionAction: through
+        the position's edge. After that the entity keeps straight on as one without a route does (a
+        SUMO trip ends at its route's end, so the route goes on past the last waypoint)."""
+        here = where(self.path, routing)
+        lanes: list[Any] = []
+        if routing.tag == "AssignRouteAction":
+            route = routing.find("Route")
+            if route is None:
+                self.problems.add(routing, "a CatalogReference route")
+                return None
+            for waypoint in route.iterfind("Waypoint"):
+                lane, _ = self.event_position(waypoint.find("Position"), scope, where(self.path, waypoint))
+                if lane is None:
+                    return None
+                lanes.append(lane)
+            if len(lanes) < 1:
+                raise ScenarioError(f"{here}: a Route needs at least one Waypoint")
+        elif routing.tag == "AcquirePositionAction":
+            lane, _ = self.event_position(routing.find("Position"), scope, here)
+            if lane is None:
+                return None
+            lanes.append(lane)
+        else:
+            self.problems.add(routing)
+            return None
+        target, via, edges = self.through(lanes)
+        kind = "AcquirePosition" if routing.tag == "AcquirePositionAction" else "AssignRoute"
+        return Action(
+            name,
+            False,
+            f"RouteEffect({kind}: via {', '.join(edges)}, on to {target})",
+            lambda b: b.sb.RouteEffect(target, via=via, keep=True),
         )

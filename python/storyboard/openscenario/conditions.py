@@ -119,10 +119,10 @@ class ConditionReader(Reader):
             return None
 
         def build(b: Build) -> Any:
+            # Each entity's own condition; the result names the entities it holds for (the
+            # triggering entities, which a ManeuverGroup with selectTriggeringEntities takes as actors).
             parts = [b.sb.EntityCondition(i, make(b)) for i in ids]
-            if len(parts) == 1:
-                return parts[0]
-            return b.sb.AllCondition(*parts) if rule_all else b.sb.AnyCondition(*parts)
+            return b.sb.TriggeringEntitiesCondition(parts, "all" if rule_all else "any")
 
         return build
 
@@ -154,6 +154,14 @@ class ConditionReader(Reader):
             return self.distance(c, scope)
         if tag == "RelativeDistanceCondition":
             return self.relative_distance(c, scope)
+        if tag == "OffroadCondition":
+            self.problems.add(c, "a SUMO vehicle is never off the road (it drives on lanes only), so it never holds")
+            return None
+        if tag == "EndOfRoadCondition":
+            self.problems.add(
+                c, "a SUMO vehicle at the end of its road arrives and leaves the simulation; it never stands there"
+            )
+            return None
         if tag == "TraveledDistanceCondition":
             traveled = self.number(c, "value", scope)
             return lambda b: b.sb.TraveledDistanceCondition(traveled)

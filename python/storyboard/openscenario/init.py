@@ -1,4 +1,5 @@
-"""The storyboard's Init: where each entity starts, its speed and its route."""
+"""The storyboard's Init: where each entity starts, its speed and its route (assigned, or to a
+position it acquires)."""
 
 from __future__ import annotations
 
@@ -58,5 +59,11 @@ class InitReader(Reader):
                 if lane is not None and (not edges or edges[-1] != lane.edge):
                     edges.append(lane.edge)
             start.route = edges
+        elif action.tag == "RoutingAction" and action.find("AcquirePositionAction") is not None:
+            # Routed there once it is on the road (from where it is), then straight on.
+            lane, _ = self.position(action.find("AcquirePositionAction/Position"), scope, what)
+            if lane is not None:
+                target, via, _ = self.through([lane])
+                start.acquire = (target, via)
         else:
             self.problems.add(action)

@@ -53,6 +53,7 @@ class Start:
     pos: float = 0.0
     speed: float | None = None
     route: list[str] | None = None
+    acquire: tuple[str, list[str]] | None = None  # AcquirePositionAction: (target edge, via edges)
 
 
 @dataclass
@@ -85,6 +86,7 @@ class Element:
     max_executions: int = 1
     priority: str = "parallel"
     actors: list[str] = field(default_factory=list)
+    select_triggering: bool = False  # a maneuver group's actors include its act's triggering entities
     actions: list[Action] = field(default_factory=list)
 
 

@@ -78,6 +78,23 @@ class Reader:
             raise ScenarioError(f"{where(self.path, element)}: no entity '{entity}' is declared")
         return self.entities[entity].sumo_id
 
+    def onward(self, lane: Lane) -> list[str]:
+        """The edges from `lane`'s on, keeping straight on (as an entity without a route drives)."""
+        route = self.network.follow(lane)
+        return route if route[0] == lane.edge else [lane.edge, *route]
+
+    def through(self, lanes: list[Lane]) -> tuple[str, list[str], list[str]]:
+        """A route through `lanes`' edges in order that keeps straight on after the last (a SUMO trip
+        ends at its route's end): (target edge, via edges, the lanes' edges)."""
+        edges: list[str] = []
+        for lane in lanes:
+            if not edges or edges[-1] != lane.edge:
+                edges.append(lane.edge)
+        after = self.onward(lanes[-1])
+        target = after[-1]
+        via = [*edges, *after[1:-1]] if target != edges[-1] else edges[:-1]
+        return target, via, edges
+
     def position(self, position: Any, scope: Scope, what: str) -> tuple[Lane | None, float]:
         if position is None or len(position) != 1:
             raise ScenarioError(f"{what}: a <Position> with one position in it is needed")

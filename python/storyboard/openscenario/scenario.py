@@ -145,13 +145,13 @@ class Importer(ConditionReader, ActionReader, InitReader, EntityReader):
 
     def read_group(self, group: Any, scope: Scope, act_path: str) -> Element:
         name = self.text(group, "name", scope)
-        element = Element("maneuver_group", name, f"{act_path}/{name}")
-        if int(self.number(group, "maximumExecutionCount", scope, "1")) != 1:
-            self.problems.add(group, "a ManeuverGroup maximumExecutionCount other than 1")
+        count = int(self.number(group, "maximumExecutionCount", scope, "1"))
+        if count < 1:
+            raise ScenarioError(f"{where(self.path, group)}: maximumExecutionCount {count} (at least 1)")
+        element = Element("maneuver_group", name, f"{act_path}/{name}", max_executions=count)
         actors = group.find("Actors")
         if actors is not None:
-            if self.text(actors, "selectTriggeringEntities", scope, "false") == "true":
-                self.problems.add(actors, "selectTriggeringEntities=true")
+            element.select_triggering = self.text(actors, "selectTriggeringEntities", scope, "false") == "true"
             for ref in actors:
                 if ref.tag != "EntityRef":
                     self.problems.add(ref)
@@ -165,6 +165,9 @@ class Importer(ConditionReader, ActionReader, InitReader, EntityReader):
                 element.children.append(self.read_maneuver(maneuver, local, act_path, element.actors))
             elif child.tag != "Actors":
                 self.problems.add(child)
+        for maneuver in element.children:
+            for event in maneuver.children:
+                event.select_triggering = element.select_triggering
         return element
 
     def read_maneuver(self, maneuver: Any, scope: Scope, act_path: str, actors: list[str]) -> Element:

@@ -2,7 +2,8 @@
 
 One ScenarioMachine holds the storyboard's states. Stories, named for the OpenSCENARIO element:
 - "Storyboard" (a WorldStory): active while the storyboard runs (its stop trigger's conditions);
-- "Init": spawns the positioned entities at the first step; "Init/<entity>" sets an Init speed;
+- "Init": spawns the positioned entities at the first step; "Init/<entity>" sets an Init speed and
+  routes it to the position of an Init AcquirePositionAction;
 - "<Story>/<Act>" (a WorldStory): active while the act runs;
 - "<Story>/<Act>/<Event>": active for the event's actors while the event runs (the step it starts,
   and until its transitions reached their targets), with its actions as effects (a world one, an
@@ -86,6 +87,7 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
             stop=_trigger(e.stop, build),
             max_executions=e.max_executions,
             priority=e.priority,
+            select_triggering_entities=e.kind == "maneuver_group" and e.select_triggering,
         )
 
     board.registerStory(sb.WorldStory(sb.ElementCondition(machine, 0), [], name="Storyboard"))
@@ -109,11 +111,12 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
     if spawns:
         board.registerStory(sb.WorldStory(sb.TimeCondition(0), spawns, name="Init"))
     for s in scenario.starts:
-        if s.speed is not None:
+        effects = [] if s.speed is None else [sb.SetSpeedEffect(s.speed)]
+        if s.acquire is not None:  # routed once, when it is on the road
+            effects.append(sb.RouteEffect(s.acquire[0], via=s.acquire[1], keep=True))
+        if effects:
             entity = scenario.entities[s.entity]
-            board.registerStory(
-                sb.Story(sb.CarSetCondition(entity.sumo_id), [sb.SetSpeedEffect(s.speed)], name=f"Init/{s.entity}")
-            )
+            board.registerStory(sb.Story(sb.CarSetCondition(entity.sumo_id), effects, name=f"Init/{s.entity}"))
     names: set[str] = set()
     for e, _ in elements:
         if e.kind == "act":
@@ -122,7 +125,9 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
             continue
         name = e.path if e.path not in names else f"{e.path}#{indices[id(e)]}"
         names.add(name)
-        if not e.actors and any(not a.world for a in e.actions):
+        # Actors: the group's, and (selectTriggeringEntities) those that started its act, known at run time.
+        acting = bool(e.actors) or e.select_triggering
+        if not acting and any(not a.world for a in e.actions):
             raise ScenarioError(f"{xosc}: event '{e.path}' acts on vehicles, but its ManeuverGroup has no actors")
         world = [a.recipe(build) for a in e.actions if a.world]
         private = [a.recipe(build) for a in e.actions if not a.world]
@@ -134,7 +139,7 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
             )
         if private or not world:
             condition = sb.ElementCondition(machine, indices[id(e)], e.actors or None)
-            if e.actors:
+            if acting:
                 board.registerStory(sb.Story(condition, private, name=name))
             else:
                 board.registerStory(sb.WorldStory(condition, [], name=name))

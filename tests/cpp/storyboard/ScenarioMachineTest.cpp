@@ -1,6 +1,7 @@
-// OpenSCENARIO's storyboard state machine (ScenarioMachine): starts, ends, maximumExecutionCount,
-// condition edges and delays, priorities, stop triggers, StoryboardElementStateCondition; and the
-// two conditions that tie it to stories: EntityCondition and ElementCondition.
+// OpenSCENARIO's storyboard state machine (ScenarioMachine): starts, ends, maximumExecutionCount
+// (of events and of maneuver groups), condition edges and delays, priorities, stop triggers,
+// StoryboardElementStateCondition, triggering entities and selectTriggeringEntities; and the
+// conditions that tie it to stories: EntityCondition, TriggeringEntitiesCondition, ElementCondition.
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include "sbsim/storyboard/conditions/EntityCondition.h"
 #include "sbsim/storyboard/conditions/ParameterCondition.h"
 #include "sbsim/storyboard/conditions/SpeedCondition.h"
+#include "sbsim/storyboard/conditions/TriggeringEntitiesCondition.h"
 
 namespace sbsim::storyboard::test {
 namespace {
@@ -347,6 +349,109 @@ TEST_F(Machine, ElementConditionHoldsForTheActorsWhileTheElementRuns) {
     EXPECT_FALSE(forA.timeOnly());
     EXPECT_TRUE(world.timeOnly());
     EXPECT_EQ(forA.describe(), "ElementCondition(Event 'E', actors a; start (c rising))");
+}
+
+/// A storyboard whose act starts on `start` and whose one group runs `executions` times and may
+/// select its act's triggering entities; the group's maneuver has one event without a trigger.
+struct GroupMachine {
+    GroupMachine(M::Trigger start, std::uint64_t executions, bool select) {
+        const std::size_t board = m->add({"Storyboard", M::Kind::storyboard});
+        const std::size_t story = m->add({"S", M::Kind::story, board});
+        act = m->add({"A", M::Kind::act, story, std::move(start)});
+        M::ElementSpec spec{"G", M::Kind::maneuverGroup, act};
+        spec.maxExecutions = executions;
+        spec.selectTriggeringEntities = select;
+        group = m->add(spec);
+        maneuver = m->add({"M", M::Kind::maneuver, group});
+        event = m->add({"E", M::Kind::event, maneuver});
+    }
+    std::shared_ptr<M> m = std::make_shared<M>();
+    std::size_t act, group, maneuver, event;
+};
+
+TEST_F(Machine, AManeuverGroupWithMaximumExecutionCountTwoRunsTwice) {
+    GroupMachine g({}, 2, false);
+    m = g.m;
+    // The event runs at 1 and ends at 2 with its maneuver and group; the group, with one execution
+    // left, is back in standby and starts again at 3 with its event new; at 4 it completes.
+    EXPECT_EQ(runs(g.event, 6), (std::vector<int>{1, 3}));
+    EXPECT_EQ(m->executions(g.group), 2u);
+    EXPECT_EQ(m->executions(g.event), 1u) << "counted since its group last started";
+    EXPECT_EQ(m->state(g.group), M::State::complete);
+    EXPECT_EQ(m->state(g.act), M::State::complete);
+}
+
+TEST_F(Machine, ARestartedGroupsEventsWaitForTheirTriggersAgain) {
+    GroupMachine g({}, 3, false);
+    m = g.m;
+    auto sw = std::make_shared<Switch>();
+    const std::size_t e = m->add({"E2", M::Kind::event, g.maneuver, when(sw, M::Edge::rising)});
+    // E2 fires on the rising edges at 2 and 6; the group ends once both events did (at 3 and 7)
+    // and starts again at 4 and 8; its third round waits for an edge of E2 that never comes.
+    const auto at = runs(e, 10, [&](int next) { sw->on = next == 2 || next == 6; });
+    EXPECT_EQ(at, (std::vector<int>{2, 6}));
+    EXPECT_EQ(m->executions(g.group), 3u);
+    EXPECT_EQ(m->state(g.group), M::State::running);
+    EXPECT_EQ(m->state(e), M::State::standby);
+}
+
+TEST(TriggeringEntitiesCondition, NamesTheEntitiesItHoldsFor) {
+    Scene scene{{car("a", 12), car("b", 3), car("c", 15)}};
+    const auto fast = [](const std::string& id) {
+        return std::make_shared<EntityCondition>(id, std::make_shared<SpeedConditionGreater>(10));
+    };
+    TriggeringEntitiesCondition any({fast("c"), fast("b"), fast("a")}, false);
+    const ConditionResult r = scene.test(any, "b");
+    EXPECT_TRUE(r.isTrue());
+    EXPECT_EQ(scene.others(r), (Ids{"a", "c"})) << "a and c are faster than 10 m/s, b is not";
+    TriggeringEntitiesCondition all({fast("a"), fast("b")}, true);
+    EXPECT_FALSE(scene.test(all, "a").isTrue());
+    TriggeringEntitiesCondition both({fast("a"), fast("c")}, true);
+    EXPECT_EQ(scene.others(scene.test(both, "b")), (Ids{"a", "c"}));
+    EXPECT_TRUE(both.timeOnly());
+    EXPECT_EQ(both.describe(), "TriggeringEntitiesCondition(all of a, c)");
+    EXPECT_THROW(TriggeringEntitiesCondition({}, false), std::invalid_argument);
+}
+
+TEST_F(Machine, SelectTriggeringEntitiesMakesTheEntitiesThatStartedTheActActors) {
+    const auto fast = [](const std::string& id) {
+        return std::make_shared<EntityCondition>(id, std::make_shared<SpeedConditionGreater>(5));
+    };
+    auto trigger = std::make_shared<TriggeringEntitiesCondition>(
+        std::vector<std::shared_ptr<EntityCondition>>{fast("a"), fast("b")}, false);
+    GroupMachine g(when(trigger), 1, true);
+    m = g.m;
+    ElementCondition actors(m, g.event);
+    EXPECT_FALSE(actors.timeOnly()) << "its actors are known only at run time";
+    EXPECT_FALSE(step(g.event)) << "a stands, b stands: the act waits";
+    speed = 8;  // a drives at 8 m/s from step 2 on, b still stands
+    EXPECT_TRUE(step(g.event));
+    EXPECT_EQ(m->triggeringEntities(g.act), (Ids{"a"}));
+    EXPECT_EQ(m->selectedActors(g.event), (Ids{"a"}));
+    EXPECT_TRUE(actors.test(scene.ctx(), scene.index("a")));
+    EXPECT_FALSE(actors.test(scene.ctx(), scene.index("b"))) << "b did not trigger the act";
+    EXPECT_NE(actors.describe().find("the entities that triggered its act"), std::string::npos);
+    // A group that does not select keeps its own actors only.
+    GroupMachine plain(when(trigger), 1, false);
+    EXPECT_TRUE(plain.m->selectedActors(plain.event).empty());
+    EXPECT_THROW(m->add({"E", M::Kind::event, g.maneuver, {}, {}, 1, M::Priority::parallel, true}),
+                 std::invalid_argument)
+        << "only a maneuver group selects triggering entities";
+}
+
+TEST_F(Machine, ADelayedConditionKeepsTheEntitiesItHeldFor) {
+    const auto fast = std::make_shared<TriggeringEntitiesCondition>(
+        std::vector<std::shared_ptr<EntityCondition>>{
+            std::make_shared<EntityCondition>("a", std::make_shared<SpeedConditionGreater>(5))},
+        false);
+    GroupMachine g(when(fast, M::Edge::rising, 2), 1, true);
+    m = g.m;
+    speed = 8;
+    EXPECT_FALSE(step(g.event));
+    speed = 0;  // no longer true when the delay has run
+    EXPECT_FALSE(step(g.event));
+    EXPECT_TRUE(step(g.event)) << "seen 2 s after its rising edge at 1";
+    EXPECT_EQ(m->triggeringEntities(g.act), (Ids{"a"}));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -15,10 +16,13 @@
 #include "StoryboardTestSupport.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/storyboard/EventLog.h"
+#include "sbsim/storyboard/ScenarioMachine.h"
 #include "sbsim/storyboard/Storyboard.h"
 #include "sbsim/storyboard/VehicleHandle.h"
+#include "sbsim/storyboard/WorldStory.h"
 #include "sbsim/storyboard/conditions/AndCondition.h"
 #include "sbsim/storyboard/conditions/CarSetCondition.h"
+#include "sbsim/storyboard/conditions/ElementCondition.h"
 #include "sbsim/storyboard/conditions/LimitCondition.h"
 #include "sbsim/storyboard/conditions/PolygonCondition.h"
 #include "sbsim/storyboard/conditions/RisingCondition.h"
@@ -27,6 +31,7 @@
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/effects/LaneEffect.h"
 #include "sbsim/storyboard/effects/SignalEffect.h"
+#include "sbsim/storyboard/effects/SpeedChangeEffect.h"
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
 #include "sbsim/traffic/StoryboardSignal.h"
@@ -151,6 +156,44 @@ TEST_F(StoryboardTest, VehiclesThatLeftAreDeactivatedFirstWithoutCommands) {
                        }));
     EXPECT_EQ(commands.setSpeed.at("y").size(), stopsBefore) << "no SUMO command for a vehicle that left";
     EXPECT_FALSE(board.isActive("x", *board.stories()[0]));
+}
+
+/// A RecordingVehicle a speed transition may command (its step length, its speed mode).
+class TransitionVehicle : public RecordingVehicle {
+public:
+    using RecordingVehicle::RecordingVehicle;
+    double stepLength() const override { return 1.0; }
+    void setSpeedMode(int /*mode*/) override {}
+};
+
+TEST_F(StoryboardTest, AnEventWhoseActorLeftMidTransitionEnds) {
+    registry.setControllerFactory(
+        [this](const std::string& id) { return std::make_unique<TransitionVehicle>(id, commands); });
+    using M = ScenarioMachine;
+    auto m = std::make_shared<M>();
+    m->add({"Storyboard", M::Kind::storyboard});
+    m->add({"S", M::Kind::story, 0});
+    const std::size_t act = m->add({"A", M::Kind::act, 1});
+    m->add({"G", M::Kind::maneuverGroup, act});
+    m->add({"M", M::Kind::maneuver, 3});
+    const std::size_t event = m->add({"E", M::Kind::event, 4});
+    // From 10 to 30 m/s over 100 s: far from its target when "a" leaves at t = 3.
+    auto change = std::make_shared<SpeedChangeEffect>(
+        30, traffic::Transition{traffic::Transition::Shape::Linear, traffic::Transition::Dimension::Time, 100});
+    m->addAction(event, change);
+    board.registerStory(std::make_shared<WorldStory>(std::make_shared<ElementCondition>(m, 0),
+                                                     std::vector<WorldEffectPtr>{}, "Storyboard"));
+    board.registerStory(
+        std::make_shared<Story>(std::make_shared<ElementCondition>(m, event, std::set<std::string>{"a"}),
+                                std::vector<EffectPtr>{change}, "S/A/E"));
+    step(1, {car("a", 10), car("b", 10)});
+    step(2, {car("a", 11), car("b", 10)});
+    EXPECT_EQ(m->state(event), M::State::running);
+    EXPECT_FALSE(change->complete());
+    step(3, {car("b", 10)}, {"a"});
+    EXPECT_TRUE(change->complete()) << "the activation of a vehicle that left is forgotten";
+    EXPECT_EQ(m->state(event), M::State::complete) << "its event ends at the step its actor left";
+    EXPECT_TRUE(m->transitionedAt(event, M::Transition::end, SimTime::fromSeconds(3)));
 }
 
 TEST_F(StoryboardTest, SignalComesRightAfterItsActivationWithSortedOthers) {

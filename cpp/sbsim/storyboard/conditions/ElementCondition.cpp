@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "sbsim/storyboard/CheckContext.h"
@@ -14,23 +15,33 @@ ElementCondition::ElementCondition(std::shared_ptr<ScenarioMachine> machine, std
     : machine_(std::move(machine)),
       element_(element),
       actors_(std::move(actors)),
-      lookup_(actors_.begin(), actors_.end()) {
+      lookup_(actors_.begin(), actors_.end()),
+      selects_(false) {
     if (!machine_) throw std::invalid_argument("ElementCondition: the machine is null");
     if (element_ >= machine_->size()) {
         throw std::invalid_argument(fmt::format("ElementCondition: the machine has no element {}", element_));
     }
+    selects_ = machine_->selectsTriggeringEntities(element_);
 }
 
 ConditionResult ElementCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     machine_->advance(ctx);
     if (machine_->state(element_) != ScenarioMachine::State::running) return false;
-    return actors_.empty() || lookup_.contains(ctx.snapshot().ids()[ego]);
+    if (actors_.empty() && !selects_) return true;
+    const std::string& id = ctx.snapshot().ids()[ego];
+    if (lookup_.contains(id)) return true;
+    if (!selects_) return false;
+    const std::vector<std::string>& selected = machine_->selectedActors(element_);
+    return std::binary_search(selected.begin(), selected.end(), id);
 }
 
 std::string ElementCondition::describe() const {
     std::string s = fmt::format("ElementCondition({} '{}'", ScenarioMachine::kindName(machine_->kind(element_)),
                                 machine_->name(element_));
     if (!actors_.empty()) s += fmt::format(", actors {}", describeIds(actors_));
+    if (selects_)
+        s += actors_.empty() ? ", actors: the entities that triggered its act"
+                             : " and the entities that triggered its act";
     const std::string triggers = machine_->describeTriggers(element_);
     if (!triggers.empty()) s += "; " + triggers;
     return s + ")";

@@ -13,7 +13,9 @@ namespace sbsim::storyboard {
 
 /// True while an element of an OpenSCENARIO storyboard (ScenarioMachine) is running: for the
 /// element's actors (an event's ManeuverGroup actors), or for the world when it has none (an act:
-/// a WorldStory). Its first test of a step advances the machine, on the step's snapshot; its
+/// a WorldStory). When the element's ManeuverGroup selects triggering entities, the entities that
+/// started its Act are actors too (ScenarioMachine::selectedActors, asked each step). Its first
+/// test of a step advances the machine, on the step's snapshot; its
 /// children, for the board to prepare and `sbsim check` to print, are the element's trigger
 /// conditions.
 class ElementCondition : public Condition {
@@ -24,7 +26,7 @@ public:
     ConditionResult test(const EvaluationContext& ctx, VehicleIndex ego) override;
     void prepare(const EvaluationContext& ctx) override { machine_->prepare(ctx); }
     traffic::SnapshotColumns columns() const override { return {}; }
-    bool timeOnly() const override { return actors_.empty(); }
+    bool timeOnly() const override { return actors_.empty() && !selects_; }
     void forEachChild(const std::function<void(Condition&)>& visit) const override {
         machine_->forEachCondition(element_, visit);
     }
@@ -40,6 +42,7 @@ private:
     std::size_t element_;
     std::set<std::string> actors_;
     VehicleIdSet lookup_;  // the actors, hashed
+    bool selects_;         // its ManeuverGroup selects triggering entities
 };
 
 }  // namespace sbsim::storyboard

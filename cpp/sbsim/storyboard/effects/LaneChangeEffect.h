@@ -34,6 +34,7 @@ public:
     }
     /// Once the manoeuvre reached its target on every vehicle it acts on.
     bool complete() const override { return reached_.allReached(); }
+    void vehicleLeft(traffic::EffectStack::Token token) override { reached_.forget(token); }
     void check(CheckContext& ctx) const override;
 
     int lane() const { return lane_; }

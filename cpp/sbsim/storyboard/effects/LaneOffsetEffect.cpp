@@ -6,13 +6,20 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sbsim/storyboard/CheckContext.h"
 #include "sbsim/traffic/LateralTransition.h"
 
 namespace sbsim::storyboard {
 
 LaneOffsetEffect::LaneOffsetEffect(double offset, traffic::Transition dynamics,
-                                   std::optional<double> maxLateralAcceleration)
-    : offset_(offset), dynamics_(dynamics), maxLateralAcceleration_(maxLateralAcceleration) {
+                                   std::optional<double> maxLateralAcceleration, std::optional<std::string> relativeTo,
+                                   bool continuous)
+    : offset_(offset),
+      dynamics_(dynamics),
+      maxLateralAcceleration_(maxLateralAcceleration),
+      relativeTo_(std::move(relativeTo)),
+      continuous_(continuous) {
+    if (relativeTo_ && relativeTo_->empty()) throw std::invalid_argument("LaneOffsetEffect: the vehicle id is empty");
     if (!std::isfinite(offset)) throw std::invalid_argument("LaneOffsetEffect needs a finite offset in m");
     if (!std::isfinite(dynamics.value) || dynamics.value < 0) {
         throw std::invalid_argument(
@@ -25,7 +32,8 @@ LaneOffsetEffect::LaneOffsetEffect(double offset, traffic::Transition dynamics,
 }
 
 void LaneOffsetEffect::apply(EffectScope& scope) {
-    const traffic::LateralPlace target{scope.vehicle().laneIndex(), offset_};
+    const double offset = offset_ + (relativeTo_ ? scope.controllerOf(*relativeTo_)->lateralLanePosition() : 0.0);
+    const traffic::LateralPlace target{scope.vehicle().laneIndex(), offset};
     traffic::LateralTransition transition =
         maxLateralAcceleration_
             ? traffic::LateralTransition::withMaxAcceleration(dynamics_.shape, *maxLateralAcceleration_, target)
@@ -35,11 +43,21 @@ void LaneOffsetEffect::apply(EffectScope& scope) {
 }
 
 std::string LaneOffsetEffect::describe() const {
+    const std::string offset =
+        relativeTo_ ? fmt::format("{}'s offset {:+g} m", *relativeTo_, offset_) : fmt::format("{:+g} m", offset_);
+    const std::string held = continuous_ ? ", held" : "";
     if (maxLateralAcceleration_) {
-        return fmt::format("LaneOffsetEffect({:+g} m, {} at most {:g} m/s²)", offset_,
-                           traffic::Transition::name(dynamics_.shape), *maxLateralAcceleration_);
+        return fmt::format("LaneOffsetEffect({}, {} at most {:g} m/s²{})", offset,
+                           traffic::Transition::name(dynamics_.shape), *maxLateralAcceleration_, held);
     }
-    return fmt::format("LaneOffsetEffect({:+g} m, {})", offset_, dynamics_.describe("m/s"));
+    return fmt::format("LaneOffsetEffect({}, {}{})", offset, dynamics_.describe("m/s"), held);
+}
+
+void LaneOffsetEffect::check(CheckContext& ctx) const {
+    if (relativeTo_ && !ctx.vehicleDefined(*relativeTo_)) {
+        ctx.warn(fmt::format("{} is relative to vehicle '{}', which no route file or story defines", typeName(),
+                             *relativeTo_));
+    }
 }
 
 }  // namespace sbsim::storyboard

@@ -36,6 +36,7 @@ public:
     void remove(EffectScope& scope) override;
     void check(CheckContext& ctx) const override;
     bool complete() const override;
+    void vehicleLeft(traffic::EffectStack::Token token) override { active_.erase(token); }
 
     double target() const { return target_; }
     const traffic::Transition& dynamics() const { return dynamics_; }

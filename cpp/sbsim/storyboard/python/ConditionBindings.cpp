@@ -36,6 +36,7 @@
 #include "sbsim/storyboard/conditions/StandstillCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
 #include "sbsim/storyboard/conditions/TraveledDistanceCondition.h"
+#include "sbsim/storyboard/conditions/TriggeringEntitiesCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
@@ -315,6 +316,15 @@ void bindConditions(py::module_& m) {
         .def(py::init<ConditionPtr>(), py::arg("condition"));
     py::class_<EntityCondition, Condition, py::smart_holder>(m, "EntityCondition")
         .def(py::init<std::string, ConditionPtr>(), py::arg("vehicle"), py::arg("condition"));
+    py::class_<TriggeringEntitiesCondition, Condition, py::smart_holder>(m, "TriggeringEntitiesCondition")
+        .def(py::init([](std::vector<std::shared_ptr<EntityCondition>> entities, const std::string& rule) {
+                 if (rule != "any" && rule != "all")
+                     throw py::value_error("TriggeringEntitiesCondition rule must be 'any' or 'all', got '" + rule +
+                                           "'");
+                 if (entities.empty()) throw py::value_error("TriggeringEntitiesCondition needs at least one entity");
+                 return std::make_shared<TriggeringEntitiesCondition>(std::move(entities), rule == "all");
+             }),
+             py::arg("entities"), py::arg("rule") = "any");
     py::class_<ElementCondition, Condition, py::smart_holder>(m, "ElementCondition")
         .def(py::init([](std::shared_ptr<ScenarioMachine> machine, std::size_t element, const py::object& actors) {
                  std::set<std::string> ids;

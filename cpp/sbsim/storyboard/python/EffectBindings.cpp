@@ -16,6 +16,7 @@
 #include "sbsim/storyboard/effects/SpeedEffect.h"
 #include "sbsim/storyboard/effects/SpeedFactorEffect.h"
 #include "sbsim/storyboard/effects/StopEffect.h"
+#include "sbsim/storyboard/effects/TeleportEffect.h"
 #include "sbsim/storyboard/effects/TypeEffect.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/PythonEffect.h"
@@ -64,16 +65,57 @@ std::string toEdge(const py::handle& value) {
     return edge;
 }
 
-std::shared_ptr<RouteEffect> makeRouteEffect(const py::object& targetEdge, const py::object& via) {
+std::vector<std::string> toEdges(const py::object& edges, const char* who) {
+    if (!py::isinstance<py::iterable>(edges) || py::isinstance<py::str>(edges))
+        throw py::type_error(std::string(who) + " must be a list of edge ids, got " +
+                             py::repr(edges).cast<std::string>());
+    std::vector<std::string> out;
+    for (const py::handle edge : edges) out.push_back(toEdge(edge));
+    return out;
+}
+
+std::shared_ptr<RouteEffect> makeRouteEffect(const py::object& targetEdge, const py::object& via, bool keep) {
+    if (keep) {
+        if (targetEdge.is_none() && via.is_none())
+            throw py::value_error("RouteEffect needs target_edge or via=[edges]");
+        std::vector<std::string> edges = via.is_none() ? std::vector<std::string>{} : toEdges(via, "RouteEffect via");
+        std::optional<std::string> target;
+        if (!targetEdge.is_none()) target = toEdge(targetEdge);
+        if (!target && edges.empty()) throw py::value_error("RouteEffect via needs at least one edge");
+        return std::make_shared<RouteEffect>(std::move(target), std::move(edges), true);
+    }
     if (targetEdge.is_none() == via.is_none())
         throw py::value_error("RouteEffect needs either target_edge or via=[edges], not both or neither");
     if (!targetEdge.is_none()) return std::make_shared<RouteEffect>(toEdge(targetEdge), std::vector<std::string>{});
-    if (!py::isinstance<py::iterable>(via) || py::isinstance<py::str>(via))
-        throw py::type_error("RouteEffect via must be a list of edge ids, got " + py::repr(via).cast<std::string>());
-    std::vector<std::string> edges;
-    for (const py::handle edge : via) edges.push_back(toEdge(edge));
+    std::vector<std::string> edges = toEdges(via, "RouteEffect via");
     if (edges.empty()) throw py::value_error("RouteEffect via needs at least one edge");
     return std::make_shared<RouteEffect>(std::nullopt, std::move(edges));
+}
+
+std::shared_ptr<TeleportEffect> makeTeleportEffect(const py::object& edge, const py::object& lane,
+                                                   const py::object& position,
+                                                   const std::optional<std::string>& relativeTo,
+                                                   const py::object& onward) {
+    if (!py::isinstance<py::int_>(lane) || py::isinstance<py::bool_>(lane))
+        throw py::type_error("TeleportEffect needs a whole lane number, got " + py::repr(lane).cast<std::string>());
+    TeleportEffect::Target target;
+    target.lane = lane.cast<int>();
+    target.position = toNumber(position, "TeleportEffect position");
+    target.relativeTo = relativeTo;
+    if (relativeTo) {
+        if (relativeTo->empty()) throw py::value_error("TeleportEffect relative_to needs a vehicle id");
+        if (!edge.is_none()) throw py::value_error("TeleportEffect: an edge or relative_to=vehicle, not both");
+    } else {
+        if (edge.is_none()) throw py::value_error("TeleportEffect needs an edge (or relative_to=vehicle)");
+        target.edge = toEdge(edge);
+        if (target.lane < 0) throw py::value_error("TeleportEffect needs a lane index >= 0");
+        if (target.position < 0) throw py::value_error("TeleportEffect needs a position >= 0 m");
+    }
+    std::vector<std::string> route =
+        onward.is_none() ? std::vector<std::string>{} : toEdges(onward, "TeleportEffect onward");
+    if (!route.empty() && route.front() != target.edge)
+        throw py::value_error("TeleportEffect onward must start on the target edge");
+    return std::make_shared<TeleportEffect>(std::move(target), std::move(route));
 }
 
 /// OpenSCENARIO's TransitionDynamics: shape "step" | "linear" | "cubic" | "sinusoidal", dimension
@@ -140,19 +182,21 @@ std::shared_ptr<LaneChangeEffect> makeLaneChangeEffect(const py::object& lane, c
 }
 
 std::shared_ptr<LaneOffsetEffect> makeLaneOffsetEffect(const py::object& offset, const std::string& shape,
-                                                       const py::object& duration, const py::object& maxLateralAcc) {
+                                                       const py::object& duration, const py::object& maxLateralAcc,
+                                                       const std::optional<std::string>& relativeTo, bool continuous) {
     const double o = toNumber(offset, "LaneOffsetEffect offset");
+    if (relativeTo && relativeTo->empty()) throw py::value_error("LaneOffsetEffect relative_to needs a vehicle id");
     if (duration.is_none() == maxLateralAcc.is_none() && shape != "step")
         throw py::value_error("LaneOffsetEffect needs duration=seconds or max_lateral_acc=m/s², one of them");
     if (!maxLateralAcc.is_none()) {
         const double a = toNumber(maxLateralAcc, "LaneOffsetEffect max_lateral_acc");
         if (a <= 0) throw py::value_error("LaneOffsetEffect max_lateral_acc must be > 0");
         return std::make_shared<LaneOffsetEffect>(o, toTransition(shape, "time", py::float_(1.0), "LaneOffsetEffect"),
-                                                  a);
+                                                  a, relativeTo, continuous);
     }
     const py::object seconds = duration.is_none() ? py::object(py::float_(0.0)) : duration;
-    return std::make_shared<LaneOffsetEffect>(o, toTransition(shape, "time", seconds, "LaneOffsetEffect"),
-                                              std::nullopt);
+    return std::make_shared<LaneOffsetEffect>(o, toTransition(shape, "time", seconds, "LaneOffsetEffect"), std::nullopt,
+                                              relativeTo, continuous);
 }
 
 std::string shapeName(const traffic::Transition& t) { return std::string(traffic::Transition::name(t.shape)); }
@@ -213,9 +257,23 @@ void bindEffects(py::module_& m) {
         .def_property_readonly("lane_index", &LaneEffect::laneIndex);
     py::class_<RouteEffect, Effect, py::smart_holder>(m, "RouteEffect")
         .def(py::init(&makeRouteEffect), py::arg("target_edge") = py::none(), py::kw_only(),
-             py::arg("via") = py::none())
+             py::arg("via") = py::none(), py::arg("keep") = false)
         .def_property_readonly("target_edge", [](const RouteEffect& e) { return e.route().target; })
-        .def_property_readonly("via", [](const RouteEffect& e) { return e.route().via; });
+        .def_property_readonly("via", [](const RouteEffect& e) { return e.route().via; })
+        .def_property_readonly("keep", &RouteEffect::keep);
+    py::class_<TeleportEffect, Effect, py::smart_holder>(m, "TeleportEffect")
+        .def(py::init(&makeTeleportEffect), py::arg("edge") = py::none(), py::arg("lane") = 0,
+             py::arg("position") = 0.0, py::kw_only(), py::arg("relative_to") = py::none(),
+             py::arg("onward") = py::none())
+        .def_property_readonly("edge",
+                               [](const TeleportEffect& e) -> std::optional<std::string> {
+                                   if (e.target().edge.empty()) return std::nullopt;
+                                   return e.target().edge;
+                               })
+        .def_property_readonly("lane", [](const TeleportEffect& e) { return e.target().lane; })
+        .def_property_readonly("position", [](const TeleportEffect& e) { return e.target().position; })
+        .def_property_readonly("relative_to", [](const TeleportEffect& e) { return e.target().relativeTo; })
+        .def_property_readonly("onward", &TeleportEffect::onward);
     py::class_<SpeedChangeEffect, Effect, py::smart_holder>(m, "SpeedChangeEffect")
         .def(py::init(&makeSpeedChangeEffect), py::arg("target"), py::arg("shape") = "step",
              py::arg("dimension") = "time", py::arg("value") = 0.0, py::kw_only(), py::arg("relative_to") = py::none(),
@@ -251,8 +309,11 @@ void bindEffects(py::module_& m) {
         .def_property_readonly("offset", &LaneChangeEffect::offset);
     py::class_<LaneOffsetEffect, Effect, py::smart_holder>(m, "LaneOffsetEffect")
         .def(py::init(&makeLaneOffsetEffect), py::arg("offset"), py::arg("shape") = "step", py::kw_only(),
-             py::arg("duration") = py::none(), py::arg("max_lateral_acc") = py::none())
+             py::arg("duration") = py::none(), py::arg("max_lateral_acc") = py::none(),
+             py::arg("relative_to") = py::none(), py::arg("continuous") = false)
         .def_property_readonly("offset", &LaneOffsetEffect::offset)
+        .def_property_readonly("relative_to", &LaneOffsetEffect::relativeTo)
+        .def_property_readonly("continuous", &LaneOffsetEffect::continuous)
         .def_property_readonly("shape", [](const LaneOffsetEffect& e) { return shapeName(e.dynamics()); })
         .def_property_readonly("duration",
                                [](const LaneOffsetEffect& e) -> std::optional<double> {

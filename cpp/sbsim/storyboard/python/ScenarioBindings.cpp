@@ -131,13 +131,14 @@ void bindScenario(py::module_& m) {
             "add",
             [](M& self, const std::string& name, const std::string& kind, std::optional<std::size_t> parent,
                const py::object& start, const py::object& stop, std::uint64_t maxExecutions,
-               const std::string& priority) {
+               const std::string& priority, bool selectTriggeringEntities) {
                 return self.add({name, named(kinds, kind, "kind"), parent, toTrigger(start, "start trigger"),
                                  toTrigger(stop, "stop trigger"), maxExecutions,
-                                 named(priorities, priority, "priority")});
+                                 named(priorities, priority, "priority"), selectTriggeringEntities});
             },
             py::arg("name"), py::arg("kind"), py::arg("parent") = py::none(), py::arg("start") = py::none(),
-            py::arg("stop") = py::none(), py::arg("max_executions") = 1, py::arg("priority") = "parallel")
+            py::arg("stop") = py::none(), py::arg("max_executions") = 1, py::arg("priority") = "parallel",
+            py::arg("select_triggering_entities") = false)
         .def(
             "add_action",
             [](M& self, std::size_t event, std::shared_ptr<Effect> action) {
@@ -148,6 +149,7 @@ void bindScenario(py::module_& m) {
         .def("__len__", &M::size)
         .def("state", [](const M& self, std::size_t e) { return std::string(M::stateName(self.state(e))); })
         .def("executions", &M::executions)
+        .def("triggering_entities", &M::triggeringEntities)
         .def_property_readonly("ended", &M::ended);
 }
 
