@@ -476,6 +476,43 @@ TEST_F(WorldStoryTest, TrafficLightErrors) {
     EXPECT_THROW(stack.pushSignalState(1, "nope", "r"), std::invalid_argument);
 }
 
+TEST_F(WorldStoryTest, TrafficLightLinksTakeTheLetterAndTheOthersKeepTheirs) {
+    board.registerStory(
+        world(window(2, 3), {std::make_shared<TrafficLightEffect>("J1", "r", std::vector<int>{0, 1})}, "red links"));
+    step(2);
+    EXPECT_EQ(network->lights.at("J1").state, "rrrr") << "GGrr with links 0 and 1 red";
+    step(4);
+    EXPECT_EQ(network->log, (std::vector<std::string>{"state J1 rrrr", "program J1 0", "phase J1 2"}));
+    EXPECT_EQ(TrafficLightEffect("J1", "r", {0, 1}).describe(), "TrafficLightEffect('J1', 'r', links 0,1)");
+    EXPECT_THROW(TrafficLightEffect("J1", "rr", {0}), std::invalid_argument);
+    EXPECT_THROW(TrafficLightEffect("J1", "r", {-1}), std::invalid_argument);
+    board.registerStory(
+        world(window(5, 6), {std::make_shared<TrafficLightEffect>("J1", "r", std::vector<int>{4})}, "beyond"));
+    try {
+        step(5);
+        FAIL() << "no error";
+    } catch (const StoryError& e) {
+        EXPECT_STREQ(e.what(),
+                     "story 'beyond': TrafficLightEffect at t=5 s: traffic light 'J1' has no link 4 (it controls 4)");
+    }
+}
+
+TEST_F(WorldStoryTest, AKeptTrafficLightStateOutlastsItsStoryUntilALaterHold) {
+    board.registerStory(
+        world(window(2, 2), {std::make_shared<TrafficLightEffect>("J1", "rrrr", std::vector<int>{}, true)}, "kept"));
+    board.registerStory(world(window(5, 6), {std::make_shared<TrafficLightEffect>("J1", "GGGG")}, "green"));
+    run(2, 4);
+    EXPECT_FALSE(board.isActive(*board.stories()[0]));
+    EXPECT_EQ(network->lights.at("J1").state, "rrrr") << "the story ended, the light stays red";
+    EXPECT_EQ(board.network().heldState("J1"), "rrrr");
+    step(5);
+    EXPECT_EQ(network->lights.at("J1").state, "GGGG") << "a later hold rules";
+    step(7);
+    EXPECT_EQ(network->lights.at("J1").state, "rrrr") << "and when it ends, the kept state is back";
+    EXPECT_EQ(network->log, (std::vector<std::string>{"state J1 rrrr", "state J1 GGGG", "state J1 rrrr"}));
+    EXPECT_EQ(TrafficLightEffect("J1", "rrrr", {}, true).describe(), "TrafficLightEffect('J1', 'rrrr', kept)");
+}
+
 TEST_F(WorldStoryTest, AcceptsTimeOnlyConditionsAndRefusesOthersNamingThem) {
     const auto t = window(1, 2);
     EXPECT_NO_THROW(world(std::make_shared<OrCondition>(std::make_shared<NotCondition>(t),

@@ -87,9 +87,12 @@ void bindWorld(py::module_& m) {
         .def(py::init<std::string>(), py::arg("id"))
         .def_property_readonly("id", &RemoveVehicleEffect::id);
     py::class_<TrafficLightEffect, WorldEffect, py::smart_holder>(m, "TrafficLightEffect")
-        .def(py::init<std::string, std::string>(), py::arg("tls_id"), py::arg("state"))
+        .def(py::init<std::string, std::string, std::vector<int>, bool>(), py::arg("tls_id"), py::arg("state"),
+             py::arg("links") = std::vector<int>{}, py::arg("keep") = false)
         .def_property_readonly("tls_id", &TrafficLightEffect::tls)
-        .def_property_readonly("state", &TrafficLightEffect::state);
+        .def_property_readonly("state", &TrafficLightEffect::state)
+        .def_property_readonly("links", &TrafficLightEffect::links)
+        .def_property_readonly("keep", &TrafficLightEffect::keep);
 
     py::class_<WorldStory, Story, py::smart_holder>(m, "WorldStory")
         .def(py::init([](ConditionPtr condition, const py::object& effects, std::optional<std::string> name) {
