@@ -9,6 +9,7 @@ from .errors import ScenarioError, where
 from .model import Action, Build
 from .parameters import Scope, as_stored
 from .reader import Reader
+from .signals import signal_links, signal_state
 
 SHAPES = ("step", "linear", "cubic", "sinusoidal")
 DIMENSIONS = ("time", "distance", "rate")
@@ -44,6 +45,8 @@ class ActionReader(Reader):
             return Action(name, False, f"SignalEffect('{cause}')", lambda b: b.sb.SignalEffect(cause))
         if kind.tag == "GlobalAction" and len(kind) == 1 and kind[0].tag == "ParameterAction":
             return self.read_parameter_action(kind[0], scope, name)
+        if kind.tag == "GlobalAction" and kind.find("InfrastructureAction/TrafficSignalAction") is not None:
+            return self.read_traffic_signal_action(kind.find("InfrastructureAction/TrafficSignalAction"), scope, name)
         if kind.tag == "GlobalAction" and kind.find("EntityAction/DeleteEntityAction") is not None:
             entity_action = kind.find("EntityAction")
             sumo_id = self.sumo_id(self.text(entity_action, "entityRef", scope), entity_action)
@@ -202,4 +205,26 @@ class ActionReader(Reader):
             False,
             f"LaneOffsetEffect({offset:+g} m)",
             lambda b: b.sb.LaneOffsetEffect(offset, shape, max_lateral_acc=acc),
+        )
+
+    def read_traffic_signal_action(self, action: Any, scope: Scope, name: str) -> Action | None:
+        """TrafficSignalStateAction: the light (or its links) shows the state from then on, until a
+        later action sets it (SUMO's programme of that light stops: a kept TrafficLightEffect)."""
+        state_action = action.find("TrafficSignalStateAction")
+        if state_action is None or len(action) != 1:
+            self.problems.add(
+                action[0] if len(action) else action,
+                "TrafficSignalControllerAction (sbsim does not switch a SUMO programme's phase; "
+                "a TrafficSignalStateAction sets a light's state)",
+            )
+            return None
+        here = where(self.path, state_action)
+        tls, links = signal_links(self.network, self.text(state_action, "name", scope), here)
+        state = signal_state(self.network, tls, links, self.text(state_action, "state", scope), here)
+        at = f" link{'s' if len(links) > 1 else ''} {','.join(map(str, links))}" if links else ""
+        return Action(
+            name,
+            True,
+            f"TrafficLightEffect({tls}{at} '{state}', kept)",
+            lambda b: b.sb.TrafficLightEffect(tls, state, links=links, keep=True),
         )
