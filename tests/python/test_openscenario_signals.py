@@ -230,3 +230,40 @@ def test_opendrive_signal_ids_name_the_links_netconvert_gave_them(tmp_path: Path
     assert signal_links(net, "100:0", "here") == ("100", [0])
     with pytest.raises(ScenarioError, match="no traffic signal '999'"):
         signal_links(net, "999", "here")
+
+
+@pytest.mark.parametrize("hold", [False, True])
+def test_a_story_on_a_link_and_a_kept_hold(signal_net: Path, tmp_path: Path, hold: bool) -> None:
+    """The Python story API on the same light: link 3 is green 13-23 and 39-49 (a 26 s cycle), seen 0.1 s
+    later; a kept red on link 3 at t = 30 (the light shows GGrr then) holds it past its story's end
+    (31 s): link 3 never turns green again."""
+    from sbsim_helpers import write_story
+
+    effect = "[sb.TrafficLightEffect('B', 'r', links=[3], keep=True)]" if hold else "[]"
+    story = write_story(
+        tmp_path,
+        f"""
+        import storyboard as sb
+
+        def createStories(board):
+            board.registerStory(sb.WorldStory(sb.TrafficSignalCondition('B', 'G', links=[3]), [], name='green'))
+            board.registerStory(sb.WorldStory(sb.TimeCondition(30, 31), {effect}, name='hold'))
+        """,
+    )
+    # A vehicle keeps the run going (it ends when SUMO expects no more).
+    (tmp_path / "v.rou.xml").write_text(
+        '<routes><vehicle id="v" depart="0"><route edges="AB BC"/></vehicle></routes>\n'
+    )
+    cfg = tmp_path / "v.sumocfg"
+    cfg.write_text(
+        f'<configuration><input><net-file value="{signal_net.parent / "b.net.xml"}"/>'
+        '<route-files value="v.rou.xml"/></input>'
+        '<time><begin value="0"/><end value="60"/><step-length value="0.1"/></time></configuration>\n'
+    )
+    events_file = tmp_path / "events.jsonl"
+    result = run(cfg, story=story, events=events_file, timeout=120)
+    assert result.returncode == 0, result.stderr
+    events = read_events(events_file)
+    assert starts(events, "green") == ([13.1] if hold else [13.1, 39.1])
+    ends = [e["t"] for e in events if e["type"] == "deactivate" and e["story"] == "green"]
+    assert ends == ([23.1] if hold else [23.1, 49.1])
