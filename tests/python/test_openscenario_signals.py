@@ -267,3 +267,15 @@ def test_a_story_on_a_link_and_a_kept_hold(signal_net: Path, tmp_path: Path, hol
     assert starts(events, "green") == ([13.1] if hold else [13.1, 39.1])
     ends = [e["t"] for e in events if e["type"] == "deactivate" and e["story"] == "green"]
     assert ends == ([23.1] if hold else [23.1, 49.1])
+
+
+def test_a_misc_object_is_an_obstacle_the_entity_stops_behind(signal_net: Path, tmp_path: Path) -> None:
+    events, fcd = run_xosc(scenario(tmp_path, "obstacle.xosc"), signal_net)
+    assert starts(events, "Init/Box (obstacle)") == [0.2], "from when it runs (spawned at the first step)"
+    box = {round(x, 3) for x, _ in fcd.pos["Box"].values()}
+    assert box == {200.0}, "held at speed 0 where it was put"
+    assert max(fcd.speed["Box"].values()) == 0.0
+    assert fcd.speed["Ego"][30.0] == pytest.approx(0.0)
+    ego_x = fcd.pos["Ego"][30.0][0]
+    assert 180.0 < ego_x <= 193.5 + 1e-6, "behind the box's back (196) by at least SUMO's minGap"
+    assert fcd.lane["Ego"][30.0] == "AB_0"
