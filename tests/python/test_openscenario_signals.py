@@ -1,8 +1,9 @@
 """OpenSCENARIO traffic signals on SUMO traffic lights: TrafficSignalCondition (a light, a link, words,
 lamps), TrafficSignalControllerCondition (a phase by name), TrafficSignalStateAction (a light held from
-then on: the entity stops), names and states the network lacks (exit 2), and OpenDRIVE signal ids as
-netconvert keeps them; and the same on the story API (a kept hold). The network: a junction "B" with a traffic light (netconvert, from nodes, edges
-and a programme written here); the expected times are worked out in each scenario's comment."""
+then on: the entity stops), names and states the network lacks (exit 2), OpenDRIVE signal ids as
+netconvert keeps them, the same on the story API (a kept hold), and a MiscObject as an obstacle. The
+network: a junction "B" with a traffic light (netconvert, from nodes, edges and a programme written
+here); the expected times are worked out in each scenario's comment."""
 
 from __future__ import annotations
 
