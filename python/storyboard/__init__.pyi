@@ -474,6 +474,14 @@ class TrafficLightEffect(WorldEffect):
     keep: bool
     def __init__(self, tls_id: str, state: str, links: Sequence[int] = ..., keep: bool = False) -> None: ...
 
+class TrafficLightPhaseEffect(WorldEffect):
+    """Switches traffic light ``tls_id``'s programme to phase ``phase`` when the story activates (its full
+    duration, then on as programmed), ending every hold of the light; the story's end changes nothing."""
+
+    tls_id: str
+    phase: int
+    def __init__(self, tls_id: str, phase: int) -> None: ...
+
 class Parameters:
     """The run's study parameters (--param NAME=VALUE), read-only; values are bool, int, float or str."""
 

@@ -6,6 +6,7 @@
 #include "sbsim/storyboard/effects/RemoveVehicleEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
+#include "sbsim/storyboard/effects/TrafficLightPhaseEffect.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/Bindings.h"
 
@@ -93,6 +94,10 @@ void bindWorld(py::module_& m) {
         .def_property_readonly("state", &TrafficLightEffect::state)
         .def_property_readonly("links", &TrafficLightEffect::links)
         .def_property_readonly("keep", &TrafficLightEffect::keep);
+    py::class_<TrafficLightPhaseEffect, WorldEffect, py::smart_holder>(m, "TrafficLightPhaseEffect")
+        .def(py::init<std::string, int>(), py::arg("tls_id"), py::arg("phase"))
+        .def_property_readonly("tls_id", &TrafficLightPhaseEffect::tls)
+        .def_property_readonly("phase", &TrafficLightPhaseEffect::phase);
 
     py::class_<WorldStory, Story, py::smart_holder>(m, "WorldStory")
         .def(py::init([](ConditionPtr condition, const py::object& effects, std::optional<std::string> name) {
