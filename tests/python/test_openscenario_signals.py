@@ -1,9 +1,10 @@
 """OpenSCENARIO traffic signals on SUMO traffic lights: TrafficSignalCondition (a light, a link, words,
 lamps), TrafficSignalControllerCondition (a phase by name), TrafficSignalStateAction (a light held from
-then on: the entity stops), names and states the network lacks (exit 2), OpenDRIVE signal ids as
-netconvert keeps them, the same on the story API (a kept hold), and a MiscObject as an obstacle. The
-network: a junction "B" with a traffic light (netconvert, from nodes, edges and a programme written
-here); the expected times are worked out in each scenario's comment."""
+then on: the entity stops), TrafficSignalControllerAction (the programme jumps to a phase), names and
+states the network lacks (exit 2), OpenDRIVE signal ids as netconvert keeps them, the same on the story
+API (a kept hold), and a MiscObject as an obstacle. The network: a junction "B" with a traffic light
+(netconvert, from nodes, edges and a programme written here); the expected times are worked out in each
+scenario's comment (or the test's, for a scenario it edits)."""
 
 from __future__ import annotations
 
@@ -164,22 +165,43 @@ def test_names_and_states_the_network_lacks_are_one_line(
         assert_bad_input(run(signal_net, extra=command, timeout=120), f"{xosc}:", *needles)
 
 
-def test_controller_actions_and_declared_controllers_are_unsupported(signal_net: Path, tmp_path: Path) -> None:
+def test_a_controller_action_switches_the_programme_to_the_phase(signal_net: Path, tmp_path: Path) -> None:
+    """signal-action.xosc with a TrafficSignalControllerAction to phase eastGreen at t > 5 instead: SUMO's
+    programme jumps to eastGreen at 5.1 for its full 10 s (eastYellow from 15.1, northGreen 18.1 to 28.1,
+    eastGreen again from 31.1). Link 0 stops being green at 5.1, seen at 5.2 (Held). Ego reaches the line
+    at about t = 19, in northGreen: it stands on AB at t = 25 (in the programme it passed in eastGreen,
+    13-23) and passes in the next eastGreen, on BC by t = 40."""
     xosc = scenario(tmp_path, "signal-action.xosc")
-    text = xosc.read_text().replace(
-        '<TrafficSignalStateAction name="$Signal" state="$State"/>',
-        '<TrafficSignalControllerAction trafficSignalControllerRef="B" phase="eastGreen"/>',
+    xosc.write_text(
+        xosc.read_text().replace(
+            '<TrafficSignalStateAction name="$Signal" state="$State"/>',
+            '<TrafficSignalControllerAction trafficSignalControllerRef="B" phase="eastGreen"/>',
+        )
     )
-    text = text.replace(
-        "<RoadNetwork/>",
-        '<RoadNetwork><TrafficSignals><TrafficSignalController name="B"><Phase name="p" duration="5">'
-        '<TrafficSignalState trafficSignalId="B:3" state="red"/></Phase></TrafficSignalController>'
-        "</TrafficSignals></RoadNetwork>",
+    events, fcd = run_xosc(xosc, signal_net)
+    assert starts(events, "S/A/Red (world)") == [5.1]
+    assert starts(events, "S/A/Held") == [5.2]
+    assert fcd.lane["Ego"][25.0] == "AB_0" and fcd.speed["Ego"][25.0] == pytest.approx(0.0)
+    assert fcd.lane["Ego"][40.0] == "BC_0"
+    check = run(signal_net, extra=["check", "--scenario", str(xosc)], timeout=120)
+    assert check.returncode == 0, check.stderr
+    assert "TrafficLightPhaseEffect('B', phase 2)" in check.stdout
+    xosc.write_text(xosc.read_text().replace('phase="eastGreen"', 'phase="red"'))
+    assert_bad_input(run(signal_net, extra=["--scenario", str(xosc)], timeout=120), "has no phase 'red'")
+
+
+def test_declared_controllers_are_unsupported(signal_net: Path, tmp_path: Path) -> None:
+    xosc = scenario(tmp_path, "signal-action.xosc")
+    xosc.write_text(
+        xosc.read_text().replace(
+            "<RoadNetwork/>",
+            '<RoadNetwork><TrafficSignals><TrafficSignalController name="B"><Phase name="p" duration="5">'
+            '<TrafficSignalState trafficSignalId="B:3" state="red"/></Phase></TrafficSignalController>'
+            "</TrafficSignals></RoadNetwork>",
+        )
     )
-    xosc.write_text(text)
-    line = assert_bad_input(run(signal_net, extra=["--scenario", str(xosc)], timeout=120), "2 unsupported")
+    line = assert_bad_input(run(signal_net, extra=["--scenario", str(xosc)], timeout=120), "1 unsupported")
     assert "<TrafficSignals>" in line and "declared traffic signal controllers" in line
-    assert "<TrafficSignalControllerAction>" in line and "does not switch a SUMO programme's phase" in line
 
 
 def test_opendrive_signal_ids_name_the_links_netconvert_gave_them(tmp_path: Path) -> None:

@@ -9,7 +9,7 @@ from .errors import ScenarioError, where
 from .model import Action, Build
 from .parameters import Scope, as_stored
 from .reader import Reader
-from .signals import signal_links, signal_state
+from .signals import phase_index, signal_links, signal_state
 
 SHAPES = ("step", "linear", "cubic", "sinusoidal")
 DIMENSIONS = ("time", "distance", "rate")
@@ -209,14 +209,23 @@ class ActionReader(Reader):
 
     def read_traffic_signal_action(self, action: Any, scope: Scope, name: str) -> Action | None:
         """TrafficSignalStateAction: the light (or its links) shows the state from then on, until a
-        later action sets it (SUMO's programme of that light stops: a kept TrafficLightEffect)."""
+        later action sets it (SUMO's programme of that light stops: a kept TrafficLightEffect).
+        TrafficSignalControllerAction: the SUMO light's programme switches to the phase (its full
+        duration, then on as programmed), ending any state an action set."""
+        controller = action.find("TrafficSignalControllerAction")
+        if controller is not None and len(action) == 1:
+            here = where(self.path, controller)
+            tls = self.text(controller, "trafficSignalControllerRef", scope)
+            phase = phase_index(self.network, tls, self.text(controller, "phase", scope), here)
+            return Action(
+                name,
+                True,
+                f"TrafficLightPhaseEffect({tls} phase {phase})",
+                lambda b: b.sb.TrafficLightPhaseEffect(tls, phase),
+            )
         state_action = action.find("TrafficSignalStateAction")
         if state_action is None or len(action) != 1:
-            self.problems.add(
-                action[0] if len(action) else action,
-                "TrafficSignalControllerAction (sbsim does not switch a SUMO programme's phase; "
-                "a TrafficSignalStateAction sets a light's state)",
-            )
+            self.problems.add(action)
             return None
         here = where(self.path, state_action)
         tls, links = signal_links(self.network, self.text(state_action, "name", scope), here)

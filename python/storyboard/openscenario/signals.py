@@ -85,16 +85,23 @@ def signal_state(network: Network, tls: str, links: list[int], state: str, what:
         ) from None
 
 
-def phase_state(network: Network, tls: str, phase: str, what: str) -> str:
-    """The state of phase `phase` (its name, or its index if no phase is so named) of light `tls`."""
+def phase_index(network: Network, tls: str, phase: str, what: str) -> int:
+    """The index of phase `phase` (its name, or its index if no phase is so named) of light `tls`'s
+    programme in the network file."""
     light = network.lights.get(tls)
     if light is None:
         known = ", ".join(sorted(network.lights)[:10]) or "none"
         raise ScenarioError(f"{what}: no traffic light '{tls}' in {network.path.name} ({known})")
-    named = [state for name, state in light.phases if name == phase]
+    named = [i for i, (name, _) in enumerate(light.phases) if name == phase]
     if not named and phase.isdigit() and int(phase) < len(light.phases):
-        named = [light.phases[int(phase)][1]]
+        named = [int(phase)]
     if not named:
         names = [name or str(i) for i, (name, _) in enumerate(light.phases)]
         raise ScenarioError(f"{what}: traffic light '{tls}' has no phase '{phase}' (it has {', '.join(names)})")
     return named[0]
+
+
+def phase_state(network: Network, tls: str, phase: str, what: str) -> str:
+    """The state of phase `phase` of light `tls` (see phase_index)."""
+    index = phase_index(network, tls, phase, what)  # first: it names a light the network lacks
+    return network.lights[tls].phases[index][1]
