@@ -168,6 +168,16 @@ class TraveledDistanceCondition(Condition):
     distance: float
     def __init__(self, distance: float) -> None: ...
 
+class TrafficSignalCondition(Condition):
+    """OpenSCENARIO's TrafficSignalCondition: true while traffic light ``tls_id`` shows ``state`` (SUMO's
+    letters, one per link), or with ``links`` while each of those links shows the one letter ``state``.
+    Letters compare by colour (``G`` and ``g`` are both green). Read once per step; time-only."""
+
+    tls_id: str
+    state: str
+    links: list[int]
+    def __init__(self, tls_id: str, state: str, links: Sequence[int] = ...) -> None: ...
+
 class RelativeDistanceCondition(Condition):
     """OpenSCENARIO's RelativeDistanceCondition: the distance from the vehicle to vehicle ``vehicle`` compared
     by ``rule`` (OpenSCENARIO's Rule names: lessThan, lessOrEqual, equalTo (within 0.01 m), greaterOrEqual,
@@ -498,9 +508,23 @@ class SpawnEffect(WorldEffect):
     ) -> None: ...
 
 class TrafficLightEffect(WorldEffect):
+    """Holds traffic light ``tls_id`` at ``state`` (SUMO's letters, one per link) while the story is active,
+    then its programme resumes. With ``links``, ``state`` is one letter for those links (the others keep
+    what they show at activation); with ``keep``, the hold outlasts the story until a later hold of the light."""
+
     tls_id: str
     state: str
-    def __init__(self, tls_id: str, state: str) -> None: ...
+    links: list[int]
+    keep: bool
+    def __init__(self, tls_id: str, state: str, links: Sequence[int] = ..., keep: bool = False) -> None: ...
+
+class TrafficLightPhaseEffect(WorldEffect):
+    """Switches traffic light ``tls_id``'s programme to phase ``phase`` when the story activates (its full
+    duration, then on as programmed), ending every hold of the light; the story's end changes nothing."""
+
+    tls_id: str
+    phase: int
+    def __init__(self, tls_id: str, phase: int) -> None: ...
 
 class Parameters:
     """The run's study parameters (--param NAME=VALUE), read-only; values are bool, int, float or str."""

@@ -286,7 +286,7 @@ def test_unsupported_elements_are_one_error_with_their_lines(road: Path, tmp_pat
     result = run(road / "line.sumocfg", extra=["--scenario", str(xosc)], timeout=120)
     line = assert_bad_input(result, "3 unsupported OpenSCENARIO elements", "<Pedestrian> (line 18)")
     assert "<LaneChangeActionDynamics> (line 43): followingMode 'follow' here" in line
-    assert "<TrafficSignalCondition> (line 59)" in line
+    assert "<TimeOfDayCondition> (line 59)" in line
 
 
 @pytest.mark.parametrize(

@@ -53,6 +53,17 @@ void NetworkStack::pushSignalState(Token token, const std::string& tls, const st
     if (const auto v = hold.states.push(token, state, [&] { return current; })) network_->setSignalState(tls, *v);
 }
 
+void NetworkStack::switchPhase(const std::string& tls, int phase) {
+    if (!network_->hasTrafficLight(tls)) {
+        throw std::invalid_argument(fmt::format("no traffic light '{}' in the network", tls));
+    }
+    if (const auto it = signals_.find(tls); it != signals_.end()) {
+        network_->setProgram(tls, it->second.program);
+        signals_.erase(it);
+    }
+    network_->setPhase(tls, phase);
+}
+
 void NetworkStack::remove(Token token) {
     for (auto it = closures_.begin(); it != closures_.end();) {
         std::erase(it->second.tokens, token);

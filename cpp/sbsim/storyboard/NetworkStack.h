@@ -45,6 +45,10 @@ public:
     /// Throws std::invalid_argument, before changing anything, for an unknown traffic light or a
     /// state whose length is not the light's number of signals.
     void pushSignalState(Token token, const std::string& tls, const std::string& state);
+    /// Switches the light's programme to `phase` (its full duration, then on as programmed): every
+    /// hold of the light ends first (its programme is set again; the holds' later removal does
+    /// nothing). Throws std::invalid_argument, before changing anything, for an unknown light.
+    void switchPhase(const std::string& tls, int phase);
     /// Removes the activation `token` from whichever domain holds it; unknown tokens are ignored.
     void remove(Token token);
     /// Removes vehicle `id` from the simulation now (a world effect's doing); one that had

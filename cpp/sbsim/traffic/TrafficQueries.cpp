@@ -55,6 +55,10 @@ double TrafficQueries::odometer(const std::string& /*vehicle*/) {
     throw std::logic_error("this TrafficQueries does not answer odometer()");
 }
 
+std::string TrafficQueries::signalState(const std::string& /*tls*/) {
+    throw std::logic_error("this TrafficQueries does not answer signalState()");
+}
+
 double SumoQueries::odometer(const std::string& vehicle) { return libsumo::Vehicle::getDistance(vehicle); }
 
 }  // namespace sbsim::traffic

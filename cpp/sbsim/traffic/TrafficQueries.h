@@ -6,6 +6,7 @@
 
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/traffic/NetworkController.h"
 #include "sbsim/traffic/SignalLinks.h"
 
 namespace sbsim::traffic {
@@ -47,6 +48,10 @@ public:
     /// The distance (m) `vehicle` drove since it departed (SUMO's odometer). Models that do not
     /// answer it throw std::logic_error.
     virtual double odometer(const std::string& vehicle);
+    /// A traffic light's state now, one SUMO letter per controlled link (as a story's
+    /// TrafficLightEffect or the light's programme set it). Models that do not answer it throw
+    /// std::logic_error.
+    virtual std::string signalState(const std::string& tls);
 };
 
 /// TrafficQueries answered by libsumo (a loaded SUMO).
@@ -57,8 +62,11 @@ public:
     std::optional<SignalPassage> signalPassage(const std::string& vehicle, const std::string& from,
                                                const std::string& to) override;
     double odometer(const std::string& vehicle) override;
+    /// Asked of libsumo through the NetworkController world effects command lights with.
+    std::string signalState(const std::string& tls) override { return network_.signalState(tls); }
 
 private:
+    NetworkController network_;
     std::optional<SignalLinks> signals_;  // read at the first question (SUMO is loaded by then)
     std::optional<kernel::SimTime> collisionsAt_;
     std::vector<Collision> collisions_;

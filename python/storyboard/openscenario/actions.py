@@ -10,6 +10,7 @@ from .errors import ScenarioError, where
 from .model import Action, Build
 from .parameters import Scope, as_stored
 from .reader import Reader
+from .signals import phase_index, signal_links, signal_state
 
 SHAPES = ("step", "linear", "cubic", "sinusoidal")
 DIMENSIONS = ("time", "distance", "rate")
@@ -49,6 +50,8 @@ class ActionReader(Reader):
             return Action(name, False, f"SignalEffect('{cause}')", lambda b: b.sb.SignalEffect(cause))
         if kind.tag == "GlobalAction" and len(kind) == 1 and kind[0].tag == "ParameterAction":
             return self.read_parameter_action(kind[0], scope, name)
+        if kind.tag == "GlobalAction" and kind.find("InfrastructureAction/TrafficSignalAction") is not None:
+            return self.read_traffic_signal_action(kind.find("InfrastructureAction/TrafficSignalAction"), scope, name)
         if kind.tag == "GlobalAction" and kind.find("EntityAction/DeleteEntityAction") is not None:
             entity_action = kind.find("EntityAction")
             sumo_id = self.sumo_id(self.text(entity_action, "entityRef", scope), entity_action)
@@ -311,4 +314,35 @@ class ActionReader(Reader):
             False,
             f"RouteEffect({kind}: via {', '.join(edges)}, on to {target})",
             lambda b: b.sb.RouteEffect(target, via=via, keep=True),
+        )
+
+    def read_traffic_signal_action(self, action: Any, scope: Scope, name: str) -> Action | None:
+        """TrafficSignalStateAction: the light (or its links) shows the state from then on, until a
+        later action sets it (SUMO's programme of that light stops: a kept TrafficLightEffect).
+        TrafficSignalControllerAction: the SUMO light's programme switches to the phase (its full
+        duration, then on as programmed), ending any state an action set."""
+        controller = action.find("TrafficSignalControllerAction")
+        if controller is not None and len(action) == 1:
+            here = where(self.path, controller)
+            tls = self.text(controller, "trafficSignalControllerRef", scope)
+            phase = phase_index(self.network, tls, self.text(controller, "phase", scope), here)
+            return Action(
+                name,
+                True,
+                f"TrafficLightPhaseEffect({tls} phase {phase})",
+                lambda b: b.sb.TrafficLightPhaseEffect(tls, phase),
+            )
+        state_action = action.find("TrafficSignalStateAction")
+        if state_action is None or len(action) != 1:
+            self.problems.add(action)
+            return None
+        here = where(self.path, state_action)
+        tls, links = signal_links(self.network, self.text(state_action, "name", scope), here)
+        state = signal_state(self.network, tls, links, self.text(state_action, "state", scope), here)
+        at = f" link{'s' if len(links) > 1 else ''} {','.join(map(str, links))}" if links else ""
+        return Action(
+            name,
+            True,
+            f"TrafficLightEffect({tls}{at} '{state}', kept)",
+            lambda b: b.sb.TrafficLightEffect(tls, state, links=links, keep=True),
         )

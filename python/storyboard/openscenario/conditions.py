@@ -9,6 +9,7 @@ from .errors import ScenarioError, where
 from .model import Build, Recipe, Trigger, TriggerCondition
 from .parameters import Scope, as_stored
 from .reader import Reader
+from .signals import phase_state, signal_links, signal_state
 
 RULES = ("greaterThan", "lessThan", "equalTo", "greaterOrEqual", "lessOrEqual", "notEqualTo")
 EDGES = ("none", "rising", "falling", "risingOrFalling")
@@ -103,6 +104,18 @@ class ConditionReader(Reader):
                 return b.sb.ElementStateCondition(b.machine, b.index[key], state)
 
             return element_state
+        if c.tag == "TrafficSignalCondition":
+            here = where(self.path, c)
+            tls, links = signal_links(self.network, self.text(c, "name", scope), here)
+            state = signal_state(self.network, tls, links, self.text(c, "state", scope), here)
+            return lambda b: b.sb.TrafficSignalCondition(tls, state, links)
+        if c.tag == "TrafficSignalControllerCondition":
+            # The controller is a SUMO traffic light; its phase holds while the light shows the
+            # phase's state (phases of one state are not told apart).
+            here = where(self.path, c)
+            tls = self.text(c, "trafficSignalControllerRef", scope)
+            state = phase_state(self.network, tls, self.text(c, "phase", scope), here)
+            return lambda b: b.sb.TrafficSignalCondition(tls, state)
         self.problems.add(c)
         return None
 

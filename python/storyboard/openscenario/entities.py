@@ -1,9 +1,11 @@
-"""ScenarioObjects as SUMO vehicle types: vehicles, catalog references with parameter assignments."""
+"""ScenarioObjects as SUMO vehicle types: vehicles, catalog references with parameter assignments, and
+MiscObjects as obstacles (a SUMO vehicle of the object's bounding box, held at speed 0)."""
 
 from __future__ import annotations
 
 from typing import Any
 
+from .errors import ScenarioError, where
 from .model import Entity
 from .parameters import Scope
 from .reader import Reader
@@ -24,6 +26,9 @@ VEHICLE_CLASSES = {
 class EntityReader(Reader):
     def read_object(self, obj: Any, scope: Scope) -> None:
         name = self.text(obj, "name", scope)
+        if obj.find("MiscObject") is not None:
+            self.read_misc_object(obj.find("MiscObject"), name, scope)
+            return
         self.only(obj, {"Vehicle", "CatalogReference", "ObjectController"})
         controller = obj.find("ObjectController")
         if controller is not None and len(controller):
@@ -60,4 +65,27 @@ class EntityReader(Reader):
             self.number(perf, "maxAcceleration", local) if perf is not None else 2.6,
             self.number(perf, "maxDeceleration", local) if perf is not None else 4.5,
             name in self.binds,
+        )
+
+    def read_misc_object(self, misc: Any, name: str, scope: Scope) -> None:
+        """An obstacle on the road: a SUMO vehicle (vClass `ignoring`, so that any lane takes it) of the
+        object's bounding box, held at speed 0 from its Init position on. Other vehicles brake for it
+        and may change lanes around it as for a standing vehicle."""
+        local = scope.declare(misc.find("ParameterDeclarations"), self.path)
+        self.only(misc, {"ParameterDeclarations", "BoundingBox", "Properties"})
+        dims = misc.find("BoundingBox/Dimensions")
+        if dims is None:
+            raise ScenarioError(f"{where(self.path, misc)}: a MiscObject needs BoundingBox/Dimensions")
+        self.entities[name] = Entity(
+            name,
+            self.binds.get(name, name),
+            "ignoring",
+            self.number(dims, "length", local),
+            self.number(dims, "width", local),
+            self.number(dims, "height", local),
+            1.0,  # SUMO needs a positive maxSpeed; the hold keeps it at 0
+            2.6,
+            4.5,
+            name in self.binds,
+            obstacle=True,
         )

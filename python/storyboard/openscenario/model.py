@@ -38,6 +38,7 @@ class Entity:
     max_accel: float
     max_decel: float
     bound: bool
+    obstacle: bool = False  # a MiscObject: a vehicle held at speed 0 wherever it is put
 
     @property
     def vtype(self) -> str:

@@ -30,6 +30,15 @@ class Lane:
 
 
 @dataclass
+class TrafficLight:
+    """A SUMO traffic light (tlLogic) as the network file has it: its first programme."""
+
+    id: str
+    links: int  # letters of its state: the links it controls
+    phases: list[tuple[str, str]]  # (name, state) in programme order; name "" if none
+
+
+@dataclass
 class Network:
     path: Path
     offset: tuple[float, float] = (0.0, 0.0)  # netconvert's netOffset: SUMO = OpenDRIVE + offset
@@ -37,6 +46,9 @@ class Network:
     edges: dict[str, list[Lane]] = field(default_factory=dict)  # lanes by index
     successors: dict[str, list[tuple[str, str]]] = field(default_factory=dict)  # lane -> (lane, dir)
     speed_limits: dict[str, float] = field(default_factory=dict)  # lane -> m/s
+    lights: dict[str, TrafficLight] = field(default_factory=dict)  # SUMO traffic light id -> light
+    # OpenDRIVE signal id -> (SUMO traffic light, its link indices): netconvert's linkSignalID params
+    signals: dict[str, tuple[str, list[int]]] = field(default_factory=dict)
 
     @classmethod
     def read(cls, path: Path) -> Network:
@@ -65,6 +77,18 @@ class Network:
                 net.speed_limits[entry.id] = float(lane.get("speed", "13.89"))
                 lanes.append(entry)
             net.edges[edge.get("id", "")] = sorted(lanes, key=lambda lane: lane.index)
+        for logic in root.iterfind("tlLogic"):
+            tls = logic.get("id", "")
+            if tls in net.lights:
+                continue  # another programme of the same light: its links are the same
+            phases = [(p.get("name", ""), p.get("state", "")) for p in logic.iterfind("phase")]
+            net.lights[tls] = TrafficLight(tls, len(phases[0][1]) if phases else 0, phases)
+            for param in logic.iterfind("param"):
+                key = param.get("key", "")
+                if key.startswith("linkSignalID:"):
+                    signal = net.signals.setdefault(param.get("value", ""), (tls, []))
+                    if signal[0] == tls:
+                        signal[1].append(int(key.split(":", 1)[1]))
         for c in root.iterfind("connection"):
             src, dst = c.get("from", ""), c.get("to", "")
             if src not in net.edges or dst not in net.edges:

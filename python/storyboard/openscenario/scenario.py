@@ -80,7 +80,12 @@ class Importer(ConditionReader, ActionReader, InitReader, EntityReader):
             self.only(road, {"LogicFile", "SceneGraphFile", "TrafficSignals"})
             signals = road.find("TrafficSignals")
             if signals is not None and len(signals):
-                self.problems.add(signals)
+                # Declared controllers would be new SUMO programmes: sbsim runs the network's own.
+                self.problems.add(
+                    signals,
+                    "declared traffic signal controllers (sbsim runs the SUMO network's own traffic light "
+                    "programmes: refer to a SUMO traffic light id as the controller)",
+                )
         entities = root.find("Entities")
         if entities is not None:
             for obj in entities:

@@ -3,7 +3,8 @@
 One ScenarioMachine holds the storyboard's states. Stories, named for the OpenSCENARIO element:
 - "Storyboard" (a WorldStory): active while the storyboard runs (its stop trigger's conditions);
 - "Init": spawns the positioned entities at the first step; "Init/<entity>" sets an Init speed and
-  routes it to the position of an Init AcquirePositionAction;
+  routes it to the position of an Init AcquirePositionAction; "Init/<entity> (obstacle)" holds a
+  MiscObject at speed 0 (StopEffect) for as long as it runs;
 - "<Story>/<Act>" (a WorldStory): active while the act runs;
 - "<Story>/<Act>/<Event>": active for the event's actors while the event runs (the step it starts,
   and until its transitions reached their targets), with its actions as effects (a world one, an
@@ -117,6 +118,11 @@ def create(board: Any, xosc: str, net: str, binds: Mapping[str, str]) -> sb.Scen
         if effects:
             entity = scenario.entities[s.entity]
             board.registerStory(sb.Story(sb.CarSetCondition(entity.sumo_id), effects, name=f"Init/{s.entity}"))
+    for entity in scenario.entities.values():
+        if entity.obstacle:
+            board.registerStory(
+                sb.Story(sb.CarSetCondition(entity.sumo_id), [sb.StopEffect()], name=f"Init/{entity.name} (obstacle)")
+            )
     names: set[str] = set()
     for e, _ in elements:
         if e.kind == "act":

@@ -41,6 +41,7 @@
 #include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
 #include "sbsim/storyboard/conditions/StandstillCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/TrafficSignalCondition.h"
 #include "sbsim/storyboard/conditions/TraveledDistanceCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
 #include "sbsim/storyboard/conditions/TypeCondition.h"
@@ -132,6 +133,9 @@ TEST(StoryCheck, EveryConditionDescribesItselfWithItsArguments) {
         {std::make_shared<CollisionCondition>(), "CollisionCondition"},
         {std::make_shared<EquippedCondition>(), "EquippedCondition()"},
         {std::make_shared<TraveledDistanceCondition>(250), "TraveledDistanceCondition(250 m)"},
+        {std::make_shared<TrafficSignalCondition>("J", "GrGr"), "TrafficSignalCondition('J' shows 'GrGr')"},
+        {std::make_shared<TrafficSignalCondition>("J", "r", std::vector<int>{2}),
+         "TrafficSignalCondition('J' link 2 shows 'r')"},
         {std::make_shared<RelativeDistanceCondition>("lead", 20, ComparisonRule::LessThan,
                                                      RelativeDistanceCondition::Kind::Longitudinal, true),
          "RelativeDistanceCondition(vehicle lead, longitudinal freespace, lessThan 20 m)"},
@@ -260,6 +264,7 @@ TEST(StoryCheck, IdsTheNetworkLacksAreWarnedByTheNodeThatNamesThem) {
         story(std::make_shared<LaneCondition>(Ids{"a_0", "a_7"}), {std::make_shared<TypeEffect>("bus")}, "lane"),
         story(window(1, 2), {std::make_shared<RouteEffect>(std::nullopt, std::vector<std::string>{"b", "qq"})},
               "route"),
+        worldStory(std::make_shared<TrafficSignalCondition>("L", "r"), {}, "signal"),
         worldStory(window(1, 2), {std::make_shared<CloseRoadEffect>(std::vector<std::string>{"a", "gone"}),
                                   std::make_shared<TrafficLightEffect>("K", "r"),
                                   std::make_shared<TrafficLightEffect>("J", "r"), std::make_shared<SpawnEffect>(spec)}),
@@ -269,6 +274,7 @@ TEST(StoryCheck, IdsTheNetworkLacksAreWarnedByTheNodeThatNamesThem) {
                                      "lane: LaneCondition names lanes the network does not have: a_7",
                                      "lane: TypeEffect names vehicle types SUMO did not load: bus",
                                      "route: RouteEffect names edges the network does not have: qq",
+                                     "signal: TrafficSignalCondition names traffic lights the network does not have: L",
                                      "w: CloseRoadEffect names edges the network does not have: gone",
                                      "w: TrafficLightEffect names traffic lights the network does not have: K",
                                      "w: SpawnEffect names edges the network does not have: zz",

@@ -31,6 +31,7 @@
 #include "sbsim/storyboard/effects/RemoveVehicleEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
+#include "sbsim/storyboard/effects/TrafficLightPhaseEffect.h"
 #include "sbsim/traffic/SumoBridge.h"
 
 namespace sbsim::storyboard {
@@ -474,6 +475,59 @@ TEST_F(WorldStoryTest, TrafficLightErrors) {
     }
     NetworkStack stack(*network);
     EXPECT_THROW(stack.pushSignalState(1, "nope", "r"), std::invalid_argument);
+}
+
+TEST_F(WorldStoryTest, TrafficLightLinksTakeTheLetterAndTheOthersKeepTheirs) {
+    board.registerStory(
+        world(window(2, 3), {std::make_shared<TrafficLightEffect>("J1", "r", std::vector<int>{0, 1})}, "red links"));
+    step(2);
+    EXPECT_EQ(network->lights.at("J1").state, "rrrr") << "GGrr with links 0 and 1 red";
+    step(4);
+    EXPECT_EQ(network->log, (std::vector<std::string>{"state J1 rrrr", "program J1 0", "phase J1 2"}));
+    EXPECT_EQ(TrafficLightEffect("J1", "r", {0, 1}).describe(), "TrafficLightEffect('J1', 'r', links 0,1)");
+    EXPECT_THROW(TrafficLightEffect("J1", "rr", {0}), std::invalid_argument);
+    EXPECT_THROW(TrafficLightEffect("J1", "r", {-1}), std::invalid_argument);
+    board.registerStory(
+        world(window(5, 6), {std::make_shared<TrafficLightEffect>("J1", "r", std::vector<int>{4})}, "beyond"));
+    try {
+        step(5);
+        FAIL() << "no error";
+    } catch (const StoryError& e) {
+        EXPECT_STREQ(e.what(),
+                     "story 'beyond': TrafficLightEffect at t=5 s: traffic light 'J1' has no link 4 (it controls 4)");
+    }
+}
+
+TEST_F(WorldStoryTest, AKeptTrafficLightStateOutlastsItsStoryUntilALaterHold) {
+    board.registerStory(
+        world(window(2, 2), {std::make_shared<TrafficLightEffect>("J1", "rrrr", std::vector<int>{}, true)}, "kept"));
+    board.registerStory(world(window(5, 6), {std::make_shared<TrafficLightEffect>("J1", "GGGG")}, "green"));
+    run(2, 4);
+    EXPECT_FALSE(board.isActive(*board.stories()[0]));
+    EXPECT_EQ(network->lights.at("J1").state, "rrrr") << "the story ended, the light stays red";
+    EXPECT_EQ(board.network().heldState("J1"), "rrrr");
+    step(5);
+    EXPECT_EQ(network->lights.at("J1").state, "GGGG") << "a later hold rules";
+    step(7);
+    EXPECT_EQ(network->lights.at("J1").state, "rrrr") << "and when it ends, the kept state is back";
+    EXPECT_EQ(network->log, (std::vector<std::string>{"state J1 rrrr", "state J1 GGGG", "state J1 rrrr"}));
+    EXPECT_EQ(TrafficLightEffect("J1", "rrrr", {}, true).describe(), "TrafficLightEffect('J1', 'rrrr', kept)");
+}
+
+TEST_F(WorldStoryTest, APhaseSwitchEndsTheHoldsOfTheLightAndItsProgrammeGoesOn) {
+    board.registerStory(
+        world(window(2, 2), {std::make_shared<TrafficLightEffect>("J1", "rrrr", std::vector<int>{}, true)}, "kept"));
+    board.registerStory(world(window(4, 5), {std::make_shared<TrafficLightPhaseEffect>("J1", 2)}, "phase"));
+    run(2, 7);
+    EXPECT_EQ(network->log, (std::vector<std::string>{"state J1 rrrr", "program J1 0", "phase J1 2"}))
+        << "the kept red ends, the programme is back, at phase 2; the story's end changes nothing";
+    EXPECT_FALSE(board.network().heldState("J1"));
+    EXPECT_EQ(network->lights.at("J1").state, "rrGG");
+    EXPECT_EQ(TrafficLightPhaseEffect("J1", 2).describe(), "TrafficLightPhaseEffect('J1', phase 2)");
+    EXPECT_THROW(TrafficLightPhaseEffect("J1", -1), std::invalid_argument);
+    EXPECT_THROW(TrafficLightPhaseEffect("", 0), std::invalid_argument);
+    NetworkStack stack(*network);
+    EXPECT_THROW(stack.switchPhase("nope", 0), std::invalid_argument);
 }
 
 TEST_F(WorldStoryTest, AcceptsTimeOnlyConditionsAndRefusesOthersNamingThem) {

@@ -35,6 +35,7 @@
 #include "sbsim/storyboard/conditions/SpeedDifferenceCondition.h"
 #include "sbsim/storyboard/conditions/StandstillCondition.h"
 #include "sbsim/storyboard/conditions/TimeCondition.h"
+#include "sbsim/storyboard/conditions/TrafficSignalCondition.h"
 #include "sbsim/storyboard/conditions/TraveledDistanceCondition.h"
 #include "sbsim/storyboard/conditions/TriggeringEntitiesCondition.h"
 #include "sbsim/storyboard/conditions/TtcCondition.h"
@@ -204,6 +205,12 @@ void bindConditions(py::module_& m) {
              }),
              py::arg("seconds"));
     py::class_<CollisionCondition, Condition, py::smart_holder>(m, "CollisionCondition").def(py::init<>());
+    py::class_<TrafficSignalCondition, Condition, py::smart_holder>(m, "TrafficSignalCondition")
+        .def(py::init<std::string, std::string, std::vector<int>>(), py::arg("tls_id"), py::arg("state"),
+             py::arg("links") = std::vector<int>{})
+        .def_property_readonly("tls_id", &TrafficSignalCondition::tls)
+        .def_property_readonly("state", &TrafficSignalCondition::state)
+        .def_property_readonly("links", &TrafficSignalCondition::links);
     py::class_<TraveledDistanceCondition, Condition, py::smart_holder>(m, "TraveledDistanceCondition")
         .def(py::init([](const py::object& distance) {
                  const double d = toNumber(distance, "TraveledDistanceCondition distance");

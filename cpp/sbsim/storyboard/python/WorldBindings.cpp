@@ -6,6 +6,7 @@
 #include "sbsim/storyboard/effects/RemoveVehicleEffect.h"
 #include "sbsim/storyboard/effects/SpawnEffect.h"
 #include "sbsim/storyboard/effects/TrafficLightEffect.h"
+#include "sbsim/storyboard/effects/TrafficLightPhaseEffect.h"
 #include "sbsim/storyboard/python/ArgumentConversions.h"
 #include "sbsim/storyboard/python/Bindings.h"
 
@@ -87,9 +88,16 @@ void bindWorld(py::module_& m) {
         .def(py::init<std::string>(), py::arg("id"))
         .def_property_readonly("id", &RemoveVehicleEffect::id);
     py::class_<TrafficLightEffect, WorldEffect, py::smart_holder>(m, "TrafficLightEffect")
-        .def(py::init<std::string, std::string>(), py::arg("tls_id"), py::arg("state"))
+        .def(py::init<std::string, std::string, std::vector<int>, bool>(), py::arg("tls_id"), py::arg("state"),
+             py::arg("links") = std::vector<int>{}, py::arg("keep") = false)
         .def_property_readonly("tls_id", &TrafficLightEffect::tls)
-        .def_property_readonly("state", &TrafficLightEffect::state);
+        .def_property_readonly("state", &TrafficLightEffect::state)
+        .def_property_readonly("links", &TrafficLightEffect::links)
+        .def_property_readonly("keep", &TrafficLightEffect::keep);
+    py::class_<TrafficLightPhaseEffect, WorldEffect, py::smart_holder>(m, "TrafficLightPhaseEffect")
+        .def(py::init<std::string, int>(), py::arg("tls_id"), py::arg("phase"))
+        .def_property_readonly("tls_id", &TrafficLightPhaseEffect::tls)
+        .def_property_readonly("phase", &TrafficLightPhaseEffect::phase);
 
     py::class_<WorldStory, Story, py::smart_holder>(m, "WorldStory")
         .def(py::init([](ConditionPtr condition, const py::object& effects, std::optional<std::string> name) {
