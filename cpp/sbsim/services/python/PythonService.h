@@ -14,6 +14,7 @@
 #include "sbsim/kernel/Message.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/den/DenmSender.h"
+#include "sbsim/services/python/MessageBatch.h"
 #include "sbsim/services/python/ReceivedMessage.h"
 
 namespace sbsim::services::python {

@@ -13,6 +13,7 @@
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/services/ServicesConfig.h"
+#include "sbsim/services/python/MessageBatch.h"
 #include "sbsim/services/python/PythonService.h"
 #include "sbsim/services/python/ReceivedMessage.h"
 #include "sbsim/traffic/StoryboardSignal.h"
