@@ -1,5 +1,7 @@
 """What Python services read without copies: a batch's numpy columns agree with the messages one by one, and a
-batch (or a column) a service keeps stays as it was while later batches reuse the service's memory."""
+batch (or a column) a service keeps stays as it was while later batches reuse the service's memory; the snapshot's
+columns are read-only views of the step's buffer, the same object for every read in a step, and a view kept from
+an earlier step keeps that step's values."""
 
 from __future__ import annotations
 
@@ -57,6 +59,47 @@ class Keeper(Service):
 """
 
 
+#: Reads the snapshot at every trigger: views (not owning their data, read-only), one per column and step, that
+#: agree with the vehicle's own speed and position; keeps some from earlier steps and checks they never change.
+SNAPSHOT = """
+import numpy as np
+from storyboard.services import Service
+
+
+class Viewer(Service):
+    def initialize(self):
+        self.kept = []  # (step time, ids, speeds view, positions view, copies)
+        self.checks = 0
+        self.steps = set()
+
+    def trigger(self):
+        snapshot = self.snapshot
+        speeds, positions = snapshot.speeds, snapshot.positions
+        for column in (speeds, positions):
+            assert not column.flags.owndata and column.base is not None and not column.flags.writeable
+        assert speeds is self.snapshot.speeds and positions is snapshot.positions  # one view per step
+        assert speeds.shape == (len(snapshot),) and positions.shape == (len(snapshot), 2)
+        i = self.self_index
+        if i is not None:
+            assert speeds[i] == self.speed
+            assert snapshot.ids[i] == self.station_id
+        if snapshot.time not in self.steps and len(self.steps) % 5 == 0:
+            self.kept.append((snapshot.time, snapshot.ids, speeds, positions, speeds.copy(), positions.copy()))
+        self.steps.add(snapshot.time)
+        for time, ids, s, p, s0, p0 in self.kept:
+            assert np.array_equal(s, s0) and np.array_equal(p, p0), time
+            if time != snapshot.time:
+                assert s is not speeds
+        self.checks += 1
+
+    def finish(self):
+        moved = sum(1 for t, ids, s, p, s0, p0 in self.kept[1:] if len(p) != len(self.kept[0][3]))
+        self.record_scalar("kept", len(self.kept))
+        self.record_scalar("checks", self.checks)
+        self.record_scalar("resized", moved)
+"""
+
+
 def run_ok(cfg: Path, *extra: str, end: float = 40.0) -> RunResult:
     result = run(cfg, end=end, seed=7, extra=list(extra), timeout=300)
     assert_no_crash(result)
@@ -74,3 +117,13 @@ def test_batches_agree_with_each_cam_and_a_kept_batch_does_not_change(loops_cfg:
     # Every CAM delivered reached a batch (the summary counts deliveries over all stations).
     delivered = next(line for line in result.stdout.splitlines() if line.startswith("messages CAM: sent "))
     assert scalars["cams"] == int(delivered.split(", delivered ")[1].split()[0].replace(",", ""))
+
+
+def test_snapshot_columns_are_views_of_the_step_that_stay_valid(loops_cfg: Path, tmp_path: Path) -> None:
+    write_file(tmp_path, "viewer.py", SNAPSHOT)
+    services = services_file(tmp_path, '<service type="python:viewer.py:Viewer"/>')
+    stats = tmp_path / "stats.parquet"
+    run_ok(loops_cfg, "--services", str(services), "--statistics", str(stats), end=60.0)
+    scalars = pd.read_parquet(stats).groupby("name")["value"].sum()
+    assert scalars["checks"] > 1000 and scalars["kept"] > 50
+    assert scalars["resized"] > 0  # vehicles came and went while old views were held
