@@ -19,6 +19,7 @@ const T* sparse(const std::vector<std::pair<std::uint32_t, T>>& items, std::uint
 void MessageBatch::clear() {
     refs_.clear();
     chunks_.clear();
+    lastChunk_ = nullptr;
     columnsMade_ = false;
 }
 

@@ -78,6 +78,7 @@ void PythonService::initialize() {
     denm_ = method("on_denm");
     finish_ = method("finish");
     if (!batch_.is_none()) pending_ = std::make_shared<MessageBatch>(MessageStore::shared());
+    batchOnly_ = pending_ && cam_.is_none() && denm_.is_none();
     if (!initialize_.is_none()) call(initialize_, "initialize");
 }
 
@@ -103,6 +104,8 @@ void PythonService::receiveSignal(const traffic::StoryboardSignal& signal) {
 }
 
 void PythonService::indicate(const radio::V2xMessage& message) {
+    // The batched service's path, per reception: nothing else to prepare.
+    if (batchOnly_) return pending_->add(message, simTime());
     last_ = nullptr;
     lastRecord_.reset();
     const bool handlers = !cam_.is_none() || !denm_.is_none();
