@@ -20,27 +20,43 @@ void MessageBatch::clear() {
     refs_.clear();
     chunks_.clear();
     lastChunk_ = nullptr;
-    columnsMade_ = false;
+    made_ = 0;
 }
 
-const MessageBatch::Columns& MessageBatch::columns() const {
-    if (columnsMade_) return columns_;
-    columnsMade_ = true;
-    Columns& c = columns_;
+const std::vector<double>& MessageBatch::column(Column which) const {
+    const auto k = static_cast<std::size_t>(which);
+    std::vector<double>& out = columns_[k];
+    if ((made_ & (1U << k)) != 0) return out;
+    made_ |= 1U << k;
     const std::size_t n = refs_.size();
-    for (auto* column : {&c.receivedAt, &c.sentAt, &c.sizes, &c.camSpeeds, &c.camHeadings}) column->resize(n);
-    c.camPositions.resize(2 * n);
+    out.resize(which == Column::CamPosition ? 2 * n : n);
     for (std::size_t i = 0; i < n; ++i) {
         const MessageStore::Row& r = row(i);
-        c.receivedAt[i] = r.receivedAt;
-        c.sentAt[i] = r.sentAt;
-        c.sizes[i] = r.size;
-        c.camPositions[2 * i] = r.cam ? r.camValues[0] : kNone;
-        c.camPositions[2 * i + 1] = r.cam ? r.camValues[1] : kNone;
-        c.camSpeeds[i] = r.cam ? r.camValues[2] : kNone;
-        c.camHeadings[i] = r.cam ? r.camValues[3] : kNone;
+        switch (which) {
+            case Column::ReceivedAt:
+                out[i] = r.receivedAt;
+                break;
+            case Column::SentAt:
+                out[i] = r.sentAt;
+                break;
+            case Column::Size:
+                out[i] = r.size;
+                break;
+            case Column::CamPosition:
+                out[2 * i] = r.cam ? r.camValues[0] : kNone;
+                out[2 * i + 1] = r.cam ? r.camValues[1] : kNone;
+                break;
+            case Column::CamSpeed:
+                out[i] = r.cam ? r.camValues[2] : kNone;
+                break;
+            case Column::CamHeading:
+                out[i] = r.cam ? r.camValues[3] : kNone;
+                break;
+            case Column::kCount:
+                break;
+        }
     }
-    return c;
+    return out;
 }
 
 ReceivedMessage MessageBatch::at(std::size_t i) const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -36,12 +37,11 @@ public:
     std::vector<std::string> senders() const;
     std::vector<std::string> types() const;
 
-    struct Columns {
-        std::vector<double> receivedAt, sentAt, sizes;
-        std::vector<double> camPositions, camSpeeds, camHeadings;  ///< NaN for messages that are not CAMs
-    };
-    /// Made on first use; the batch is not added to once Python has it.
-    const Columns& columns() const;
+    /// The numeric columns Python reads (NaN where a message is not a CAM, for the CAM's).
+    enum class Column : std::uint8_t { ReceivedAt, SentAt, Size, CamPosition, CamSpeed, CamHeading, kCount };
+    /// Gathered on first read (only the columns a service reads); the batch is not added to once
+    /// Python has it. CamPosition holds x, y per message.
+    const std::vector<double>& column(Column which) const;
 
 private:
     const MessageStore::Chunk& chunk(std::size_t i) const { return *chunks_[refs_[i] >> MessageStore::kRowBits]; }
@@ -52,8 +52,8 @@ private:
     std::vector<std::uint32_t> refs_;  // (slot in chunks_, row)
     std::vector<std::shared_ptr<const MessageStore::Chunk>> chunks_;
     const MessageStore::Chunk* lastChunk_ = nullptr;  // chunks_.back(), kept here: one cache line less per reception
-    mutable Columns columns_;
-    mutable bool columnsMade_ = false;
+    mutable std::array<std::vector<double>, static_cast<std::size_t>(Column::kCount)> columns_;
+    mutable std::uint32_t made_ = 0;  // a bit per column gathered
 };
 
 }  // namespace sbsim::services::python

@@ -189,21 +189,28 @@ void bindMessages(py::module_& m) {
              })
         .def_property_readonly("types", &MessageBatch::types)
         .def_property_readonly("senders", &MessageBatch::senders)
-        .def_property_readonly(
-            "received_at",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().receivedAt, 1); })
-        .def_property_readonly(
-            "sent_at", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().sentAt, 1); })
-        .def_property_readonly(
-            "sizes", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().sizes, 1); })
-        .def_property_readonly(
-            "cam_positions",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camPositions, 2); })
-        .def_property_readonly(
-            "cam_speeds",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camSpeeds, 1); })
+        .def_property_readonly("received_at",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::ReceivedAt), 1);
+                               })
+        .def_property_readonly("sent_at",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::SentAt), 1);
+                               })
+        .def_property_readonly("sizes",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::Size), 1);
+                               })
+        .def_property_readonly("cam_positions",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::CamPosition), 2);
+                               })
+        .def_property_readonly("cam_speeds",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::CamSpeed), 1);
+                               })
         .def_property_readonly("cam_headings", [](const std::shared_ptr<MessageBatch>& b) {
-            return columnView(b, b->columns().camHeadings, 1);
+            return columnView(b, b->column(MessageBatch::Column::CamHeading), 1);
         });
 
     py::class_<traffic::StoryboardSignal, std::shared_ptr<traffic::StoryboardSignal>>(m, "Signal")
