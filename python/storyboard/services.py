@@ -115,7 +115,12 @@ class Signal(Protocol):
 
 
 class Snapshot:
-    """The current step's vehicles: ids and read-only numpy columns, shared by every Python service this step."""
+    """The current step's vehicles: ids and numpy columns.
+
+    A column is a read-only view of the step's buffer (``flags.owndata`` is False), the same array for every read
+    and every Python service in the step; one kept past its step stays valid and keeps that step's values (read the
+    snapshot again for the new step's).
+    """
 
     def __init__(self, host: Any) -> None:
         self._host = host
@@ -129,7 +134,7 @@ class Snapshot:
         return list(self._host.snapshot_ids())
 
     def __len__(self) -> int:
-        return len(self._host.snapshot_ids())
+        return self._host.snapshot_size()  # type: ignore[no-any-return]
 
     def index_of(self, vehicle_id: str) -> int | None:
         return self._host.snapshot_index_of(vehicle_id)  # type: ignore[no-any-return]

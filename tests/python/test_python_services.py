@@ -212,6 +212,36 @@ def test_mistakes_are_refused_before_the_run(
     assert_bad_input(result, f"{services}:2:", needle)
 
 
+#: A package on the story's path: the class lives in mypkg/apps.py, and the package's __init__ names it too.
+PACKAGE_APPS = """
+from storyboard.services import Service
+
+
+class Quiet(Service):
+    def trigger(self) -> None:
+        pass
+"""
+
+
+@pytest.mark.parametrize("module", ["mypkg.apps", "mypkg"])
+def test_a_module_named_services_files_are_inputs_no_output_may_overwrite(
+    loops_cfg: Path, tmp_path: Path, module: str
+) -> None:
+    package = tmp_path / "mypkg"
+    package.mkdir()
+    apps = write_file(package, "apps.py", PACKAGE_APPS)
+    init = write_file(package, "__init__.py", "from mypkg.apps import Quiet\n")
+    services = services_file(tmp_path, f'<service type="python:{module}:Quiet"/>')
+    # The class's module and, named through the package, the package's __init__ too: known only once imported.
+    for target in [apps, init] if module == "mypkg" else [apps]:
+        before = target.read_bytes()
+        result = run(loops_cfg, end=5.0, extra=["--services", str(services), "--events", str(target)], timeout=120)
+        assert_bad_input(result, "--events", str(target), f"python:{module}:Quiet")
+        assert target.read_bytes() == before
+    # Another output is fine.
+    run_ok(loops_cfg, "--services", str(services), "--events", str(tmp_path / "events.jsonl"), end=5.0)
+
+
 COMMANDS = """
 from storyboard.services import Service
 

@@ -68,6 +68,10 @@ void FileLedger::requireInput(const std::string& option, const fs::path& path) {
 }
 
 void FileLedger::addInput(const std::string& source, const fs::path& path) {
+    // Recorded once (a service's file is asked for again once the services are loaded).
+    for (const File& input : inputs_) {
+        if (input.path == path) return;
+    }
     // An input found after an output was claimed (a file one feature reads late) is still one.
     for (const File& output : outputs_) {
         if (!sameFile(path, output.path)) continue;

@@ -81,6 +81,16 @@ services::ServicesConfig loadServicesConfig(const fs::path& path, FileLedger& fi
     return std::move(*config);
 }
 
+void addLoadedServiceFiles(const std::vector<services::ServiceSpec>& specs, const fs::path& path, FileLedger& files) {
+    const services::ServiceRegistry& registry = services::ServiceRegistry::instance();
+    for (const services::ServiceSpec& spec : specs) {
+        for (const fs::path& file : registry.files(spec)) {
+            files.addReferencedInput(
+                fmt::format("--services ({}:{}: service '{}')", path.string(), spec.line, spec.type), file);
+        }
+    }
+}
+
 void checkRadioInput(const CommandLine& options, FileLedger& files) {
     if (!options.radio) return;
     if (!options.services) throw UsageError("--radio: the radio carries the services' messages; give --services");

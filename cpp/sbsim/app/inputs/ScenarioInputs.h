@@ -34,6 +34,11 @@ std::vector<std::unique_ptr<PluginLibrary>> loadPlugins(const std::vector<std::f
                                                         FileLedger& files);
 /// The --services file, with every service type it names known to the registry.
 services::ServicesConfig loadServicesConfig(const std::filesystem::path& path, FileLedger& files);
+/// The files of the --services entries `specs` that are known only once their services are loaded
+/// (a Python service named by module: its module's file), as inputs: called after the services are
+/// made, so an output claimed before that names one is refused all the same.
+void addLoadedServiceFiles(const std::vector<services::ServiceSpec>& specs, const std::filesystem::path& path,
+                           FileLedger& files);
 /// The --radio file as an input; UsageError without --services (the radio carries their messages).
 void checkRadioInput(const CommandLine& options, FileLedger& files);
 

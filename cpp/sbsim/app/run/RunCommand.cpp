@@ -236,12 +236,16 @@ int RunCommand::run(const CommandLine& cl) {
     }
 
     if (servicesConfig) {
+        std::vector<services::ServiceSpec> specs;
+        for (const services::ServiceSpec* spec : servicesConfig->allServices()) specs.push_back(*spec);
         try {
             scenario.addServices(std::move(*servicesConfig), kernel::SimTime::fromSeconds(cl.middlewareInterval),
                                  penetration, messageTrace ? &*messageTrace : nullptr);
         } catch (const services::ServicesConfigError& e) {  // a Python service's file, class or attributes
             throw InputError(fmt::format("--services: {}", e.what()));
         }
+        // Imported now: a Python service named by module has a file.
+        addLoadedServiceFiles(specs, *cl.services, files);
         // Only when asked for: the default 0.1 s stays as it was, whatever the step length.
         if (cl.middlewareIntervalGiven && kernel::SimTime::fromSeconds(cl.middlewareInterval) < sumo.stepLength()) {
             fmt::print(

@@ -77,15 +77,20 @@ void PythonService::initialize() {
     cam_ = method("on_cam");
     denm_ = method("on_denm");
     finish_ = method("finish");
-    if (!batch_.is_none()) pending_ = std::make_shared<MessageBatch>();
+    if (!batch_.is_none()) pending_ = std::make_shared<MessageBatch>(MessageStore::shared());
+    batchOnly_ = pending_ && cam_.is_none() && denm_.is_none();
     if (!initialize_.is_none()) call(initialize_, "initialize");
 }
 
 void PythonService::flushBatch() {
     if (!pending_ || pending_->size() == 0) return;
-    std::shared_ptr<MessageBatch> batch = std::exchange(pending_, std::make_shared<MessageBatch>());
-    pending_->reserve(batch->size());
-    call(batch_, "indicate_batch", py::cast(std::move(batch)));
+    call(batch_, "indicate_batch", py::cast(pending_));
+    // The same memory again unless Python kept the batch (or a column of it).
+    if (pending_.use_count() == 1) {
+        pending_->clear();
+    } else {
+        pending_ = std::make_shared<MessageBatch>(MessageStore::shared());
+    }
 }
 
 void PythonService::trigger() {
@@ -99,6 +104,8 @@ void PythonService::receiveSignal(const traffic::StoryboardSignal& signal) {
 }
 
 void PythonService::indicate(const radio::V2xMessage& message) {
+    // The batched service's path, per reception: nothing else to prepare.
+    if (batchOnly_) return pending_->add(message, simTime());
     last_ = nullptr;
     lastRecord_.reset();
     const bool handlers = !cam_.is_none() || !denm_.is_none();

@@ -14,6 +14,7 @@
 #include "sbsim/kernel/Message.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/den/DenmSender.h"
+#include "sbsim/services/python/MessageBatch.h"
 #include "sbsim/services/python/ReceivedMessage.h"
 
 namespace sbsim::services::python {
@@ -113,6 +114,7 @@ private:
     // The class's own methods (none: the base's, not called).
     pybind11::object initialize_, trigger_, signal_, indicate_, batch_, cam_, denm_, finish_;
     std::shared_ptr<MessageBatch> pending_;        // batch mode: received since the last batch
+    bool batchOnly_ = false;                       // batch mode without on_cam / on_denm
     const radio::V2xMessage* last_ = nullptr;      // the message indicate() took last
     std::shared_ptr<ReceivedMessage> lastRecord_;  // and its copy, for on_cam / on_denm
     std::vector<std::unique_ptr<Timer>> timers_;   // every timer made; idle ones are reused

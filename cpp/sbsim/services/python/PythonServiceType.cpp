@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "sbsim/services/ServiceRegistry.h"
@@ -112,11 +113,27 @@ ServiceTraits traitsOf(const ServiceSpec& spec) {
     return {.sendsDenms = py::getattr(cls, "sends_denms", py::bool_(false)).cast<bool>()};
 }
 
-/// A file-named class's file (a module on the path is found by importing it: not known before).
+/// A file-named class's file; a module-named class's once it is imported (the run's services are
+/// made): its module's file, and the file of the module that defines the class if that is another.
 std::vector<fs::path> filesOf(const ServiceSpec& spec) {
     const auto [where, name] = target(spec);
-    if (!isFile(where)) return {};
-    return {(fs::absolute(fs::path(spec.source)).parent_path() / where).lexically_normal()};
+    if (isFile(where)) return {(fs::absolute(fs::path(spec.source)).parent_path() / where).lexically_normal()};
+    if (!Py_IsInitialized()) return {};
+    const py::module_ core = py::module_::import("_sbsim_services");
+    if (!py::hasattr(core, "_classes")) return {};
+    const py::dict classes = core.attr("_classes");
+    const py::tuple key = py::make_tuple(fs::absolute(spec.source).string(), spec.type);
+    if (!classes.contains(key)) return {};
+    const py::object cls = classes[key];
+    const py::dict modules = py::module_::import("sys").attr("modules");
+    std::vector<fs::path> out;
+    for (const py::object& module : {modules.attr("get")(where), modules.attr("get")(cls.attr("__module__"))}) {
+        const py::object file = py::getattr(module, "__file__", py::none());
+        if (!py::isinstance<py::str>(file)) continue;  // a namespace package, a built-in module
+        const fs::path path = fs::absolute(fs::path(file.cast<std::string>())).lexically_normal();
+        if (std::find(out.begin(), out.end(), path) == out.end()) out.push_back(path);
+    }
+    return out;
 }
 
 // Registered when libsbsim loads, as the bundled services are.

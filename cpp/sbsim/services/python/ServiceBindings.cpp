@@ -8,11 +8,15 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
+#include <unordered_map>
 #include <variant>
 
 #include "sbsim/facilities/StationRegistry.h"
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/services/ServicesConfig.h"
+#include "sbsim/services/python/MessageBatch.h"
 #include "sbsim/services/python/PythonService.h"
 #include "sbsim/services/python/ReceivedMessage.h"
 #include "sbsim/traffic/StoryboardSignal.h"
@@ -52,25 +56,34 @@ py::object orNone(const std::optional<T>& v) {
     return v ? py::cast(*v) : py::none();
 }
 
-/// One column of the step's snapshot, copied once per step for all Python services and handed out
-/// read-only (the snapshot's own arrays move when vehicles come and go).
+/// The step's snapshot columns for all Python services: each column is written once per step into
+/// a buffer of its own, and every read in the step gets the same read-only numpy view of it. A view
+/// holds its buffer, so one kept past its step stays valid and keeps that step's values (the
+/// snapshot's own arrays are rewritten, and move, as vehicles come and go); a buffer no view holds
+/// any more is written again at the next step.
 struct StepArrays {
+    using Buffer = std::shared_ptr<std::vector<double>>;
     const traffic::VehicleSnapshot* snapshot = nullptr;
     SimTime time = SimTime::max();
     std::size_t size = std::numeric_limits<std::size_t>::max();
-    py::dict columns;
+    py::dict columns;                                 // this step's views, by name
+    std::unordered_map<std::string, Buffer> buffers;  // the latest buffer of each column
 
     void renew(const traffic::VehicleSnapshot& s) {
         if (snapshot == &s && time == s.time() && size == static_cast<std::size_t>(s.size())) return;
         snapshot = &s;
         time = s.time();
         size = static_cast<std::size_t>(s.size());
-        columns = py::dict();
+        columns = py::dict();  // the last step's views: freed unless a service kept them
     }
     py::object column(const char* name, const double* data, py::ssize_t rows, py::ssize_t width) {
         if (columns.contains(name)) return columns[name];
-        py::array out = width == 1 ? py::array(py::dtype::of<double>(), {rows}, {}, data)
-                                   : py::array(py::dtype::of<double>(), {rows, width}, {}, data);
+        Buffer& buffer = buffers[name];
+        if (!buffer || buffer.use_count() > 1) buffer = std::make_shared<std::vector<double>>();
+        buffer->assign(data, data + rows * width);
+        const py::capsule base(new Buffer(buffer), [](void* p) { delete static_cast<Buffer*>(p); });
+        py::array out = width == 1 ? py::array(py::dtype::of<double>(), {rows}, {}, buffer->data(), base)
+                                   : py::array(py::dtype::of<double>(), {rows, width}, {}, buffer->data(), base);
         out.attr("setflags")(py::arg("write") = false);
         columns[name] = out;
         return out;
@@ -176,21 +189,28 @@ void bindMessages(py::module_& m) {
              })
         .def_property_readonly("types", &MessageBatch::types)
         .def_property_readonly("senders", &MessageBatch::senders)
-        .def_property_readonly(
-            "received_at",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().receivedAt, 1); })
-        .def_property_readonly(
-            "sent_at", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().sentAt, 1); })
-        .def_property_readonly(
-            "sizes", [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().sizes, 1); })
-        .def_property_readonly(
-            "cam_positions",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camPositions, 2); })
-        .def_property_readonly(
-            "cam_speeds",
-            [](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->columns().camSpeeds, 1); })
+        .def_property_readonly("received_at",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::ReceivedAt), 1);
+                               })
+        .def_property_readonly("sent_at",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::SentAt), 1);
+                               })
+        .def_property_readonly("sizes",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::Size), 1);
+                               })
+        .def_property_readonly("cam_positions",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::CamPosition), 2);
+                               })
+        .def_property_readonly("cam_speeds",
+                               [](const std::shared_ptr<MessageBatch>& b) {
+                                   return columnView(b, b->column(MessageBatch::Column::CamSpeed), 1);
+                               })
         .def_property_readonly("cam_headings", [](const std::shared_ptr<MessageBatch>& b) {
-            return columnView(b, b->columns().camHeadings, 1);
+            return columnView(b, b->column(MessageBatch::Column::CamHeading), 1);
         });
 
     py::class_<traffic::StoryboardSignal, std::shared_ptr<traffic::StoryboardSignal>>(m, "Signal")
@@ -240,6 +260,7 @@ void bindHost(py::module_& m) {
         .def(
             "snapshot_ids", [](const Host& h) -> const std::vector<std::string>& { return h.get().snapshot().ids(); },
             py::return_value_policy::copy)
+        .def("snapshot_size", [](const Host& h) { return h.get().snapshot().size(); })
         .def("snapshot_index_of",
              [](const Host& h, const std::string& id) { return orNone(h.get().snapshot().indexOf(id)); })
         .def("snapshot_time", [](const Host& h) { return h.get().snapshot().time().seconds(); })
