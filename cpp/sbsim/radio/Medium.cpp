@@ -68,7 +68,27 @@ void Medium::handleMessage(kernel::Message& msg) {
     // forward while it receives) sees its reception recorded either way.
     if (certificates_.secured())
         certificates_.heardAll(recipients->stations, message.senderIndex_, message.securityProfile(), simTime());
-    for (Receiver* receiver : recipients->receivers) receiver->receive(message);
+    if (toEveryReceiver(message)) {
+        for (Receiver* receiver : recipients->receivers) receiver->receive(message);
+        return;
+    }
+    // Only the stations that take the type are visited: a bit test each, in the order found.
+    const ReceptionInterest::Takers takers = interest_.takersOf(message.typeName());
+    const std::size_t n = recipients->receivers.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        if (takers.takes(recipients->stations[k])) recipients->receivers[k]->receive(message);
+    }
+}
+
+bool Medium::toEveryReceiver(const V2xMessage& message) {
+    if (!interest_.anyRestricted() || !layersTake_ || message.geonet().geoBroadcast()) return true;
+    const std::type_info* type = &typeid(message);
+    for (const auto& [known, taken] : layersTakeKnown_) {
+        if (known == type) return taken;
+    }
+    const bool taken = layersTake_(message);
+    layersTakeKnown_.emplace_back(type, taken);
+    return taken;
 }
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {
