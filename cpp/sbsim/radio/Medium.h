@@ -127,8 +127,9 @@ protected:
     static void countLink(Counts& counts, double distance, bool received);
     MessageTrace* trace() const { return trace_; }
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
-    /// The receiving side of `stationId`'s module; null for a vehicle that is not a station.
-    Receiver* receivingSide(const std::string& stationId) const;
+    /// The receiving side of `stationId`'s module; null for a vehicle that is not a station. Media
+    /// hand deliverLater() only receivers found here (so it knows whether all said what they take).
+    Receiver* receivingSide(const std::string& stationId);
     /// `station`'s index for the run (interned on first use): a medium looks it up once per station
     /// and step, and hands deliverLater() indices, not names to copy per reception.
     StationIndex stationIndex(std::string_view station) { return certificates_.index(station); }
@@ -152,6 +153,7 @@ private:
     ReceptionInterest interest_;
     std::function<bool(const V2xMessage&)> layersTake_;
     std::vector<std::pair<const std::type_info*, bool>> layersTakeKnown_;  // layersTake_'s answers per type
+    bool everyReceiverRegistered_ = true;  // every receiver found so far called setTypesTaken() first
     /// Whether `message` goes to every receiver whatever they take.
     bool toEveryReceiver(const V2xMessage& message);
 };

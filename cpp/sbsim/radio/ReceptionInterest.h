@@ -24,11 +24,15 @@ public:
     void set(Index station, const std::optional<std::vector<std::string>>& types);
     /// Whether some station is restricted; if none, every receiver takes everything.
     bool anyRestricted() const { return restricted_ > 0; }
+    /// Whether set() was called for `station`.
+    bool registered(Index station) const { return Takers::test(&registeredBits_, station); }
 
     /// Who takes a frame of one type.
     class Takers {
     public:
         bool takes(Index station) const { return !test(restricted_, station) || test(typed_, station); }
+        /// Whether no registered station takes the type: none takes every type, no restricted one takes it.
+        bool noRegisteredTaker() const { return noRegisteredTaker_; }
 
     private:
         friend class ReceptionInterest;
@@ -38,15 +42,22 @@ public:
         }
         const std::vector<std::uint64_t>* restricted_ = nullptr;
         const std::vector<std::uint64_t>* typed_ = nullptr;  // the restricted stations taking the type
+        bool noRegisteredTaker_ = false;
     };
     Takers takersOf(std::string_view type) const;
 
 private:
-    static void assign(std::vector<std::uint64_t>& bits, Index station, bool value);
+    /// Sets `station`'s bit; whether it changed.
+    static bool assign(std::vector<std::uint64_t>& bits, Index station, bool value);
 
-    std::vector<std::uint64_t> restrictedBits_;
+    std::vector<std::uint64_t> restrictedBits_, registeredBits_;
     std::size_t restricted_ = 0;
-    std::map<std::string, std::vector<std::uint64_t>, std::less<>> typed_;
+    std::size_t unrestricted_ = 0;  // registered, taking every type
+    struct Typed {
+        std::vector<std::uint64_t> bits;  // the restricted stations taking it
+        std::size_t count = 0;
+    };
+    std::map<std::string, Typed, std::less<>> typed_;
     std::vector<std::vector<std::string>> typesOf_;  // by station, while restricted
 };
 

@@ -187,5 +187,41 @@ TEST(MediumTypesTaken, AStationIsHandedOnlyItsTypesTheLayersAndGeoBroadcasts) {
     }
 }
 
+TEST(MediumTypesTaken, AReceiverThatNeverSaidWhatItTakesTakesEverything) {
+    // Every registered station is restricted and none takes Pong: a frame of it visits nobody, unless
+    // some receiver never registered ("plain").
+    for (const bool withPlain : {false, true}) {
+        SCOPED_TRACE(withPlain ? "with an unregistered receiver" : "every receiver registered");
+        kernel::Simulation sim;
+        VehicleSnapshot snapshot;
+        std::vector<VehicleSnapshot::Vehicle> vehicles{vehicle("s"), vehicle("ping", 10, 0), vehicle("none", 20, 0)};
+        if (withPlain) vehicles.push_back(vehicle("plain", 30, 0));
+        snapshot.assign(std::move(vehicles), secs(1));
+        std::map<std::string, CountingStation*> stations;
+        for (const char* id : {"s", "ping", "none", "plain"}) stations[id] = &sim.emplaceModule<CountingStation>(id);
+        auto& medium = sim.emplaceModule<radio::DiscMedium>(disc(100), snapshot, [&](const std::string& id) {
+            const auto it = stations.find(id);
+            return it == stations.end() ? nullptr : static_cast<kernel::Module*>(it->second);
+        });
+        auto& script = sim.emplaceModule<Script>();
+        medium.setLayersTake([](const radio::V2xMessage&) { return false; });
+        medium.setTypesTaken("s", std::vector<std::string>{});
+        medium.setTypesTaken("ping", std::vector<std::string>{"Ping"});
+        medium.setTypesTaken("none", std::vector<std::string>{});
+        script.at(secs(1), [&] {
+            medium.broadcast("s", std::make_unique<TestMessage>("Pong", 0));
+            medium.broadcast("s", std::make_unique<TestMessage>("Ping", 0));
+            medium.broadcast("ping", std::make_unique<TestMessage>("Pong", 1));
+        });
+        sim.run(secs(2));
+        using V = std::vector<std::string>;
+        EXPECT_EQ(stations["ping"]->got, V{"Ping"});
+        EXPECT_TRUE(stations["none"]->got.empty());
+        EXPECT_TRUE(stations["s"]->got.empty());
+        EXPECT_EQ(stations["plain"]->got, withPlain ? (V{"Pong", "Ping", "Pong"}) : V{});
+        EXPECT_EQ(medium.counts().at("Pong").delivered, withPlain ? 6u : 4u);
+    }
+}
+
 }  // namespace
 }  // namespace sbsim::services::test
