@@ -44,6 +44,8 @@ public:
     /// The index of `station` here, for the run.
     Index index(std::string_view station) { return ids_.intern(station); }
     const std::string& name(Index station) const { return ids_.name(station); }
+    /// The index of `station`, if it was interned.
+    std::optional<Index> find(std::string_view station) const { return ids_.find(station); }
 
     /// How `station`'s message of `profile`, signed `now`, names its signer; records a certificate.
     SignerIdentifier sign(Index station, SecurityProfile profile, kernel::SimTime now);

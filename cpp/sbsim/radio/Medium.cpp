@@ -23,12 +23,17 @@ struct FrameDelivery : kernel::Message {
 };
 }  // namespace
 
-Receiver* Medium::receivingSide(const std::string& stationId) const {
+Receiver* Medium::receivingSide(const std::string& stationId) {
     kernel::Module* module = receiverOf(stationId);
     if (module == nullptr) return nullptr;
     // The station's module is asked for its receiving side, not switched on by type.
     auto* receiver = dynamic_cast<Receiver*>(module);
     if (receiver == nullptr) throw std::logic_error("station '" + stationId + "' cannot receive V2X messages");
+    if (everyReceiverRegistered_) {
+        // A receiver that never said what it takes takes everything: frames are then walked.
+        const std::optional<StationIndex> index = certificates_.find(stationId);
+        if (!index || !interest_.registered(*index)) everyReceiverRegistered_ = false;
+    }
     return receiver;
 }
 
@@ -68,7 +73,29 @@ void Medium::handleMessage(kernel::Message& msg) {
     // forward while it receives) sees its reception recorded either way.
     if (certificates_.secured())
         certificates_.heardAll(recipients->stations, message.senderIndex_, message.securityProfile(), simTime());
-    for (Receiver* receiver : recipients->receivers) receiver->receive(message);
+    if (toEveryReceiver(message)) {
+        for (Receiver* receiver : recipients->receivers) receiver->receive(message);
+        return;
+    }
+    // Only the stations that take the type are visited: a bit test each, in the order found;
+    // none when no station takes it (every receiver registered its types).
+    const ReceptionInterest::Takers takers = interest_.takersOf(message.typeName());
+    if (everyReceiverRegistered_ && takers.noRegisteredTaker()) return;
+    const std::size_t n = recipients->receivers.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        if (takers.takes(recipients->stations[k])) recipients->receivers[k]->receive(message);
+    }
+}
+
+bool Medium::toEveryReceiver(const V2xMessage& message) {
+    if (!interest_.anyRestricted() || !layersTake_ || message.geonet().geoBroadcast()) return true;
+    const std::type_info* type = &typeid(message);
+    for (const auto& [known, taken] : layersTakeKnown_) {
+        if (known == type) return taken;
+    }
+    const bool taken = layersTake_(message);
+    layersTakeKnown_.emplace_back(type, taken);
+    return taken;
 }
 
 void Medium::stamp(V2xMessage& message, const std::string& sender) {

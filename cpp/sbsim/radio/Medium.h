@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <typeinfo>
+#include <utility>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
@@ -14,6 +16,7 @@
 #include "sbsim/radio/CertificatePolicy.h"
 #include "sbsim/radio/FixedStations.h"
 #include "sbsim/radio/MessageTrace.h"
+#include "sbsim/radio/ReceptionInterest.h"
 #include "sbsim/radio/V2xMessage.h"
 
 namespace sbsim::radio {
@@ -97,6 +100,22 @@ public:
     /// Whether messages are signed (TS 103 097 envelope in their frame size); on by default.
     void setSecured(bool secured) { certificates_.setSecured(secured); }
 
+    /// Which messages `station`'s receiving side is handed: with `types`, only those of these types
+    /// (V2xMessage::typeName()), geo-broadcasts (its router forwards them) and the types every
+    /// station's own layers take (setLayersTake); without, every message (the default). A reception
+    /// it is not handed is still one: counted, traced, its certificate bookkeeping done; only the
+    /// station is not visited, as Artery drops a packet for a BTP port no service listens on.
+    void setTypesTaken(const std::string& station, const std::optional<std::vector<std::string>>& types) {
+        interest_.set(stationIndex(station), types);
+    }
+    /// Whether every station's own layers take `message`'s type, whatever its services take (the
+    /// facilities keep CAMs and DENMs); asked once per message type. Until it is set, every station
+    /// is handed every message (setTypesTaken() restricts nothing).
+    void setLayersTake(std::function<bool(const V2xMessage&)> layersTake) {
+        layersTake_ = std::move(layersTake);
+        layersTakeKnown_.clear();
+    }
+
 protected:
     /// Stamps `message` as sent by `sender` now, with the sender's next sequence number and its
     /// frame's size (signed now), and counts it.
@@ -108,8 +127,9 @@ protected:
     static void countLink(Counts& counts, double distance, bool received);
     MessageTrace* trace() const { return trace_; }
     kernel::Module* receiverOf(const std::string& stationId) const { return directory_(stationId); }
-    /// The receiving side of `stationId`'s module; null for a vehicle that is not a station.
-    Receiver* receivingSide(const std::string& stationId) const;
+    /// The receiving side of `stationId`'s module; null for a vehicle that is not a station. Media
+    /// hand deliverLater() only receivers found here (so it knows whether all said what they take).
+    Receiver* receivingSide(const std::string& stationId);
     /// `station`'s index for the run (interned on first use): a medium looks it up once per station
     /// and step, and hands deliverLater() indices, not names to copy per reception.
     StationIndex stationIndex(std::string_view station) { return certificates_.index(station); }
@@ -130,6 +150,12 @@ private:
     MessageTrace* trace_ = nullptr;
     FixedStations fixed_;
     CertificatePolicy certificates_;
+    ReceptionInterest interest_;
+    std::function<bool(const V2xMessage&)> layersTake_;
+    std::vector<std::pair<const std::type_info*, bool>> layersTakeKnown_;  // layersTake_'s answers per type
+    bool everyReceiverRegistered_ = true;  // every receiver found so far called setTypesTaken() first
+    /// Whether `message` goes to every receiver whatever they take.
+    bool toEveryReceiver(const V2xMessage& message);
 };
 
 }  // namespace sbsim::radio

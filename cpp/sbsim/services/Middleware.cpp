@@ -7,6 +7,7 @@
 #include "sbsim/facilities/ItsMessage.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/CounterRandom.h"
+#include "sbsim/services/IndicatedTypes.h"
 #include "sbsim/services/ServiceManager.h"
 
 namespace sbsim::services {
@@ -26,6 +27,23 @@ void Middleware::host(Service& service, const ServiceSpec& spec) {
     services_.push_back(&service);
     handlers_.push_back(dynamic_cast<facilities::ItsMessageHandler*>(&service));
     vehicles_.push_back(std::make_unique<ServiceVehicle>(vehicle_, manager_.registry()));
+    const auto* declared = dynamic_cast<const IndicatedTypes*>(&service);
+    taken_.push_back(declared ? std::optional(declared->indicatedTypes()) : std::nullopt);
+    if (manager_.hasMedium()) manager_.medium().setTypesTaken(vehicleId_, indicatedTypes());
+}
+
+std::optional<std::vector<std::string>> Middleware::indicatedTypes() const {
+    std::vector<std::string> types;
+    for (const auto& taken : taken_) {
+        if (!taken) return std::nullopt;  // a service takes every type
+        types.insert(types.end(), taken->begin(), taken->end());
+    }
+    return types;
+}
+
+bool Middleware::takes(std::size_t service, std::string_view type) const {
+    const auto& taken = taken_[service];
+    return !taken || std::find(taken->begin(), taken->end(), type) != taken->end();
 }
 
 ServiceVehicle& Middleware::vehicleOf(const Service& service) {
@@ -139,11 +157,12 @@ void Middleware::receive(const radio::V2xMessage& message) {
         if (!its->reaches(position())) return;
         its->store(manager_.stations(), station_, simTime());
     }
-    for (Service* s : services_) {
+    for (std::size_t k = 0; k < services_.size(); ++k) {
+        if (!takes(k, message.typeName())) continue;
         try {
-            s->indicate(message);
+            services_[k]->indicate(message);
         } catch (...) {
-            s->failed();
+            services_[k]->failed();
         }
     }
     if (its != nullptr) {

@@ -88,6 +88,10 @@ private:
     /// comparing type names (an eighth of the disc model's time at 23 M receptions): the answer
     /// depends only on the message's dynamic type, so it is remembered per type.
     const facilities::ItsMessage* itsPart(const radio::V2xMessage& message);
+    /// The message types its services' indicate() take (IndicatedTypes), or none if one takes every type.
+    std::optional<std::vector<std::string>> indicatedTypes() const;
+    /// Whether service `service` (by place) takes messages of `type` at indicate().
+    bool takes(std::size_t service, std::string_view type) const;
     /// The stations of its LDM, alive now, at their last CAM's position.
     std::vector<radio::geonet::Neighbour> neighbours() const;
     /// The forwarding timer at the router's next timeout (or off).
@@ -99,10 +103,11 @@ private:
     mutable traffic::VehicleSnapshot::Index selfHint_ = 0;        // where the vehicle was last found
     std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle_;  // the storyboard's as well
     std::vector<Service*> services_;
-    std::vector<std::unique_ptr<ServiceVehicle>> vehicles_;  // per service, as services_
-    std::vector<facilities::ItsMessageHandler*> handlers_;   // per service, as services_; null: none
-    const std::type_info* itsType_ = nullptr;                // the last type found to be ITS
-    const std::type_info* otherType_ = nullptr;              // the last type found not to be
+    std::vector<std::unique_ptr<ServiceVehicle>> vehicles_;       // per service, as services_
+    std::vector<facilities::ItsMessageHandler*> handlers_;        // per service, as services_; null: none
+    std::vector<std::optional<std::vector<std::string>>> taken_;  // per service: the types indicate() takes; none: all
+    const std::type_info* itsType_ = nullptr;                     // the last type found to be ITS
+    const std::type_info* otherType_ = nullptr;                   // the last type found not to be
     kernel::Message triggerTimer_{"middleware trigger"};
     std::optional<Eigen::Vector2d> fixedPosition_;
     radio::geonet::Router router_;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "sbsim/facilities/ItsMessage.h"
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/services/NeedsVehicle.h"
 #include "sbsim/services/ServiceRegistry.h"
@@ -100,6 +101,13 @@ void ServiceManager::listenToAllSignals(Service& service) {
 void ServiceManager::attach(kernel::Module& sumo) {
     sumo.subscribe(traffic::SumoBridge::departedSignal, *this);
     sumo.subscribe(traffic::SumoBridge::arrivedSignal, *this);
+}
+
+void ServiceManager::setMedium(radio::Medium& medium) {
+    medium_ = &medium;
+    medium.setLayersTake([](const radio::V2xMessage& message) {
+        return dynamic_cast<const facilities::ItsMessage*>(&message) != nullptr;
+    });
 }
 
 radio::Medium& ServiceManager::medium() const {

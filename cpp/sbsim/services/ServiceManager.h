@@ -44,7 +44,10 @@ public:
     /// The snapshot values services may read: any (tell the SUMO bridge).
     static traffic::SnapshotColumns columns() { return traffic::SnapshotColumns::all(); }
     traffic::VehicleRegistry& registry() const { return *registry_; }
-    void setMedium(radio::Medium& medium) { medium_ = &medium; }
+    /// The medium the stations send on; every station's facilities take its ITS messages (CAMs,
+    /// DENMs) whatever its services take (Medium::setLayersTake).
+    void setMedium(radio::Medium& medium);
+    bool hasMedium() const { return medium_ != nullptr; }
     /// How the stations' GeoNetworking routers forward geo-broadcasts (default: CBF and greedy
     /// forwarding, hop limit 10), for the middlewares made from now on.
     void setGeoNetworking(const radio::geonet::RouterSettings& settings) { geonet_ = settings; }

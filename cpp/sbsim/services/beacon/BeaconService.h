@@ -2,6 +2,7 @@
 
 #include "sbsim/kernel/Message.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/services/IndicatedTypes.h"
 #include "sbsim/services/Service.h"
 
 namespace sbsim::services {
@@ -12,9 +13,11 @@ namespace sbsim::services {
 /// vehicles departing together do not send in lockstep.
 ///
 ///     <service type="Beacon" interval="0.1" bytes="190"/>
-class BeaconService : public Service {
+class BeaconService : public Service, public IndicatedTypes {
 public:
     void initialize() override;
+    /// None: it only sends (others' beacons need not visit the station).
+    std::vector<std::string> indicatedTypes() const override { return {}; }
     void handleMessage(kernel::Message& msg) override;
 
 private:

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "sbsim/facilities/Cam.h"
+#include "sbsim/services/IndicatedTypes.h"
 #include "sbsim/services/NeedsVehicle.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ca/CamGenerationRules.h"
@@ -20,9 +21,11 @@ namespace sbsim::services {
 /// Parameters (Artery's names; times in seconds): minInterval (0.1), maxInterval (1),
 /// headingDelta (4°), positionDelta (4 m), speedDelta (0.5 m/s), fixedRate (false: the rules;
 /// true: every T_GenCamDcc), withDccRestriction (true).
-class CaService : public Service, public NeedsVehicle {
+class CaService : public Service, public NeedsVehicle, public IndicatedTypes {
 public:
     static constexpr kernel::SimTime kLowFrequencyInterval = kernel::SimTime::fromMilliseconds(500);
+    /// None: it only sends (the station's LDM takes the CAMs it hears).
+    std::vector<std::string> indicatedTypes() const override { return {}; }
 
     void initialize() override;
     void trigger() override;
