@@ -11,7 +11,9 @@ Targets for the six-story set: at most 1.10x sumo at 5,000 vehicles, 1.12x at 20
 
 "own" is sbsim's own time, its wall time less its time in SUMO's steps, as a share of plain `sumo`'s
 wall time (medians). --from-state T runs --end seconds from a state saved at T s (once, by plain
-`sumo`); --step-length sets SUMO's step.
+`sumo`); --step-length sets SUMO's step. --baseline also runs sbsim without a story: its own time
+is what a run pays before any story (loading libsumo's libraries, SUMO loading the network and the
+state, checking the inputs), and "stories' own" is a set's own time less that one's.
 """
 
 from __future__ import annotations
@@ -46,6 +48,7 @@ def main() -> None:
     )
     parser.add_argument("--step-length", type=float, help="SUMO's step in seconds (default: the preset's)")
     parser.add_argument("--from-state", type=float, metavar="T", help="run --end seconds from a state saved at T s")
+    parser.add_argument("--baseline", action="store_true", help="also run sbsim without a story (its own time)")
     args = parser.parse_args()
 
     rows = []
@@ -60,6 +63,8 @@ def main() -> None:
             for name in args.sets
         }
         commands = {"sumo": window.sumo_command(), **sets}
+        if args.baseline:
+            commands["sbsim, no story"] = window.sbsim_command(sbsim())
         first = next(iter(sets.values()))  # the extra builds and allocators run the first set
         for allocator in args.preload:
             commands[f"{args.sets[0]} + {allocator}"] = preloaded(allocator, first)
@@ -68,13 +73,21 @@ def main() -> None:
             commands[name if name not in commands else f"{args.sets[0]} {exe}"] = [exe, *first[1:]]
         results = alternate(commands, args.runs)
         base = median([r.wall for r in results["sumo"]])
+        owns = {
+            name: median([r.wall - summary_value(r.stdout, "time in sumo") for r in results[name]])
+            for name in list(commands)[1:]
+        }
         for name in list(commands)[1:]:
             paired, low, high = paired_ratio(results, name)
             rss = max(r.rss_mb for r in results[name])
-            own = median([r.wall - summary_value(r.stdout, "time in sumo") for r in results[name]])
+            own = owns[name]
+            stories = ""
+            if "sbsim, no story" in owns and name != "sbsim, no story":
+                extra = own - owns["sbsim, no story"]
+                stories = f"  stories' own {extra:.2f} s = {100 * extra / base:.1f} %"
             extras.append(
                 f"{preset:<10} {name:<28} {paired:.3f}x ({low:.3f}-{high:.3f})  own {own:.2f} s = "
-                f"{100 * own / base:.1f} % of sumo  peak RSS {rss:.0f} MB"
+                f"{100 * own / base:.1f} % of sumo{stories}  peak RSS {rss:.0f} MB"
             )
         extras.append(f"{preset:<10} {'sumo':<28} peak RSS {max(r.rss_mb for r in results['sumo']):.0f} MB")
         for name in sets:

@@ -138,7 +138,7 @@ void VehiclePass::run(const EvaluationContext& ctx, kernel::ParallelFor& paralle
     }
 
     const auto& ids = snapshot.ids();
-    matchStates(ids);
+    matchStates(snapshot);
     const std::size_t stride = stories_.size();
     for (VehicleIndex i = 0; i < snapshot.size(); ++i) {
         const std::string& id = ids[i];
@@ -169,15 +169,21 @@ void VehiclePass::run(const EvaluationContext& ctx, kernel::ParallelFor& paralle
         if (changed) row.settling = row.state->vehicle->stack.settling();
         if (row.settling) row.state->vehicle->stack.settle(snapshot.speeds()[i], snapshot.time());
     }
-    stateIds_ = ids;
+    if (stateIdsVersion_ != snapshot.idsVersion()) {
+        stateIds_ = ids;
+        stateIdsVersion_ = snapshot.idsVersion();
+    }
 }
 
-void VehiclePass::matchStates(const std::vector<std::string>& ids) {
+void VehiclePass::matchStates(const traffic::VehicleSnapshot& snapshot) {
+    const std::vector<std::string>& ids = snapshot.ids();
+    const std::size_t stride = stories_.size();
+    const bool sameStride = stride == flagStride_;
+    // The same vehicles as in the last pass (no vehicle came or went): every row stays where it is.
+    if (sameStride && snapshot.idsVersion() == stateIdsVersion_ && rows_.size() == ids.size()) return;
     // Both id lists ascend, so one merge pass carries each vehicle's row over from the last step:
     // a string comparison per vehicle instead of a hash lookup, and the pass then reads dense
     // per-index flags instead of chasing each vehicle's state.
-    const std::size_t stride = stories_.size();
-    const bool sameStride = stride == flagStride_;
     rowScratch_.assign(ids.size(), Row{});
     flagScratch_.assign(ids.size() * stride, 0);
     std::size_t matched = 0;
@@ -215,7 +221,11 @@ void VehiclePass::copyFlags(const VehicleState& state, std::uint8_t* row) const 
 
 void VehiclePass::forgetRow(const std::string& id) {
     const auto it = std::lower_bound(stateIds_.begin(), stateIds_.end(), id);
-    if (it != stateIds_.end() && *it == id) rows_[static_cast<std::size_t>(it - stateIds_.begin())] = Row{};
+    if (it == stateIds_.end() || *it != id) return;
+    const auto k = static_cast<std::size_t>(it - stateIds_.begin());
+    rows_[k] = Row{};
+    // Its flags too: a row kept in place (matchStates' same vehicles) is read as it is.
+    std::fill_n(activeFlags_.begin() + static_cast<std::ptrdiff_t>(k * flagStride_), flagStride_, 0);
 }
 
 void VehiclePass::activate(VehicleState& state, std::size_t s, const std::string& id, const ConditionResult& result,

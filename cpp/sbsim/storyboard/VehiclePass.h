@@ -93,7 +93,7 @@ private:
     class Scope;
 
     VehicleState& stateFor(const std::string& id);
-    void matchStates(const std::vector<std::string>& ids);
+    void matchStates(const traffic::VehicleSnapshot& snapshot);
     void forgetRow(const std::string& id);
     void copyFlags(const VehicleState& state, std::uint8_t* row) const;
     void activate(VehicleState& state, std::size_t story, const std::string& id, const ConditionResult& result,
@@ -113,6 +113,7 @@ private:
     std::unordered_map<std::string, VehicleState> vehicles_;  // vehicles with state (node-stable)
     // The last pass's vehicles by snapshot index (ids ascending), carried over by matchStates().
     std::vector<std::string> stateIds_;
+    std::uint64_t stateIdsVersion_ = 0;  // VehicleSnapshot::idsVersion() of stateIds_
     std::vector<Row> rows_;
     std::vector<std::uint8_t> activeFlags_;  // rows_.size() × flagStride_: story active for the vehicle
     std::size_t flagStride_ = 0;

@@ -84,7 +84,10 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
         order_.reserve(running_.size());
         for (auto& [id, record] : running_) order_.emplace_back(&id, &record);
         orderStale_ = false;
+        idsVersion_ = VehicleSnapshot::nextGeneration();
     }
+    // `out` holds these ids already unless a vehicle came or went (or it is another snapshot).
+    const bool copyIds = out.idsVersion_ != idsVersion_;
     out.time_ = time;
     out.columns_ = columns_;
     resize(out, order_.size());
@@ -110,7 +113,7 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
             const std::string& id = *order_[k].first;
             Record& r = *order_[k].second;
             const auto i = static_cast<Eigen::Index>(k);
-            if (out.ids_[k] != id) out.ids_[k] = id;  // most ids keep their slot: no reallocation
+            if (copyIds && out.ids_[k] != id) out.ids_[k] = id;  // most ids keep their slot: no reallocation
             if (position) {
                 const libsumo::TraCIPosition p = libsumo::Vehicle::getPosition(id);
                 out.position_(0, i) = p.x;
@@ -153,6 +156,7 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
         out.lane_[k] = r.laneIndex;
         out.road_[k] = r.road;
     }
+    out.idsVersion_ = idsVersion_;
     // Interned strings only ever grow: append the new ones.
     out.strings_.insert(out.strings_.end(), strings_.begin() + static_cast<std::ptrdiff_t>(out.strings_.size()),
                         strings_.end());

@@ -68,6 +68,7 @@ private:
     std::map<std::string, Record> running_;                      // ascending byte order
     std::vector<std::pair<const std::string*, Record*>> order_;  // running_ as an indexable list
     bool orderStale_ = true;
+    std::uint64_t idsVersion_ = 0;  // VehicleSnapshot::idsVersion() of order_'s ids (0: none yet)
     std::unordered_map<std::string, std::int32_t> internIndex_;
     std::vector<std::string> strings_;
     std::vector<std::int32_t> laneRoad_;        // by interned lane index; -1 unknown

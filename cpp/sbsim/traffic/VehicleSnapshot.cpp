@@ -30,6 +30,10 @@ void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time
             throw std::invalid_argument("duplicate vehicle id '" + vehicles[i].id + "'");
     }
     const auto n = static_cast<Eigen::Index>(vehicles.size());
+    // The same vehicles as before keep the id list's version.
+    const bool sameIds = std::equal(vehicles.begin(), vehicles.end(), ids_.begin(), ids_.end(),
+                                    [](const Vehicle& v, const std::string& id) { return v.id == id; });
+    if (!sameIds) idsVersion_ = nextGeneration();
     time_ = time;
     columns_ = SnapshotColumns::all();
     ids_.clear();
@@ -78,6 +82,7 @@ void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vecto
         strings_ = from.strings_;
         generation_ = from.generation_;
     }
+    bool sameIds = ids_.size() == keep.size();
     ids_.resize(keep.size());
     road_.resize(keep.size());
     lane_.resize(keep.size());
@@ -87,9 +92,13 @@ void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vecto
     for (Eigen::Index k = 0; k < n; ++k) {
         const Index i = keep[static_cast<std::size_t>(k)];
         if (i < 0 || i >= from.size() || (k > 0 && i <= keep[static_cast<std::size_t>(k - 1)])) {
+            idsVersion_ = nextGeneration();  // the ids may be half overwritten
             throw std::invalid_argument("assignSubset: indices must be ascending and within the snapshot");
         }
-        ids_[k] = from.ids_[i];
+        if (ids_[k] != from.ids_[i]) {
+            ids_[k] = from.ids_[i];
+            sameIds = false;
+        }
         road_[k] = from.road_[i];
         lane_[k] = from.lane_[i];
         type_[k] = from.type_[i];
@@ -101,6 +110,7 @@ void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vecto
         width_[k] = from.width_[i];
         maxSpeed_[k] = from.maxSpeed_[i];
     }
+    if (!sameIds) idsVersion_ = nextGeneration();
 }
 
 }  // namespace sbsim::traffic

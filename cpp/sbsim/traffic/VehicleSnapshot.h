@@ -33,6 +33,11 @@ public:
     const std::vector<std::string>& ids() const { return ids_; }
     /// Index of `id` in this step's arrays (binary search over the sorted ids), if running.
     std::optional<Index> indexOf(std::string_view id) const;
+    /// Two snapshots (or one snapshot at two times) with the same idsVersion() have equal ids():
+    /// a step in which no vehicle came or went keeps it, so work that carries per-vehicle rows
+    /// from one step to the next (VehiclePass, TtcCondition's poses) may skip matching the ids.
+    /// Unique process-wide; a different id list always gets a new one.
+    std::uint64_t idsVersion() const { return idsVersion_; }
 
     const Eigen::Matrix2Xd& positions() const { return position_; }         ///< SUMO network x, y (front bumper)
     const Eigen::VectorXd& speeds() const { return speed_; }                ///< m/s
@@ -82,6 +87,7 @@ private:
     std::vector<std::int32_t> road_, lane_, type_;  // indices into strings_
     std::vector<std::string> strings_;              // interned road, lane and type ids
     std::uint64_t generation_ = nextGeneration();   // unique per string table, process-wide
+    std::uint64_t idsVersion_ = nextGeneration();   // unique per id list, process-wide
 
     static std::uint64_t nextGeneration();
 };

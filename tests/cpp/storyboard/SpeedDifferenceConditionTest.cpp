@@ -105,6 +105,34 @@ TEST(SpeedDifferenceCondition, MatchesBruteForceOnRandomTraffic) {
     EXPECT_GT(nonEmpty, 1000u);
 }
 
+TEST(SpeedDifferenceCondition, WithADistanceTheStepsExtremeSpeedsSpareTheSearch) {
+    // prepare() keeps the step's lowest and highest speed (a NaN skipped): an ego that no speed
+    // of the step can differ from by more than delta is answered without a neighbour search.
+    // They must be this step's own: here the slowest and the fastest are the first and the last.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    Scene scene({car("a", 0, 0, 1), car("m", 5, 0, nan), car("n", 8, 0, 6), car("z", 10, 0, 11)},
+                SimTime::fromSeconds(1));
+    SpeedDifferenceConditionSlower slower(4.5, 50);
+    SpeedDifferenceConditionFaster faster(4.5, 50);
+    slower.prepare(scene.ctx());
+    faster.prepare(scene.ctx());
+    const auto others = [&](Condition& c, const char* id) {
+        return scene.others(c.test(scene.ctx(), scene.index(id)));
+    };
+    EXPECT_EQ(others(slower, "a"), (Ids{"n", "z"}));
+    EXPECT_EQ(others(slower, "n"), (Ids{"z"}));
+    EXPECT_EQ(others(slower, "z"), (Ids{}));
+    EXPECT_EQ(others(slower, "m"), (Ids{}));
+    EXPECT_EQ(others(faster, "z"), (Ids{"a", "n"}));
+    EXPECT_EQ(others(faster, "n"), (Ids{"a"}));
+    EXPECT_EQ(others(faster, "a"), (Ids{}));
+    // A new step not prepared for: the last step's extremes (1 and 11 m/s) no longer hold, and
+    // n, 4 m/s below the old highest, now has one 13 m/s faster.
+    scene.set({car("a", 0, 0, 1), car("n", 8, 0, 7), car("z", 10, 0, 20)}, SimTime::fromSeconds(2));
+    EXPECT_EQ(others(slower, "n"), (Ids{"z"}));
+    EXPECT_EQ(others(faster, "n"), (Ids{"a"}));
+}
+
 TEST(SpeedDifferenceCondition, FollowsANewSnapshotEvenWithoutPrepare) {
     SpeedDifferenceConditionFaster c(1);
     Scene scene({car("a", 0, 0, 10), car("b", 5, 0, 5)}, SimTime::fromSeconds(1));

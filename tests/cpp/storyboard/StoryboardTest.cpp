@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <sstream>
@@ -277,6 +278,51 @@ TEST_F(StoryboardTest, AVehicleMissingFromOneSnapshotKeepsItsStories) {
         lines(),
         (std::vector<std::string>{R"({"t":4,"type":"deactivate","story":"fast","vehicle":"a","reason":"condition"})"}));
     EXPECT_EQ(commands.setSpeed.at("a"), (std::vector<double>{0.0, -1.0}));
+}
+
+TEST_F(StoryboardTest, RowsFollowTheirVehiclesWhetherOrNotOthersCameOrWent) {
+    // While the same vehicles run (the snapshot's idsVersion() unchanged) each vehicle's row stays
+    // at its index; once one came or went the rows are matched by id. A row read at the wrong
+    // index would (de)activate the wrong vehicle.
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0),
+                                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "fast"));
+    step(1, {car("a", 1), car("b", 1), car("c", 10)});
+    const std::uint64_t version = snapshot.idsVersion();
+    step(2, {car("a", 1), car("b", 10), car("c", 10)});
+    ASSERT_EQ(snapshot.idsVersion(), version) << "the same vehicles: rows kept in place";
+    step(3, {car("a", 1), car("c", 10)}, {"b"});  // b left: c moves from index 2 to 1
+    ASSERT_NE(snapshot.idsVersion(), version);
+    step(4, {car("a", 1), car("c", 10)});
+    step(5, {car("a", 10), car("c", 1)});
+    step(6, {car("0", 1), car("a", 10), car("c", 1)});         // one came before them: both move up
+    step(7, {car("a", 10), car("c", 1), car("e", 1)}, {"0"});  // as many, all moved down: a at 0
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t":1,"type":"activate","story":"fast","vehicle":"c"})",
+                           R"({"t":2,"type":"activate","story":"fast","vehicle":"b"})",
+                           R"({"t":3,"type":"deactivate","story":"fast","vehicle":"b","reason":"vehicle_left"})",
+                           R"({"t":5,"type":"activate","story":"fast","vehicle":"a"})",
+                           R"({"t":5,"type":"deactivate","story":"fast","vehicle":"c","reason":"condition"})",
+                       }));
+    EXPECT_TRUE(board.isActive("a", *board.stories()[0]));
+    EXPECT_FALSE(board.isActive("c", *board.stories()[0]));
+}
+
+TEST_F(StoryboardTest, AVehicleReportedLeftWhileStillInTheSnapshotStartsAfresh) {
+    // Its state is dropped (vehicle_left) although the same vehicles run on: its row, kept in
+    // place, must not still say "active" (the pass would then deactivate a state it no longer has).
+    board.registerStory(std::make_shared<Story>(std::make_shared<SpeedConditionGreater>(5.0),
+                                                std::vector<EffectPtr>{std::make_shared<StopEffect>()}, "fast"));
+    step(1, {car("a", 10), car("b", 10)});
+    step(2, {car("a", 10), car("b", 10)}, {"a"});
+    step(3, {car("a", 1), car("b", 1)});
+    EXPECT_EQ(lines(), (std::vector<std::string>{
+                           R"({"t":1,"type":"activate","story":"fast","vehicle":"a"})",
+                           R"({"t":1,"type":"activate","story":"fast","vehicle":"b"})",
+                           R"({"t":2,"type":"deactivate","story":"fast","vehicle":"a","reason":"vehicle_left"})",
+                           R"({"t":2,"type":"activate","story":"fast","vehicle":"a"})",
+                           R"({"t":3,"type":"deactivate","story":"fast","vehicle":"a","reason":"condition"})",
+                           R"({"t":3,"type":"deactivate","story":"fast","vehicle":"b","reason":"condition"})",
+                       }));
 }
 
 TEST_F(StoryboardTest, AStoryRegisteredBetweenPassesJoinsTheNextOne) {

@@ -380,6 +380,46 @@ TEST(TtcCondition, KeepsPosesOnlyOfRunningVehicles) {
     EXPECT_EQ(c.heldVehicles(), 0u);
 }
 
+TEST(TtcCondition, PosesFollowTheirVehiclesWhetherOrNotOthersCameOrWent) {
+    // While the same vehicles run (the snapshot's idsVersion() unchanged) each vehicle's previous
+    // pose is at its own index; once one came or went (as many as before, or not) the poses are
+    // matched by id. A pose taken from another vehicle would bend a straight driver, or
+    // straighten the one on the ring.
+    constexpr double kR = 40;
+    const auto east = [](std::string id, double t) { return car(std::move(id), 10 * t, 100, 10, 90); };
+    const auto north = [](std::string id, double t) { return car(std::move(id), 200, 10 * t, 10, 0); };
+    const auto ring = [&](std::string id, double t) { return ringCar(std::move(id), kR, 10 * t / kR, 10); };
+    TtcCondition c(2, 50);
+    Scene scene({ring("a", 0), east("b", 0), north("c", 0)}, SimTime::zero());
+    c.prepare(scene.ctx());
+    const auto expectBends = [&](const char* when, std::vector<std::string> straight, std::vector<std::string> bent) {
+        for (const std::string& id : straight) EXPECT_EQ(c.curvature(scene.index(id)), 0) << id << " " << when;
+        for (const std::string& id : bent) EXPECT_GT(c.curvature(scene.index(id)), 0.99 / kR) << id << " " << when;
+    };
+    scene.set({ring("a", 1), east("b", 1), north("c", 1)}, SimTime::fromSeconds(1));
+    const std::uint64_t version = scene.snapshot().idsVersion();
+    c.prepare(scene.ctx());
+    expectBends("with the same vehicles", {"b", "c"}, {"a"});
+    scene.set({ring("a", 2), east("b", 2), north("c", 2)}, SimTime::fromSeconds(2));
+    ASSERT_EQ(scene.snapshot().idsVersion(), version);
+    c.prepare(scene.ctx());
+    expectBends("with the same vehicles again", {"b", "c"}, {"a"});
+    // c left and "0" came: as many vehicles, each of a, b one index further.
+    c.forget("c");
+    scene.set({east("0", 3), ring("a", 3), east("b", 3)}, SimTime::fromSeconds(3));
+    ASSERT_NE(scene.snapshot().idsVersion(), version);
+    c.prepare(scene.ctx());
+    expectBends("after one came and one went", {"0", "b"}, {"a"});
+    scene.set({east("0", 4), ring("a", 4), east("b", 4), north("d", 4)}, SimTime::fromSeconds(4));
+    c.prepare(scene.ctx());
+    expectBends("after one more came", {"0", "b", "d"}, {"a"});
+    // "0" missing from this snapshot (not forgotten) and x new: as many as before, a and b one
+    // index lower.
+    scene.set({ring("a", 5), east("b", 5), north("d", 5), east("x", 5)}, SimTime::fromSeconds(5));
+    c.prepare(scene.ctx());
+    expectBends("with one missing and one new", {"b", "d", "x"}, {"a"});
+}
+
 TEST(TtcCondition, LongHorizonEqualsSamplingEveryStep) {
     // Horizons long enough that the candidate runs pass 2·64 samples, where conflict() tests
     // the ends and the middle only: the answer must be what every sample gives.

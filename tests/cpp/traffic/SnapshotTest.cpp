@@ -62,6 +62,7 @@ public:
         checkTime(*snapshot);
         checkAnnouncements();
         checkVehicles(*snapshot);
+        checkIdsVersion(*snapshot);
         announced_.clear();
         lastStep = snapshot->time();
         peak = std::max<std::size_t>(peak, static_cast<std::size_t>(snapshot->size()));
@@ -69,6 +70,8 @@ public:
     }
 
     int steps = 0;
+    int idsKept = 0;     // steps whose snapshot had the same vehicles as the step before
+    int idsChanged = 0;  // steps in which some came or went
     int departedTotal = 0;
     int arrivedTotal = 0;
     std::size_t peak = 0;
@@ -93,6 +96,22 @@ private:
         for (const auto& id : departed) expected.push_back("departed " + id);
         for (const auto& id : arrived) expected.push_back("arrived " + id);
         EXPECT_EQ(announced_, expected) << "at " << sim_.now().str() << " s";
+    }
+
+    // The same ids as the step before keep the version (the storyboard then skips matching
+    // them); any change gives a new one.
+    void checkIdsVersion(const VehicleSnapshot& s) {
+        if (steps > 1) {
+            if (s.ids() == lastIds_) {
+                EXPECT_EQ(s.idsVersion(), lastVersion_) << "at " << sim_.now().str() << " s";
+                ++idsKept;
+            } else {
+                EXPECT_NE(s.idsVersion(), lastVersion_) << "at " << sim_.now().str() << " s";
+                ++idsChanged;
+            }
+        }
+        lastIds_ = s.ids();
+        lastVersion_ = s.idsVersion();
     }
 
     void checkVehicles(const VehicleSnapshot& s) {
@@ -150,6 +169,8 @@ private:
     kernel::Simulation& sim_;
     SumoBridge& bridge_;
     std::vector<std::string> announced_;
+    std::vector<std::string> lastIds_;
+    std::uint64_t lastVersion_ = 0;
 };
 
 class SnapshotTest : public testing::TestWithParam<unsigned> {};
@@ -185,6 +206,8 @@ TEST_P(SnapshotTest, MatchesLibsumoAtEveryStep) {
     EXPECT_GT(checker.departedTotal, 100);
     EXPECT_GT(checker.arrivedTotal, 10);
     EXPECT_GT(checker.checkedVehicles, 2000u);
+    EXPECT_GT(checker.idsChanged, 10);
+    EXPECT_GT(checker.idsKept, 0);
     sim.finish();
     // Still loaded: other modules' finish() may ask SUMO about their vehicles; the destructor closes it.
     EXPECT_TRUE(bridge.loaded());

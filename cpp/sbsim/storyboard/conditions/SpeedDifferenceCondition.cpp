@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -20,7 +21,23 @@ SpeedDifferenceCondition::SpeedDifferenceCondition(Direction direction, double d
 }
 
 void SpeedDifferenceCondition::prepare(const EvaluationContext& ctx) {
-    if (!distance_) sortBySpeed(ctx.snapshot());
+    if (!distance_) {
+        sortBySpeed(ctx.snapshot());
+        return;
+    }
+    // The step's extreme speeds (NaN skipped: it qualifies for nothing): an ego no other vehicle
+    // can differ from by more than delta needs no neighbour search.
+    const Eigen::VectorXd& speeds = ctx.snapshot().speeds();
+    double low = std::numeric_limits<double>::infinity();
+    double high = -std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < ctx.snapshot().size(); ++i) {
+        const double v = speeds[i];
+        if (v < low) low = v;
+        if (v > high) high = v;
+    }
+    lowestSpeed_ = low;
+    highestSpeed_ = high;
+    stamp_ = SnapshotStamp::of(ctx.snapshot());
 }
 
 void SpeedDifferenceCondition::sortBySpeed(const traffic::VehicleSnapshot& snapshot) {
@@ -38,6 +55,12 @@ ConditionResult SpeedDifferenceCondition::test(const EvaluationContext& ctx, Veh
     if (!distance_) return testAll(snapshot, ego);
     const Eigen::VectorXd& speeds = snapshot.speeds();
     const double egoSpeed = speeds[ego];
+    // Rounded subtraction is monotone, so if the step's fastest (slowest) vehicle does not
+    // qualify, none does. Only with the extremes of this very snapshot (prepare()'s).
+    if (stamp_ == SnapshotStamp::of(snapshot) && !qualifies(egoSpeed, highestSpeed_) &&
+        !qualifies(egoSpeed, lowestSpeed_)) {
+        return ConditionResult::ofOthers({});
+    }
     std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, *distance_, [&](VehicleIndex o) {
         if (qualifies(egoSpeed, speeds[o])) others.push_back(o);

@@ -43,9 +43,12 @@ private:
     std::optional<double> distance_;
     // Per step, without a distance: all vehicles by ascending speed, so the qualifying ones are a
     // prefix (ego faster) or a suffix (ego slower) found by binary search.
-    SnapshotStamp stamp_;
+    SnapshotStamp stamp_;  // the snapshot the per-step values below were made for
     std::vector<VehicleIndex> bySpeed_;
     std::vector<double> sortedSpeeds_;
+    // Per step, with a distance: the lowest and highest speed of the snapshot stamp_ names.
+    double lowestSpeed_ = 0;
+    double highestSpeed_ = 0;
 };
 
 /// The other vehicles the ego is faster than by more than `delta`: speed(ego) - speed(o) > delta.

@@ -86,6 +86,7 @@ void TtcCondition::Poses::erase(std::string_view id) {
     if (it == ids.end() || *it != id) return;
     const auto k = it - ids.begin();
     ids.erase(it);
+    idsVersion = 0;  // no snapshot's ids any more
     fronts.erase(fronts.begin() + k);
     angles.erase(angles.begin() + k);
 }
@@ -111,24 +112,36 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot, kerne
     const MovingFootprint standing(Footprint(Eigen::Vector2d::Zero(), Eigen::Vector2d::UnitX(), 0, 0), 0);
     movers_.resize(count, standing);  // every element is overwritten below
     circles_.resize(count);
+    // The same vehicles as in the poses kept (no vehicle came or went): their ids need no copy,
+    // and each vehicle's previous pose is at its own index.
+    const std::uint64_t version = snapshot.idsVersion();
+    const bool copyIds = current_.idsVersion != version;
+    const bool sameAsBefore = previous_.idsVersion == version && previous_.ids.size() == count;
     const auto body = [&](std::size_t begin, std::size_t end) {
-        // Both id lists ascend: one merge pass per chunk finds each vehicle's previous pose.
+        // Otherwise both id lists ascend: one merge pass per chunk finds each vehicle's previous pose.
         if (begin == end) return;
         const auto& before = previous_.ids;
-        auto p = static_cast<std::size_t>(std::lower_bound(before.begin(), before.end(), ids[begin]) - before.begin());
+        auto p =
+            sameAsBefore
+                ? begin
+                : static_cast<std::size_t>(std::lower_bound(before.begin(), before.end(), ids[begin]) - before.begin());
         for (std::size_t k = begin; k < end; ++k) {
             const auto i = static_cast<VehicleIndex>(k);
             const Eigen::Vector2d front = snapshot.positions().col(i);
             const double angle = snapshot.angles()[i];
             const double speed = snapshot.speeds()[i];
-            if (current_.ids[k] != ids[k]) current_.ids[k] = ids[k];  // most ids keep their slot
+            if (copyIds && current_.ids[k] != ids[k]) current_.ids[k] = ids[k];  // most ids keep their slot
             current_.fronts[k] = front;
             current_.angles[k] = angle;
-            while (p < before.size() && before[p] < ids[k]) ++p;
+            bool seen = sameAsBefore;
+            if (sameAsBefore) {
+                p = k;
+            } else {
+                while (p < before.size() && before[p] < ids[k]) ++p;
+                seen = p < before.size() && before[p] == ids[k];
+            }
             const double curvature =
-                p < before.size() && before[p] == ids[k]
-                    ? geometry::PathCurvature::of(previous_.fronts[p], previous_.angles[p], front, angle, speed)
-                    : 0.0;
+                seen ? geometry::PathCurvature::of(previous_.fronts[p], previous_.angles[p], front, angle, speed) : 0.0;
             movers_[k] = MovingFootprint(Footprint::fromSumo(front, angle, snapshot.lengths()[i], snapshot.widths()[i]),
                                          speed, curvature);
             circles_[k] = movers_[k].circle;
@@ -139,6 +152,7 @@ void TtcCondition::computeMovers(const traffic::VehicleSnapshot& snapshot, kerne
     } else {
         body(0, count);
     }
+    current_.idsVersion = version;
     stamp_ = SnapshotStamp::of(snapshot);
 }
 

@@ -89,7 +89,8 @@ private:
     struct Poses {
         std::vector<std::string> ids;
         std::vector<Eigen::Vector2d> fronts;
-        std::vector<double> angles;  // SUMO degrees
+        std::vector<double> angles;    // SUMO degrees
+        std::uint64_t idsVersion = 0;  // VehicleSnapshot::idsVersion() of `ids`; 0: none (edited)
         void erase(std::string_view id);
     };
 
