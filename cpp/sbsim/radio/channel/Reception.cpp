@@ -28,6 +28,60 @@ void Reception::addStation() {
     locked_.push_back(0);
     lockedLink_.push_back(nullptr);
     sendStart_.push_back(kernel::SimTime::fromNanoseconds(-1));
+    lockCell_.push_back(-1);
+    lockOwn_.push_back(0);
+    segmentNear_.push_back(0);
+    segmentFrom_.push_back(0);
+}
+
+void Reception::growField(std::int32_t cell) {
+    const auto n = static_cast<std::size_t>(cell) + 1;
+    if (field_.size() >= n) return;
+    field_.resize(n, 0);
+    logged_.resize(n, 0);
+    log_.resize(n * kLog, 0);
+}
+
+void Reception::farStarts(const StepLinks& step) {
+    for (std::size_t k = 0; k < step.farCell.size(); ++k) {
+        const Units units = step.farUnits[k];
+        if (units == 0) continue;
+        const std::int32_t c = step.farCell[k];
+        growField(c);
+        const Units total = field_[c] + units;
+        field_[c] = total;
+        log_[static_cast<std::size_t>(c) * kLog + logged_[c] % kLog] = total;
+        ++logged_[c];
+    }
+}
+
+void Reception::farEnds(const StepLinks& step) {
+    // A fall never raises a decoding station's largest interference: no log.
+    for (std::size_t k = 0; k < step.farCell.size(); ++k) field_[step.farCell[k]] -= step.farUnits[k];
+}
+
+void Reception::openSegment(Slot r) {
+    const std::int32_t c = lockCell_[r];
+    segmentNear_[r] = heard_[r] - lockOwn_[r];
+    segmentFrom_[r] = logged_[c];
+    Link& decoding = *lockedLink_[r];
+    decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, roughMwOf(segmentNear_[r] + field_[c]));
+}
+
+void Reception::closeSegment(Slot r) {
+    const std::int32_t c = lockCell_[r];
+    const std::uint64_t end = logged_[c];
+    std::uint64_t from = segmentFrom_[r];
+    if (from == end) return;  // the field did not rise: the segment's largest was taken at its opening
+    if (end - from > kLog) {
+        ++logOverflows_;
+        from = end - kLog;
+    }
+    Units largest = 0;
+    const Units* ring = &log_[static_cast<std::size_t>(c) * kLog];
+    for (std::uint64_t k = from; k < end; ++k) largest = std::max(largest, ring[k % kLog]);
+    Link& decoding = *lockedLink_[r];
+    decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, roughMwOf(segmentNear_[r] + largest));
 }
 
 void Reception::startSending(Slot s, FrameId id, kernel::SimTime now) {
@@ -52,10 +106,17 @@ void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>
         if (step.tier[k] == StepLinks::kBelowFloor) continue;
         setSensedPower(r, mwOf(hear(r, step.units[k])));
     }
+    farStarts(step);
 }
 
 Reception::Units Reception::hear(Slot r, Units units) {
     const Units total = heard_[r] + units;
+    if (locked_[r] != 0 && lockCell_[r] >= 0) {
+        if (logged_[lockCell_[r]] != segmentFrom_[r]) closeSegment(r);
+        heard_[r] = total;
+        openSegment(r);
+        return total;
+    }
     heard_[r] = total;
     if (locked_[r] != 0) {
         Link& decoding = *lockedLink_[r];
@@ -77,13 +138,22 @@ void Reception::linkStarts(FrameId id, Link& link) {
         lockedLink_[r] = &link;
         link.locked = true;
         link.maxInterferenceMw = mwOf(others);
+        lockCell_[r] = link.cell;
+        if (link.cell >= 0) {
+            growField(link.cell);
+            lockOwn_[r] = total - others;
+            openSegment(r);
+        }
     }
     setSensedPower(r, mwOf(total));
 }
 
 double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {
     const Slot r = link.receiver;
-    if (locked_[r] == id) locked_[r] = 0;
+    if (locked_[r] == id) {
+        if (lockCell_[r] >= 0) closeSegment(r);
+        locked_[r] = 0;
+    }
     if (!link.counted) return 0;
     if (sentSince(r, start)) link.halfDuplex = true;
     return leave(r, unitsOf(link.powerMw));

@@ -150,6 +150,71 @@ TEST_F(ReceptionTest, AnInterferenceOnlyLinkAddsItsPowerButIsNeverDetected) {
     EXPECT_NEAR(reception.leave(1, quiet.units[0]), dbToLinear(-60), 1e-15);
 }
 
+/// A step of one sender whose only links are whole far cells (ChannelSettings::farCellM).
+StepLinks farCells(std::vector<std::pair<std::int32_t, double>> cells) {
+    StepLinks step;
+    for (const auto& [cell, dbm] : cells) {
+        step.farCell.push_back(cell);
+        step.farUnits.push_back(Reception::unitsOf(dbToLinear(dbm)));
+        step.farOccupants.push_back(1);
+        step.farBin.push_back(12);
+    }
+    return step;
+}
+
+TEST_F(ReceptionTest, AFarCellsFieldInterferesWithTheFrameItsStationsDecodeButIsNotSensed) {
+    // Station 1 decodes a frame in far cell 0; station 2, also in cell 0, listens idle.
+    std::vector<Link> decoded{linkTo(1, -60)};
+    decoded[0].cell = 0;
+    reception.frameStarts(1, allDrawn(decoded), decoded);
+    ASSERT_TRUE(decoded[0].locked);
+    // A far frame's field rises in cell 0 and falls again before the decoded frame ends: the
+    // largest interference is that field, found in the cell's log at the end.
+    const StepLinks far = farCells({{0, -92}, {3, -80}});
+    std::vector<Link> none;
+    reception.frameStarts(2, far, none);
+    EXPECT_NEAR(reception.farFieldMw(0), dbToLinear(-92), 1e-18);
+    EXPECT_FALSE(reception.sensesBusy(2));  // carrier sense counts links per receiver only
+    reception.farEnds(far);
+    EXPECT_EQ(reception.farFieldMw(0), 0.0);
+    EXPECT_EQ(reception.farFieldMw(3), 0.0);
+    reception.frameEnds(1, SimTime::zero(), decoded[0]);
+    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-92), 1e-18);
+    EXPECT_EQ(reception.logOverflows(), 0u);
+}
+
+TEST_F(ReceptionTest, ADecodingStationsInterferenceIsTheLargestSumOfItsLinksAndItsCellsField) {
+    std::vector<Link> decoded{linkTo(1, -60)};
+    decoded[0].cell = 0;
+    reception.frameStarts(1, allDrawn(decoded), decoded);
+    // A link of its own (−90 dBm) comes and goes; then the field rises (−93 dBm): the largest sum
+    // is the link alone, not the two together.
+    StepLinks near;
+    near.receivers.push_back(1);
+    near.bin.push_back(0);
+    near.distance.push_back(300);
+    near.tier.push_back(StepLinks::kInterference);
+    near.units.push_back(Reception::unitsOf(dbToLinear(-90)));
+    std::vector<Link> none;
+    reception.frameStarts(2, near, none);
+    reception.leave(1, near.units[0]);
+    const StepLinks far = farCells({{0, -93}});
+    reception.frameStarts(3, far, none);
+    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
+    // The link again while the field is up: now their sum, whichever rose first.
+    reception.frameStarts(4, near, none);
+    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-93), 1e-18);
+    reception.leave(1, near.units[0]);
+    // A second far frame while the link is gone: field −93 and −93 dBm, less than the sum above.
+    reception.frameStarts(5, far, none);
+    reception.frameEnds(1, SimTime::zero(), decoded[0]);
+    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-93), 1e-18);
+    // A third: the field alone now exceeds it, but the frame has ended.
+    const StepLinks loud = farCells({{0, -85}});
+    reception.frameStarts(6, loud, none);
+    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-93), 1e-18);
+}
+
 TEST_F(ReceptionTest, AStrongLoneFrameIsDecoded) {
     std::vector<Link> frame{linkTo(1, -40)};
     reception.frameStarts(1, allDrawn(frame), frame);
