@@ -30,7 +30,8 @@ void Reception::addStation() {
     sendStart_.push_back(kernel::SimTime::fromNanoseconds(-1));
     lockCell_.push_back(-1);
     lockOwn_.push_back(0);
-    segmentNear_.push_back(0);
+    segmentNearMw_.push_back(0);
+    lockedMaxMw_.push_back(0);
     segmentFrom_.push_back(0);
 }
 
@@ -50,7 +51,7 @@ void Reception::farStarts(const StepLinks& step) {
         growField(c);
         const Units total = field_[c] + units;
         field_[c] = total;
-        log_[static_cast<std::size_t>(c) * kLog + logged_[c] % kLog] = total;
+        log_[static_cast<std::size_t>(c) * kLog + logged_[c] % kLog] = roughMwOf(total);
         ++logged_[c];
     }
 }
@@ -62,10 +63,10 @@ void Reception::farEnds(const StepLinks& step) {
 
 void Reception::openSegment(Slot r) {
     const std::int32_t c = lockCell_[r];
-    segmentNear_[r] = heard_[r] - lockOwn_[r];
+    const Units near = heard_[r] - lockOwn_[r];
+    segmentNearMw_[r] = roughMwOf(near);
     segmentFrom_[r] = logged_[c];
-    Link& decoding = *lockedLink_[r];
-    decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, roughMwOf(segmentNear_[r] + field_[c]));
+    lockedMaxMw_[r] = std::max(lockedMaxMw_[r], roughMwOf(near + field_[c]));
 }
 
 void Reception::closeSegment(Slot r) {
@@ -77,11 +78,10 @@ void Reception::closeSegment(Slot r) {
         ++logOverflows_;
         from = end - kLog;
     }
-    Units largest = 0;
-    const Units* ring = &log_[static_cast<std::size_t>(c) * kLog];
+    double largest = 0;
+    const double* ring = &log_[static_cast<std::size_t>(c) * kLog];
     for (std::uint64_t k = from; k < end; ++k) largest = std::max(largest, ring[k % kLog]);
-    Link& decoding = *lockedLink_[r];
-    decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, roughMwOf(segmentNear_[r] + largest));
+    lockedMaxMw_[r] = std::max(lockedMaxMw_[r], segmentNearMw_[r] + largest);
 }
 
 void Reception::startSending(Slot s, FrameId id, kernel::SimTime now) {
@@ -141,6 +141,7 @@ void Reception::linkStarts(FrameId id, Link& link) {
         lockCell_[r] = link.cell;
         if (link.cell >= 0) {
             growField(link.cell);
+            lockedMaxMw_[r] = link.maxInterferenceMw;
             lockOwn_[r] = total - others;
             openSegment(r);
         }
@@ -151,7 +152,10 @@ void Reception::linkStarts(FrameId id, Link& link) {
 double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {
     const Slot r = link.receiver;
     if (locked_[r] == id) {
-        if (lockCell_[r] >= 0) closeSegment(r);
+        if (lockCell_[r] >= 0) {
+            closeSegment(r);
+            link.maxInterferenceMw = lockedMaxMw_[r];
+        }
         locked_[r] = 0;
     }
     if (!link.counted) return 0;

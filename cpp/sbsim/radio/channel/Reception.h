@@ -68,7 +68,7 @@ public:
                 segmentFrom_[r] = logged_[c];
             }
             heard_[r] -= units;
-            segmentNear_[r] = heard_[r] - lockOwn_[r];
+            segmentNearMw_[r] = roughMwOf(heard_[r] - lockOwn_[r]);
         } else {
             heard_[r] -= units;
         }
@@ -140,15 +140,18 @@ private:
     std::vector<Link*> lockedLink_;           // its link (valid while locked_ names it)
     std::vector<kernel::SimTime> sendStart_;  // when each station last began sending
     // The far tier, by cell: the field (units), and a ring of its values after each rise with their count.
-    static constexpr std::size_t kLog = 64;
+    static constexpr std::size_t kLog = 32;
     std::vector<Units> field_;
-    std::vector<Units> log_;  // kLog a cell
+    std::vector<double> log_;  // kLog a cell, mW (roughMwOf): a decoding station's maximum needs no exact sum
     std::vector<std::uint64_t> logged_;
     std::uint64_t logOverflows_ = 0;
     // A decoding station's segment: its cell (-1: no far field), own link's units, others' sum and the log's count at
     // its opening.
     std::vector<std::int32_t> lockCell_;
-    std::vector<Units> lockOwn_, segmentNear_;
+    std::vector<Units> lockOwn_;
+    std::vector<double> segmentNearMw_;
+    std::vector<double>
+        lockedMaxMw_;  // its largest interference so far, into its Link when it ends (a Link is a cache miss)
     std::vector<std::uint64_t> segmentFrom_;
 };
 

@@ -184,35 +184,41 @@ TEST_F(ReceptionTest, AFarCellsFieldInterferesWithTheFrameItsStationsDecodeButIs
 }
 
 TEST_F(ReceptionTest, ADecodingStationsInterferenceIsTheLargestSumOfItsLinksAndItsCellsField) {
-    std::vector<Link> decoded{linkTo(1, -60)};
-    decoded[0].cell = 0;
-    reception.frameStarts(1, allDrawn(decoded), decoded);
-    // A link of its own (−90 dBm) comes and goes; then the field rises (−93 dBm): the largest sum
-    // is the link alone, not the two together.
-    StepLinks near;
-    near.receivers.push_back(1);
-    near.bin.push_back(0);
-    near.distance.push_back(300);
-    near.tier.push_back(StepLinks::kInterference);
-    near.units.push_back(Reception::unitsOf(dbToLinear(-90)));
+    // Stations 1 and 2 decode a frame each, in far cells 0 and 1.
+    std::vector<Link> first{linkTo(1, -60)}, second{linkTo(2, -60)};
+    first[0].cell = 0;
+    second[0].cell = 1;
+    reception.frameStarts(1, allDrawn(first), first);
+    reception.frameStarts(2, allDrawn(second), second);
+    const auto own = [](Reception::Slot r) {
+        StepLinks near;
+        near.receivers.push_back(r);
+        near.bin.push_back(0);
+        near.distance.push_back(300);
+        near.tier.push_back(StepLinks::kInterference);
+        near.units.push_back(Reception::unitsOf(dbToLinear(-90)));
+        return near;
+    };
     std::vector<Link> none;
-    reception.frameStarts(2, near, none);
-    reception.leave(1, near.units[0]);
-    const StepLinks far = farCells({{0, -93}});
-    reception.frameStarts(3, far, none);
-    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
-    // The link again while the field is up: now their sum, whichever rose first.
-    reception.frameStarts(4, near, none);
-    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-93), 1e-18);
-    reception.leave(1, near.units[0]);
-    // A second far frame while the link is gone: field −93 and −93 dBm, less than the sum above.
-    reception.frameStarts(5, far, none);
-    reception.frameEnds(1, SimTime::zero(), decoded[0]);
-    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-93), 1e-18);
-    // A third: the field alone now exceeds it, but the frame has ended.
-    const StepLinks loud = farCells({{0, -85}});
-    reception.frameStarts(6, loud, none);
-    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-93), 1e-18);
+    // At station 1 a link of its own (−90 dBm) comes and goes, then the field rises (−96 dBm)
+    // twice: the largest sum is the link alone, not the link and the field together.
+    const StepLinks near1 = own(1);
+    reception.frameStarts(3, near1, none);
+    reception.leave(1, near1.units[0]);
+    const StepLinks far = farCells({{0, -96}, {1, -96}});
+    reception.frameStarts(4, far, none);
+    // At station 2 the link comes while the field is up: their sum.
+    const StepLinks near2 = own(2);
+    reception.frameStarts(5, near2, none);
+    reception.leave(2, near2.units[0]);
+    reception.frameStarts(6, farCells({{0, -96}}), none);
+    reception.frameEnds(1, SimTime::zero(), first[0]);
+    reception.frameEnds(2, SimTime::zero(), second[0]);
+    EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
+    EXPECT_NEAR(second[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-96), 1e-18);
+    // A field that rises after the frame ended is no part of it.
+    reception.frameStarts(7, farCells({{0, -80}}), none);
+    EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
 }
 
 TEST_F(ReceptionTest, AStrongLoneFrameIsDecoded) {
