@@ -121,6 +121,7 @@ void ChannelMedium::refreshStations() {
         stations_.y[s] = fixed.positions()(1, k);
     }
     budget_.newStep();
+    if (const FarCells* cells = budget_.farCells()) reception_.moveStations(*cells);
 }
 
 void ChannelMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) {

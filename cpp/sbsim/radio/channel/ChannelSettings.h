@@ -85,8 +85,8 @@ struct SBSIM_API ChannelSettings {
     /// interference-only tier's bound, and at least `traceRange` away — are one figure per frame
     /// and cell: the mean power at the cell's centre, added to a per-cell field. A decoding
     /// receiver's interference includes its cell's field (the largest sum over the frame, as for
-    /// the other links); carrier sense counts the links per receiver only (the far field alone is
-    /// tens of dB below the sensing threshold). bench/tiers.py measures the error.
+    /// the other links), and its carrier sense its links' sum plus its cell's field (a cell's
+    /// stations are checked when its field changes). bench/tiers.py measures the error.
     double farCellM = 100;
 
     /// A frame's links are computed on the thread pool in chunks of this many (fewer links stay on

@@ -51,7 +51,12 @@ void FarCells::newStep(const ChannelStations& stations) {
     const std::int64_t area =
         any ? (static_cast<std::int64_t>(x1) - x0 + 1) * (static_cast<std::int64_t>(y1) - y0 + 1) : 0;
     usable_ = any && area <= kMaxDenseCells;
-    if (!usable_) return;
+    if (!usable_) {
+        std::fill(cellOf_.begin(), cellOf_.end(), -1);
+        memberStart_.clear();
+        members_.clear();
+        return;
+    }
     lowX_ = x0;
     lowY_ = y0;
     width_ = x1 - x0 + 1;
@@ -65,6 +70,18 @@ void FarCells::newStep(const ChannelStations& stations) {
         if (dense_[k] < 0) dense_[k] = idOf(cx_[s], cy_[s]);
         cellOf_[s] = dense_[k];
         ++occupants_[k];
+    }
+    // Members by cell id (counting sort, slots ascending within a cell).
+    memberStart_.assign(cells() + 1, 0);
+    for (std::size_t s = 0; s < n; ++s) {
+        if (cellOf_[s] >= 0) ++memberStart_[static_cast<std::size_t>(cellOf_[s]) + 1];
+    }
+    for (std::size_t c = 0; c < cells(); ++c) memberStart_[c + 1] += memberStart_[c];
+    members_.resize(memberStart_.back());
+    std::vector<std::uint32_t>& next = scratch_;
+    next.assign(memberStart_.begin(), memberStart_.end() - 1);
+    for (std::size_t s = 0; s < n; ++s) {
+        if (cellOf_[s] >= 0) members_[next[static_cast<std::size_t>(cellOf_[s])]++] = static_cast<Slot>(s);
     }
 }
 

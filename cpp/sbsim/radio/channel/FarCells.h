@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "sbsim/radio/channel/ChannelStations.h"
@@ -37,6 +38,11 @@ public:
         const Cell c = cellOf(s);
         return c >= 0 && cellBeyond(cx_[s], cy_[s], x, y, range);
     }
+    /// The stations in `cell` this step, in slot order.
+    std::pair<const Slot*, const Slot*> members(Cell cell) const {
+        if (static_cast<std::size_t>(cell) + 1 >= memberStart_.size()) return {nullptr, nullptr};
+        return {members_.data() + memberStart_[cell], members_.data() + memberStart_[cell + 1]};
+    }
     /// Visits (cell, occupants, centre x, centre y, cx, cy) for every occupied cell meeting the
     /// square of half-side `radius` around (x, y), row by row.
     template <typename Visit>
@@ -66,6 +72,9 @@ private:
     std::int32_t lowX_ = 0, lowY_ = 0, width_ = 0, height_ = 0;
     std::vector<Cell> dense_;
     std::vector<std::uint32_t> occupants_;
+    std::vector<std::uint32_t> memberStart_;  // by id, cells() + 1
+    std::vector<Slot> members_;
+    std::vector<std::uint32_t> scratch_;
 };
 
 template <typename Visit>

@@ -44,6 +44,8 @@ public:
     double cutoffRange() const { return cutoff_; }
     /// Where the far tier begins (ChannelSettings::farCellM), 0 without it.
     double farRange() const { return far_ ? farRange_ : 0.0; }
+    /// The far tier's cells of the step, null without it.
+    const FarCells* farCells() const { return far_ ? &cells_ : nullptr; }
     /// The mean received power (dBm) at `distance` m without obstacles, shadowing or fading.
     double meanPowerDbm(double distance) const;
 

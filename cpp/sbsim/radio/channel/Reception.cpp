@@ -17,7 +17,8 @@ Reception::Reception(const ChannelSettings& settings, Listener& listener)
       sensingMw_(dbToLinear(settings.sensingDbm)),
       noiseMw_(dbToLinear(settings.noiseDbm)),
       floorMw_(dbToLinear(settings.interferenceFloorDbm)),
-      ratioDb_(linearToDb(settings.bandwidthHz / (settings.rateMbps * 1e6))) {}
+      ratioDb_(linearToDb(settings.bandwidthHz / (settings.rateMbps * 1e6))),
+      sensingUnits_(unitsOf(sensingMw_)) {}
 
 double Reception::mwOf(Units units) { return static_cast<double>(units) / kUnitsPerMw; }
 
@@ -32,6 +33,7 @@ void Reception::addStation() {
     lockOwn_.push_back(0);
     segmentNearMw_.push_back(0);
     lockedMaxMw_.push_back(0);
+    cell_.push_back(-1);
     segmentFrom_.push_back(0);
 }
 
@@ -53,12 +55,39 @@ void Reception::farStarts(const StepLinks& step) {
         field_[c] = total;
         log_[static_cast<std::size_t>(c) * kLog + logged_[c] % kLog] = roughMwOf(total);
         ++logged_[c];
+        senseCell(c);
+    }
+}
+
+void Reception::senseCell(std::int32_t cell) {
+    if (cells_ == nullptr) return;
+    const auto [begin, end] = cells_->members(cell);
+    for (const Slot* r = begin; r != end; ++r) {
+        if (cell_[*r] != cell) continue;  // not moved in yet (moveStations)
+        const Units total = heard_[*r] + field_[cell];
+        // Units first (no conversion); setSensedPower decides in mW as everywhere else.
+        if ((total >= sensingUnits_) != static_cast<bool>(sensedBusy_[*r])) setSensedPower(*r, mwOf(total));
+    }
+}
+
+void Reception::moveStations(const FarCells& cells) {
+    cells_ = &cells;
+    for (Slot r = 0; r < static_cast<Slot>(cell_.size()); ++r) {
+        const std::int32_t c = cells.cellOf(r);
+        if (c == cell_[r]) continue;
+        if (c >= 0) growField(c);
+        cell_[r] = c;
+        setSensedPower(r, mwOf(heard_[r] + fieldAt(r)));
     }
 }
 
 void Reception::farEnds(const StepLinks& step) {
     // A fall never raises a decoding station's largest interference: no log.
-    for (std::size_t k = 0; k < step.farCell.size(); ++k) field_[step.farCell[k]] -= step.farUnits[k];
+    for (std::size_t k = 0; k < step.farCell.size(); ++k) {
+        if (step.farUnits[k] == 0) continue;
+        field_[step.farCell[k]] -= step.farUnits[k];
+        senseCell(step.farCell[k]);
+    }
 }
 
 void Reception::openSegment(Slot r) {
@@ -104,7 +133,7 @@ void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>
         const Slot r = step.receivers[k];
         if (halfAtStart != nullptr && sending_[r] != 0) halfAtStart->push_back(static_cast<std::uint32_t>(k));
         if (step.tier[k] == StepLinks::kBelowFloor) continue;
-        setSensedPower(r, mwOf(hear(r, step.units[k])));
+        setSensedPower(r, mwOf(hear(r, step.units[k]) + fieldAt(r)));
     }
     farStarts(step);
 }
@@ -146,7 +175,7 @@ void Reception::linkStarts(FrameId id, Link& link) {
             openSegment(r);
         }
     }
-    setSensedPower(r, mwOf(total));
+    setSensedPower(r, mwOf(total + fieldAt(r)));
 }
 
 double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {

@@ -7,6 +7,7 @@
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/MessageTrace.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
+#include "sbsim/radio/channel/FarCells.h"
 #include "sbsim/radio/channel/FrameErrorTable.h"
 #include "sbsim/radio/channel/Link.h"
 #include "sbsim/radio/channel/StepLinks.h"
@@ -72,8 +73,11 @@ public:
         } else {
             heard_[r] -= units;
         }
-        return mwOf(heard_[r]);
+        return mwOf(heard_[r] + fieldAt(r));
     }
+    /// The stations' far cells changed with a SUMO step (`cells`, kept until the next call): each
+    /// senses its links and its new cell's field.
+    void moveStations(const FarCells& cells);
     /// The far tier of a frame's step (StepLinks::farCell): its cells' fields rise when it starts,
     /// fall by the same integers when it ends.
     void farStarts(const StepLinks& step);
@@ -127,6 +131,13 @@ private:
     void openSegment(Slot r);
     void closeSegment(Slot r);
     void growField(std::int32_t cell);
+    /// The far field station `r` hears in its cell this step (0 without one).
+    Units fieldAt(Slot r) const {
+        const std::int32_t c = cell_[r];
+        return c >= 0 && static_cast<std::size_t>(c) < field_.size() ? field_[c] : Units{0};
+    }
+    /// Carrier sense of `cell`'s stations after its field changed.
+    void senseCell(std::int32_t cell);
 
     Listener& listener_;
     FrameErrorTable fer_;
@@ -150,9 +161,13 @@ private:
     std::vector<std::int32_t> lockCell_;
     std::vector<Units> lockOwn_;
     std::vector<double> segmentNearMw_;
-    std::vector<double>
-        lockedMaxMw_;  // its largest interference so far, into its Link when it ends (a Link is a cache miss)
     std::vector<std::uint64_t> segmentFrom_;
+    // Its largest interference so far, into its Link when the frame ends (a Link is a cache miss).
+    std::vector<double> lockedMaxMw_;
+    // Carrier sense with the far field: each station's cell this step and the cells' members.
+    std::vector<std::int32_t> cell_;
+    const FarCells* cells_ = nullptr;
+    Units sensingUnits_ = 0;
 };
 
 }  // namespace sbsim::radio

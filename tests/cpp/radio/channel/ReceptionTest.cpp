@@ -162,24 +162,47 @@ StepLinks farCells(std::vector<std::pair<std::int32_t, double>> cells) {
     return step;
 }
 
-TEST_F(ReceptionTest, AFarCellsFieldInterferesWithTheFrameItsStationsDecodeButIsNotSensed) {
-    // Station 1 decodes a frame in far cell 0; station 2, also in cell 0, listens idle.
+TEST_F(ReceptionTest, AFarCellsFieldInterferesWithTheFrameItsStationsDecodeAndIsSensed) {
+    // Stations 0, 1 and 2 stand in one 100 m cell, far cell 0.
+    ChannelStations stations;
+    for (const char* id : {"a", "b", "c"}) {
+        const auto s = stations.add(id, 0);
+        stations.x[s] = 10.0 + s;
+        stations.y[s] = 20.0;
+        stations.present[s] = 1;
+    }
+    FarCells cells(100);
+    cells.newStep(stations);
+    ASSERT_EQ(cells.cellOf(2), 0);
+    reception.moveStations(cells);
+    // Station 1 decodes a frame; station 2 listens idle.
     std::vector<Link> decoded{linkTo(1, -60)};
     decoded[0].cell = 0;
     reception.frameStarts(1, allDrawn(decoded), decoded);
     ASSERT_TRUE(decoded[0].locked);
+    log.changes.clear();
     // A far frame's field rises in cell 0 and falls again before the decoded frame ends: the
-    // largest interference is that field, found in the cell's log at the end.
+    // largest interference is that field, found in the cell's log at the end. Below the sensing
+    // threshold, no station's carrier sense changes.
     const StepLinks far = farCells({{0, -92}, {3, -80}});
     std::vector<Link> none;
     reception.frameStarts(2, far, none);
     EXPECT_NEAR(reception.farFieldMw(0), dbToLinear(-92), 1e-18);
-    EXPECT_FALSE(reception.sensesBusy(2));  // carrier sense counts links per receiver only
+    EXPECT_TRUE(log.changes.empty());
+    // Another far frame raises the field above it (−92 and −86.5 dBm): stations 0 and 2 sense it
+    // busy, and idle again when it ends.
+    const StepLinks loud = farCells({{0, -85.9}});
+    reception.frameStarts(3, loud, none);
+    const std::vector<std::pair<Reception::Slot, bool>> busy{{0, true}, {2, true}};
+    EXPECT_EQ(log.changes, busy);
+    reception.farEnds(loud);
     reception.farEnds(far);
+    const std::vector<std::pair<Reception::Slot, bool>> idle{{0, true}, {2, true}, {0, false}, {2, false}};
+    EXPECT_EQ(log.changes, idle);
     EXPECT_EQ(reception.farFieldMw(0), 0.0);
     EXPECT_EQ(reception.farFieldMw(3), 0.0);
     reception.frameEnds(1, SimTime::zero(), decoded[0]);
-    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-92), 1e-18);
+    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-92) + dbToLinear(-85.9), 1e-18);
     EXPECT_EQ(reception.logOverflows(), 0u);
 }
 
