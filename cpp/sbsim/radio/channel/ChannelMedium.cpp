@@ -121,6 +121,7 @@ void ChannelMedium::refreshStations() {
         stations_.y[s] = fixed.positions()(1, k);
     }
     budget_.newStep();
+    if (const FarCells* cells = budget_.farCells()) reception_.moveStations(*cells);
 }
 
 void ChannelMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) {
@@ -244,6 +245,18 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     };
 
     const StepLinks& step = *tx->step;
+    // The far tier's cells: their fields fall, their receivers counted by the centre's distance.
+    reception_.farEnds(step);
+    if (counts != nullptr) {
+        for (std::size_t k = 0; k < step.farCell.size(); ++k) {
+            const std::size_t bin = step.farBin[k];
+            if (counts->linkStations.size() <= bin) {
+                counts->linkStations.resize(bin + 1);
+                counts->linkReceptions.resize(bin + 1);
+            }
+            counts->linkStations[bin] += step.farOccupants[k];
+        }
+    }
     std::size_t drawn = 0;
     for (std::size_t k = 0; k < step.size(); ++k) {
         if (step.tier[k] != StepLinks::kDrawn) {

@@ -48,6 +48,8 @@ public:
     const ChannelSettings& settings() const { return settings_; }
     /// Links longer than this are not computed (ChannelSettings::interferenceFloorDbm).
     double cutoffRange() const { return budget_.cutoffRange(); }
+    /// Where the far tier's cells begin (ChannelSettings::farCellM), 0 without it.
+    double farRange() const { return budget_.farRange(); }
     /// The mean received power (dBm) at `distance` m without obstacles, shadowing or fading.
     double meanPowerDbm(double distance) const { return budget_.meanPowerDbm(distance); }
 

@@ -41,6 +41,7 @@ void ChannelSettings::validate() const {
     require(linksPerChunk >= 1, "links_per_chunk must be >= 1");
     require(traceRange >= 0, "trace_range must be >= 0 m");
     require(tierMarginDb >= 0 && tierMarginDb <= 100, "tier_margin_db must be 0 to 100");
+    require(farCellM >= 0 && farCellM <= 1000, "far_cell_m must be 0 to 1000");
     (void)FrameErrorTable(ferTable);  // throws on a malformed table
     (void)makePathLoss();
 }

@@ -80,6 +80,14 @@ struct SBSIM_API ChannelSettings {
     /// dB between a link's mean power and the sensing threshold below which it is interference
     /// only: with σ = 3 dB a draw reaches it with probability 4·10⁻⁴ (3.3 σ).
     double tierMarginDb = 10;
+    /// The far tier, with the tiers and without buildings: m, the side of square cells; 0 = off. A
+    /// sender's links to a whole cell beyond the far range — where the mean power is below the
+    /// interference-only tier's bound, and at least `traceRange` away — are one figure per frame
+    /// and cell: the mean power at the cell's centre, added to a per-cell field. A decoding
+    /// receiver's interference includes its cell's field (the largest sum over the frame, as for
+    /// the other links), and its carrier sense its links' sum plus its cell's field (a cell's
+    /// stations are checked when its field changes). bench/tiers.py measures the error.
+    double farCellM = 100;
 
     /// A frame's links are computed on the thread pool in chunks of this many (fewer links stay on
     /// the calling thread): waking a worker costs more than a few hundred links.

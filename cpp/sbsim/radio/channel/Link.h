@@ -9,6 +9,7 @@ namespace sbsim::radio {
 struct Link {
     std::int32_t receiver = -1;  // the station's slot
     std::uint32_t bin = 0;       // distance / Medium::kDistanceBin, for the link counts
+    std::int32_t cell = -1;      // the receiver's far-tier cell this step (FarCells), -1 = none
     double distance = 0;
     double powerDbm = 0;
     double powerMw = 0;

@@ -27,7 +27,8 @@ LinkBudget::LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Ob
       stations_(stations),
       snapshot_(snapshot),
       fixed_(fixed),
-      pathLoss_(settings_.makePathLoss()) {
+      pathLoss_(settings_.makePathLoss()),
+      cells_(settings_.farCellM > 0 ? settings_.farCellM : 1.0) {
     fading_.m = settings_.nakagamiM;
     fading_.veinsDistanceRule = settings_.fading == ChannelSettings::Fading::NakagamiVeins;
     // The cutoff: where the mean power plus a margin for shadowing (2 σ) and fading falls below
@@ -48,6 +49,18 @@ LinkBudget::LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Ob
         (above(mid) ? lo : hi) = mid;
     }
     cutoff_ = hi;
+    // The far range: from where the mean power stays below the interference-only tier's bound up
+    // to the cutoff (scanned: not every law falls monotonically), and no nearer than the trace's
+    // range (links there have their lost lines). Buildings lower links one by one: no far tier.
+    far_ = settings_.linkTiers && settings_.farCellM > 0 && !(obstacles_ && obstacles_->size() > 0);
+    if (far_) {
+        const double fullFrom =
+            std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
+        double d = cutoff_;
+        while (d > 1 && meanPowerDbm(d - 1) < fullFrom) d -= 1;
+        farRange_ = std::max(d, settings_.traceRange);
+        far_ = farRange_ < cutoff_;
+    }
 }
 
 double LinkBudget::meanPowerDbm(double distance) const { return settings_.powerDbm - pathLoss_->lossDb(distance); }
@@ -65,6 +78,7 @@ void LinkBudget::newStep() {
     }
     // Cells of half the cutoff: a query touches about 5x5 cells around the sender.
     grid_.build(snapshot_, std::max(cutoff_ / 2, 1.0));
+    if (far_) cells_.newStep(stations_);
 }
 
 void LinkBudget::start(std::uint64_t seed) {
@@ -114,6 +128,7 @@ std::shared_ptr<const StepLinks> LinkBudget::computeLinks(Slot s, std::uint64_t 
                 link.receiver = r;
                 link.distance = step.distance[k];
                 link.bin = step.bin[k];
+                link.cell = far_ ? cells_.cellOf(r) : -1;
                 link.maxInterferenceMw = 0;
                 link.counted = false;
                 link.halfDuplex = false;
@@ -139,6 +154,7 @@ std::shared_ptr<const StepLinks> LinkBudget::computeLinks(Slot s, std::uint64_t 
         settings_.linksPerChunk);
     tiers_.full += n;
     tiers_.interference += step.size() - n;
+    for (const std::uint32_t occupants : step.farOccupants) tiers_.interference += occupants;
     tiers_.skipped += near.skipped;
     return near.links;
 }
@@ -208,10 +224,13 @@ void LinkBudget::computeNeighbourhood(Slot s) {
     };
     const FixedStations& fixed = fixed_;
     const auto fixedSelf = index ? std::nullopt : fixed.indexOf(stations_.ids[s]);
+    // With the far tier only stations in cells not wholly beyond the far range have their own links.
+    const double radius =
+        far_ && cells_.usable() ? std::min(cutoff_, farRange_ + cells_.size() * std::sqrt(2.0)) : cutoff_;
     if (index) {
-        grid_.forEachWithin(*index, cutoff_, take);
+        grid_.forEachWithin(*index, radius, take);
     } else if (fixedSelf) {
-        grid_.forEachAround(stations_.x[s], stations_.y[s], cutoff_, take);
+        grid_.forEachAround(stations_.x[s], stations_.y[s], radius, take);
     }
     if ((index || fixedSelf) && !fixed.empty()) {
         fixed.forEachWithin({stations_.x[s], stations_.y[s]}, cutoff_, fixedSelf, [&](FixedStations::Index k, double) {
@@ -289,8 +308,10 @@ void LinkBudget::classify(Slot s) {
     // be detected).
     const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
     const double fullFrom = std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
+    const bool far = far_ && cells_.usable();
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Slot r = candidates[c];
+        if (far && cells_.beyond(r, from.x(), from.y(), farRange_)) continue;  // in a far cell below
         const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
         const double distance = (to - from).norm();
         double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
@@ -314,6 +335,26 @@ void LinkBudget::classify(Slot s) {
             near.fullMeanDbm.push_back(mean);
         }
     }
+    if (!far) return;
+    // The far tier: a cell wholly beyond the far range is one link for its occupants, the mean power
+    // at its centre (within the cutoff).
+    cells_.forEachOccupied(
+        from.x(), from.y(), cutoff_ + cells_.size(),
+        [&](FarCells::Cell cell, std::uint32_t occupants, double x, double y, std::int32_t cx, std::int32_t cy) {
+            if (!cells_.cellBeyond(cx, cy, from.x(), from.y(), farRange_)) return;
+            const double distance = std::hypot(x - from.x(), y - from.y());
+            if (distance > cutoff_) return;
+            const double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
+            if (mean < skipBelow) {
+                near.skipped += occupants;
+                return;
+            }
+            const double mw = dbToLinear(mean + meanGainDb_);
+            step.farCell.push_back(cell);
+            step.farUnits.push_back(mw >= floorMw_ ? Reception::unitsOf(mw) : 0);
+            step.farOccupants.push_back(occupants);
+            step.farBin.push_back(static_cast<std::uint32_t>(distance / kDistanceBin));
+        });
 }
 
 }  // namespace sbsim::radio

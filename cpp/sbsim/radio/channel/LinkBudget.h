@@ -11,6 +11,7 @@
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
 #include "sbsim/radio/channel/ChannelStations.h"
+#include "sbsim/radio/channel/FarCells.h"
 #include "sbsim/radio/channel/Link.h"
 #include "sbsim/radio/channel/PairLosses.h"
 #include "sbsim/radio/channel/StepLinks.h"
@@ -41,6 +42,10 @@ public:
 
     /// Links longer than this are not computed (ChannelSettings::interferenceFloorDbm).
     double cutoffRange() const { return cutoff_; }
+    /// Where the far tier begins (ChannelSettings::farCellM), 0 without it.
+    double farRange() const { return far_ ? farRange_ : 0.0; }
+    /// The far tier's cells of the step, null without it.
+    const FarCells* farCells() const { return far_ ? &cells_ : nullptr; }
     /// The mean received power (dBm) at `distance` m without obstacles, shadowing or fading.
     double meanPowerDbm(double distance) const;
 
@@ -106,6 +111,9 @@ private:
     double floorMarginDb_ = 0;  // the cutoff's margin for shadowing and fading
     double meanGainDb_ = 0;     // shadowing's linear mean, in dB: σ² ln10 / 20
     double floorMw_ = 0;        // Reception's floor: an interference-only link below it adds nothing
+    bool far_ = false;          // the far tier (ChannelSettings::farCellM) is on
+    double farRange_ = 0;       // beyond it every link is interference only and untraced
+    FarCells cells_;
 
     std::vector<Neighbourhood> near_;
     std::optional<kernel::SimTime> batchedAt_;  // the step prepareStep() ran for

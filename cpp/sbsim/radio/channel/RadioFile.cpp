@@ -84,6 +84,7 @@ std::map<std::string, NumberKey, std::less<>> makeNumberKeys() {
         {"delay_max_s", real("latency", 0, kMaxDelay, [](Settings& s, double v) { s.delayMax = v; })},
         {"delay_shape", real("latency", 1e-3, 1e6, [](Settings& s, double v) { s.delayShape = v; })},
         {"tier_margin_db", real("performance", 0, 100, [](Settings& s, double v) { s.tierMarginDb = v; })},
+        {"far_cell_m", real("performance", 0, 1000, [](Settings& s, double v) { s.farCellM = v; })},
         {"links_per_chunk",
          whole("performance", 1, 1e9, [](Settings& s, double v) { s.linksPerChunk = static_cast<std::size_t>(v); })},
     };

@@ -7,6 +7,7 @@
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/MessageTrace.h"
 #include "sbsim/radio/channel/ChannelSettings.h"
+#include "sbsim/radio/channel/FarCells.h"
 #include "sbsim/radio/channel/FrameErrorTable.h"
 #include "sbsim/radio/channel/Link.h"
 #include "sbsim/radio/channel/StepLinks.h"
@@ -59,9 +60,34 @@ public:
                      std::vector<std::uint32_t>* halfAtStart = nullptr);
     /// A counted link of `units` left station `r`: the power it hears without it.
     double leave(Slot r, StepLinks::Units units) {
-        heard_[r] -= units;
-        return mwOf(heard_[r]);
+        if (locked_[r] != 0 && lockCell_[r] >= 0) {
+            // A fall opens a segment only if the field rose during the last (else the last's
+            // largest, taken at its opening, stands).
+            const std::int32_t c = lockCell_[r];
+            if (logged_[c] != segmentFrom_[r]) {
+                closeSegment(r);
+                segmentFrom_[r] = logged_[c];
+            }
+            heard_[r] -= units;
+            segmentNearMw_[r] = roughMwOf(heard_[r] - lockOwn_[r]);
+        } else {
+            heard_[r] -= units;
+        }
+        return mwOf(heard_[r] + fieldAt(r));
     }
+    /// The stations' far cells changed with a SUMO step (`cells`, kept until the next call): each
+    /// senses its links and its new cell's field.
+    void moveStations(const FarCells& cells);
+    /// The far tier of a frame's step (StepLinks::farCell): its cells' fields rise when it starts,
+    /// fall by the same integers when it ends.
+    void farStarts(const StepLinks& step);
+    void farEnds(const StepLinks& step);
+    /// The far field of `cell` now, in mW (0 for a cell no frame reached).
+    double farFieldMw(std::int32_t cell) const {
+        return cell >= 0 && static_cast<std::size_t>(cell) < field_.size() ? mwOf(field_[cell]) : 0.0;
+    }
+    /// Times a decoding receiver's segment outlived its cell's log (the largest far field may then be missed).
+    std::uint64_t logOverflows() const { return logOverflows_; }
     /// Whether station `r` began sending at or after `start`.
     bool sentSince(Slot r, kernel::SimTime start) const { return sendStart_[r] >= start; }
     /// Whether `mw` would change station `r`'s carrier sense.
@@ -90,9 +116,28 @@ public:
 
 private:
     static double mwOf(Units units);
+    /// mwOf to within a rounding, without libgcc's 128-bit conversion: for the far tier's maxima.
+    static double roughMwOf(Units units) {
+        return static_cast<double>(static_cast<std::uint64_t>(units >> 64)) +
+               static_cast<double>(static_cast<std::uint64_t>(units)) * 0x1p-64;
+    }
     void linkStarts(FrameId id, Link& link);
     /// Adds `units` to what station `r` hears, and to the interference of the frame it decodes; the new sum.
     Units hear(Slot r, Units units);
+    /// A decoding station's interference with a far field (lockCell_ >= 0) is the largest of
+    /// (its other links' sum + its cell's field) over the frame. Its other links change only at
+    /// its own links' events: between two, a segment, whose largest is that sum plus the largest
+    /// field its cell's log holds since the segment opened.
+    void openSegment(Slot r);
+    void closeSegment(Slot r);
+    void growField(std::int32_t cell);
+    /// The far field station `r` hears in its cell this step (0 without one).
+    Units fieldAt(Slot r) const {
+        const std::int32_t c = cell_[r];
+        return c >= 0 && static_cast<std::size_t>(c) < field_.size() ? field_[c] : Units{0};
+    }
+    /// Carrier sense of `cell`'s stations after its field changed.
+    void senseCell(std::int32_t cell);
 
     Listener& listener_;
     FrameErrorTable fer_;
@@ -105,6 +150,24 @@ private:
     std::vector<FrameId> locked_;             // the frame being decoded, 0 = none
     std::vector<Link*> lockedLink_;           // its link (valid while locked_ names it)
     std::vector<kernel::SimTime> sendStart_;  // when each station last began sending
+    // The far tier, by cell: the field (units), and a ring of its values after each rise with their count.
+    static constexpr std::size_t kLog = 32;
+    std::vector<Units> field_;
+    std::vector<double> log_;  // kLog a cell, mW (roughMwOf): a decoding station's maximum needs no exact sum
+    std::vector<std::uint64_t> logged_;
+    std::uint64_t logOverflows_ = 0;
+    // A decoding station's segment: its cell (-1: no far field), own link's units, others' sum and the log's count at
+    // its opening.
+    std::vector<std::int32_t> lockCell_;
+    std::vector<Units> lockOwn_;
+    std::vector<double> segmentNearMw_;
+    std::vector<std::uint64_t> segmentFrom_;
+    // Its largest interference so far, into its Link when the frame ends (a Link is a cache miss).
+    std::vector<double> lockedMaxMw_;
+    // Carrier sense with the far field: each station's cell this step and the cells' members.
+    std::vector<std::int32_t> cell_;
+    const FarCells* cells_ = nullptr;
+    Units sensingUnits_ = 0;
 };
 
 }  // namespace sbsim::radio

@@ -28,6 +28,13 @@ struct StepLinks {
     std::vector<std::uint8_t> tier;
     std::vector<Units> units;  // an interference-only link's power (0 for a drawn one)
 
+    /// The far tier (ChannelSettings::farCellM): whole cells beyond the far range, each one figure
+    /// for all its receivers — the mean power at the cell's centre (0: below the floor), its
+    /// occupants this step and the centre's distance bin (for the link counts).
+    std::vector<std::int32_t> farCell;
+    std::vector<Units> farUnits;
+    std::vector<std::uint32_t> farOccupants, farBin;
+
     std::size_t size() const { return receivers.size(); }
     void clear() {
         receivers.clear();
@@ -35,6 +42,10 @@ struct StepLinks {
         distance.clear();
         tier.clear();
         units.clear();
+        farCell.clear();
+        farUnits.clear();
+        farOccupants.clear();
+        farBin.clear();
     }
 };
 

@@ -9,11 +9,13 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "sbsim/kernel/Simulation.h"
 #include "sbsim/radio/Receiver.h"
 #include "sbsim/radio/channel/ChannelMedium.h"
+#include "sbsim/radio/channel/FarCells.h"
 
 namespace sbsim::radio {
 namespace {
@@ -315,6 +317,93 @@ TEST(ChannelMedium, ExtraDelayModelsPostponeDeliveries) {
         }
     }
     EXPECT_GT(distinct.size(), 10u);  // drawn per receiver
+}
+
+/// The rx line of `receiver` from `sender` in a trace: its SINR (dB), or NaN.
+double sinrOf(const std::vector<std::string>& lines, const std::string& receiver, const std::string& sender) {
+    for (const std::string& line : lines) {
+        std::istringstream in(line);
+        std::string t, event, station, from, seq;
+        double power = 0, sinr = 0;
+        in >> t >> event >> station >> from >> seq >> power >> sinr;
+        if (event == "rx" && station == receiver && from == sender) return sinr;
+    }
+    return std::nan("");
+}
+
+TEST(ChannelMedium, TheFarTierCountsEachReceiverOnceAndInterferesAsItsLinksDid) {
+    ChannelSettings cells = Bench::quiet();
+    ChannelSettings links = cells;
+    links.farCellM = 0;
+    const Bench probe({{"a", 0}}, cells);
+    const double far = probe.medium->farRange();
+    const double cutoff = probe.medium->cutoffRange();
+    ASSERT_GE(far, cells.traceRange);
+    ASSERT_LT(far + 300, cutoff);
+
+    // One sender, listeners every 10 m to the cutoff: each is one link whether its own or its cell's.
+    std::vector<std::pair<std::string, double>> line{{"s", 0}};
+    for (int k = 1; k * 10.0 < cutoff - 100; ++k) line.emplace_back(fmt::format("l{}", k), k * 10.0);
+    std::uint64_t stations[2] = {}, interference[2] = {}, full[2] = {};
+    std::vector<std::string> traces[2];
+    for (int mode : {0, 1}) {
+        Bench b(line, mode == 0 ? links : cells);
+        b.send(SimTime::fromMilliseconds(1), "s");
+        b.run();
+        for (const std::uint64_t n : b.medium->counts().at("Test").linkStations) stations[mode] += n;
+        interference[mode] = b.medium->linkFigures()->interference;
+        full[mode] = b.medium->linkFigures()->full;
+        traces[mode] = b.trace.lines;  // lost lines end at the trace range, short of the far tier
+    }
+    EXPECT_EQ(stations[0], line.size() - 1);
+    EXPECT_EQ(stations[1], stations[0]);
+    EXPECT_EQ(interference[1], interference[0]);
+    EXPECT_EQ(full[1], full[0]);
+    EXPECT_TRUE(traces[0] == traces[1]);
+
+    // A receiver decoding a near frame while a far sender beyond the far range sends: the far
+    // frame lowers the SINR as its link did (the receiver at its cell's centre).
+    const double at = 0.5 * cells.farCellM;
+    const std::vector<std::pair<std::string, double>> scene{{"r", at}, {"s", at - 150}, {"f", at + far + 150}};
+    double sinr[3] = {};
+    for (int mode : {0, 1, 2}) {
+        Bench b(scene, mode == 0 ? links : cells);
+        b.send(SimTime::fromMilliseconds(1), "s");
+        if (mode < 2) b.send(SimTime::fromMilliseconds(1), "f");
+        b.run();
+        sinr[mode] = sinrOf(b.trace.lines, "r", "s");
+    }
+    EXPECT_GT(sinr[2] - sinr[0], 0.5);  // the far frame's interference counts
+    EXPECT_NEAR(sinr[1], sinr[0], 0.05);
+}
+
+TEST(FarCells, AStationAtNoPlaceHasNoCellAndLeavesTheOthersTheirs) {
+    ChannelStations stations;
+    for (const auto& [id, x, y] : {std::tuple{"a", 10.0, 10.0},
+                                   {"b", 250.0, 30.0},
+                                   {"c", 260.0, 90.0},
+                                   {"lost", -1073741824.0, -1073741824.0}}) {
+        const auto s = stations.add(id, 0);
+        stations.x[s] = x;
+        stations.y[s] = y;
+        stations.present[s] = 1;
+    }
+    FarCells cells(100);
+    cells.newStep(stations);
+    ASSERT_TRUE(cells.usable());
+    EXPECT_EQ(cells.cellOf(3), -1);
+    EXPECT_EQ(cells.cellOf(1), cells.cellOf(2));
+    EXPECT_NE(cells.cellOf(0), cells.cellOf(1));
+    EXPECT_TRUE(cells.beyond(1, 0, 0, 199));  // b's cell [200, 300) x [0, 100) is 200 m away at least
+    EXPECT_FALSE(cells.beyond(1, 0, 0, 201));
+    EXPECT_FALSE(cells.beyond(3, 0, 0, 1));
+    std::vector<std::pair<FarCells::Cell, std::uint32_t>> seen;
+    cells.forEachOccupied(0, 0, 400,
+                          [&](FarCells::Cell c, std::uint32_t n, double, double, std::int32_t, std::int32_t) {
+                              seen.emplace_back(c, n);
+                          });
+    const std::vector<std::pair<FarCells::Cell, std::uint32_t>> expected{{cells.cellOf(0), 1}, {cells.cellOf(1), 2}};
+    EXPECT_EQ(seen, expected);
 }
 
 TEST(ChannelMedium, BusyRatioAndDccFollowTheLoad) {

@@ -150,6 +150,100 @@ TEST_F(ReceptionTest, AnInterferenceOnlyLinkAddsItsPowerButIsNeverDetected) {
     EXPECT_NEAR(reception.leave(1, quiet.units[0]), dbToLinear(-60), 1e-15);
 }
 
+/// A step of one sender whose only links are whole far cells (ChannelSettings::farCellM).
+StepLinks farCells(std::vector<std::pair<std::int32_t, double>> cells) {
+    StepLinks step;
+    for (const auto& [cell, dbm] : cells) {
+        step.farCell.push_back(cell);
+        step.farUnits.push_back(Reception::unitsOf(dbToLinear(dbm)));
+        step.farOccupants.push_back(1);
+        step.farBin.push_back(12);
+    }
+    return step;
+}
+
+TEST_F(ReceptionTest, AFarCellsFieldInterferesWithTheFrameItsStationsDecodeAndIsSensed) {
+    // Stations 0, 1 and 2 stand in one 100 m cell, far cell 0.
+    ChannelStations stations;
+    for (const char* id : {"a", "b", "c"}) {
+        const auto s = stations.add(id, 0);
+        stations.x[s] = 10.0 + s;
+        stations.y[s] = 20.0;
+        stations.present[s] = 1;
+    }
+    FarCells cells(100);
+    cells.newStep(stations);
+    ASSERT_EQ(cells.cellOf(2), 0);
+    reception.moveStations(cells);
+    // Station 1 decodes a frame; station 2 listens idle.
+    std::vector<Link> decoded{linkTo(1, -60)};
+    decoded[0].cell = 0;
+    reception.frameStarts(1, allDrawn(decoded), decoded);
+    ASSERT_TRUE(decoded[0].locked);
+    log.changes.clear();
+    // A far frame's field rises in cell 0 and falls again before the decoded frame ends: the
+    // largest interference is that field, found in the cell's log at the end. Below the sensing
+    // threshold, no station's carrier sense changes.
+    const StepLinks far = farCells({{0, -92}, {3, -80}});
+    std::vector<Link> none;
+    reception.frameStarts(2, far, none);
+    EXPECT_NEAR(reception.farFieldMw(0), dbToLinear(-92), 1e-18);
+    EXPECT_TRUE(log.changes.empty());
+    // Another far frame raises the field above it (−92 and −86.5 dBm): stations 0 and 2 sense it
+    // busy, and idle again when it ends.
+    const StepLinks loud = farCells({{0, -85.9}});
+    reception.frameStarts(3, loud, none);
+    const std::vector<std::pair<Reception::Slot, bool>> busy{{0, true}, {2, true}};
+    EXPECT_EQ(log.changes, busy);
+    reception.farEnds(loud);
+    reception.farEnds(far);
+    const std::vector<std::pair<Reception::Slot, bool>> idle{{0, true}, {2, true}, {0, false}, {2, false}};
+    EXPECT_EQ(log.changes, idle);
+    EXPECT_EQ(reception.farFieldMw(0), 0.0);
+    EXPECT_EQ(reception.farFieldMw(3), 0.0);
+    reception.frameEnds(1, SimTime::zero(), decoded[0]);
+    EXPECT_NEAR(decoded[0].maxInterferenceMw, dbToLinear(-92) + dbToLinear(-85.9), 1e-18);
+    EXPECT_EQ(reception.logOverflows(), 0u);
+}
+
+TEST_F(ReceptionTest, ADecodingStationsInterferenceIsTheLargestSumOfItsLinksAndItsCellsField) {
+    // Stations 1 and 2 decode a frame each, in far cells 0 and 1.
+    std::vector<Link> first{linkTo(1, -60)}, second{linkTo(2, -60)};
+    first[0].cell = 0;
+    second[0].cell = 1;
+    reception.frameStarts(1, allDrawn(first), first);
+    reception.frameStarts(2, allDrawn(second), second);
+    const auto own = [](Reception::Slot r) {
+        StepLinks near;
+        near.receivers.push_back(r);
+        near.bin.push_back(0);
+        near.distance.push_back(300);
+        near.tier.push_back(StepLinks::kInterference);
+        near.units.push_back(Reception::unitsOf(dbToLinear(-90)));
+        return near;
+    };
+    std::vector<Link> none;
+    // At station 1 a link of its own (−90 dBm) comes and goes, then the field rises (−96 dBm)
+    // twice: the largest sum is the link alone, not the link and the field together.
+    const StepLinks near1 = own(1);
+    reception.frameStarts(3, near1, none);
+    reception.leave(1, near1.units[0]);
+    const StepLinks far = farCells({{0, -96}, {1, -96}});
+    reception.frameStarts(4, far, none);
+    // At station 2 the link comes while the field is up: their sum.
+    const StepLinks near2 = own(2);
+    reception.frameStarts(5, near2, none);
+    reception.leave(2, near2.units[0]);
+    reception.frameStarts(6, farCells({{0, -96}}), none);
+    reception.frameEnds(1, SimTime::zero(), first[0]);
+    reception.frameEnds(2, SimTime::zero(), second[0]);
+    EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
+    EXPECT_NEAR(second[0].maxInterferenceMw, dbToLinear(-90) + dbToLinear(-96), 1e-18);
+    // A field that rises after the frame ended is no part of it.
+    reception.frameStarts(7, farCells({{0, -80}}), none);
+    EXPECT_NEAR(first[0].maxInterferenceMw, dbToLinear(-90), 1e-18);
+}
+
 TEST_F(ReceptionTest, AStrongLoneFrameIsDecoded) {
     std::vector<Link> frame{linkTo(1, -40)};
     reception.frameStarts(1, allDrawn(frame), frame);
