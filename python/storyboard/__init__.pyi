@@ -199,6 +199,22 @@ class RelativeDistanceCondition(Condition):
         freespace: bool = False,
     ) -> None: ...
 
+class PositionDistanceCondition(Condition):
+    """OpenSCENARIO's DistanceCondition to a position: the distance from the vehicle to ``point`` (SUMO x, y)
+    compared by ``rule`` with ``value`` m, measured as RelativeDistanceCondition measures (``kind`` in the
+    vehicle's frame; from its centre or, ``freespace=True``, from its outline)."""
+
+    value: float
+    freespace: bool
+    def __init__(
+        self,
+        point: Coord | tuple[float, float],
+        value: float,
+        rule: Literal["lessThan", "lessOrEqual", "equalTo", "greaterOrEqual", "greaterThan", "notEqualTo"] = "lessThan",
+        kind: Literal["longitudinal", "lateral", "cartesian"] = "cartesian",
+        freespace: bool = False,
+    ) -> None: ...
+
 class AndCondition(Condition):
     def __init__(self, a: Condition, b: Condition) -> None: ...
 

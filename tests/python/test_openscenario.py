@@ -353,6 +353,9 @@ def test_every_mapped_condition(road: Path, tmp_path: Path) -> None:
     assert x("Other", near) - x("Ego", near) <= 30 < x("Other", before(near)) - x("Ego", before(near))
     point = fired["Point"]
     assert abs(x("Ego", point) - 300) <= 10 < abs(x("Ego", before(point)) - 300)
+    # Longitudinal free space to a point (300, on lane 0): from Ego's front bumper, 300 - x < 20.
+    ahead = fired["Ahead"]
+    assert 300 - x("Ego", ahead) < 20 <= 300 - x("Ego", before(ahead))
     brake = fired["Brake"]
     assert fcd.speed["Ego"][brake] - fcd.speed["Ego"][before(brake)] < -0.2  # < -2 m/s2 over 0.1 s
     assert {lane[-2:] for lane in fcd.lane["Ego"].values()} == {"_0"}, "an entity keeps its lane (behind Other)"
@@ -370,6 +373,8 @@ def test_every_mapped_condition(road: Path, tmp_path: Path) -> None:
         "StandstillCondition(1 s)",
         "CollisionCondition",
         "RelativeDistanceCondition(vehicle Other, cartesian reference points, lessThan 30 m)",
+        "PositionDistanceCondition((300, ",
+        "longitudinal freespace, lessThan 20 m)",
         "SpawnEffect('Late', route B0C0 C0D0, type xosc_Late)",
         "story 'S/A/Add (world)'",
     ):

@@ -246,16 +246,14 @@ class ConditionReader(Reader):
 
     def distance(self, c: Any, scope: Scope) -> Recipe | None:
         value, rule = self.number(c, "value", scope), self.rule(c, scope)
-        if rule not in ("lessThan", "lessOrEqual", "greaterThan", "greaterOrEqual"):
-            self.problems.add(c, f"rule '{rule}'")
+        kinds = {"longitudinal": "longitudinal", "lateral": "lateral", "cartesianDistance": "cartesian"}
+        kinds["euclidianDistance"] = "cartesian"  # 1.1's name
+        kind = self.text(c, "relativeDistanceType", scope, "cartesianDistance")
+        system = self.text(c, "coordinateSystem", scope, "entity")
+        if kind not in kinds or system != "entity":
+            self.problems.add(c, f"relativeDistanceType '{kind}' in coordinateSystem '{system}' (entity is)")
             return None
-        kind = c.get("relativeDistanceType", "cartesianDistance")
-        if kind not in ("cartesianDistance", "euclidianDistance"):
-            self.problems.add(c, f"relativeDistanceType '{kind}' (cartesianDistance is)")
-            return None
-        if self.text(c, "freespace", scope, "false") == "true":
-            self.problems.add(c, "freespace=true (distances are between front bumpers)")
-            return None
+        freespace = self.text(c, "freespace", scope, "false") == "true"
         target: Any
         position = c.find("Position")
         entity = position.find("RelativeObjectPosition") if position is not None else None
@@ -269,6 +267,15 @@ class ConditionReader(Reader):
             if lane is None:
                 return None
             target = self.network.xy(lane, pos)
+        measure = kinds[kind]
+        if measure != "cartesian" or freespace:
+            # In the entity's frame, from its centre or outline, as RelativeDistanceCondition measures.
+            if isinstance(target, str):
+                return lambda b: b.sb.RelativeDistanceCondition(target, value, rule, measure, freespace)
+            return lambda b: b.sb.PositionDistanceCondition(target, value, rule, measure, freespace)
+        if rule not in ("lessThan", "lessOrEqual", "greaterThan", "greaterOrEqual"):
+            self.problems.add(c, f"rule '{rule}' (a cartesian distance between reference points takes <, <=, >, >=)")
+            return None
 
         def build(b: Build) -> Any:
             within = b.sb.DistanceCondition(target, value)

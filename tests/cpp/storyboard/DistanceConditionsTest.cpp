@@ -9,6 +9,7 @@
 #include <string>
 
 #include "StoryboardTestSupport.h"
+#include "sbsim/storyboard/conditions/PositionDistanceCondition.h"
 #include "sbsim/storyboard/conditions/RelativeDistanceCondition.h"
 #include "sbsim/storyboard/conditions/TraveledDistanceCondition.h"
 #include "sbsim/traffic/TrafficQueries.h"
@@ -46,6 +47,38 @@ TEST(RelativeDistanceCondition, DistancesByKindBetweenCentresAndOutlines) {
     // Overlapping outlines: no free space.
     EXPECT_NEAR(measured(Kind::Cartesian, true, "beside"), 0.0, 1e-9);
     EXPECT_NEAR(measured(Kind::Lateral, false, "beside"), 1.5, 1e-9);
+}
+
+double toPoint(const Eigen::Vector2d& point, Kind kind, bool freespace) {
+    const PositionDistanceCondition c(point, 0, ComparisonRule::GreaterOrEqual, kind, freespace);
+    return c.distance(scene().snapshot(), scene().index("ego"));
+}
+
+TEST(PositionDistanceCondition, DistancesToAPointByKindFromTheCentreAndTheOutline) {
+    // ego: centre (7.5, 0), outline x 5..10, y -1..1, heading east; the point (20, 3).
+    const Eigen::Vector2d p(20, 3);
+    EXPECT_NEAR(toPoint(p, Kind::Longitudinal, false), 12.5, 1e-9);
+    EXPECT_NEAR(toPoint(p, Kind::Longitudinal, true), 10.0, 1e-9);  // 20 − 10
+    EXPECT_NEAR(toPoint(p, Kind::Lateral, false), 3.0, 1e-9);
+    EXPECT_NEAR(toPoint(p, Kind::Lateral, true), 2.0, 1e-9);  // 3 − 1
+    EXPECT_NEAR(toPoint(p, Kind::Cartesian, false), std::sqrt(12.5 * 12.5 + 9), 1e-9);
+    EXPECT_NEAR(toPoint(p, Kind::Cartesian, true), std::sqrt(100.0 + 4), 1e-9);  // from the corner (10, 1)
+    // A point on the outline or inside it: no free space.
+    for (const Kind k : {Kind::Longitudinal, Kind::Lateral, Kind::Cartesian}) {
+        EXPECT_NEAR(toPoint({8, 0.5}, k, true), 0.0, 1e-9);
+    }
+    const auto holds = [](double value, ComparisonRule rule) {
+        PositionDistanceCondition c({20, 3}, value, rule, Kind::Longitudinal, true);  // 10 m
+        return static_cast<bool>(scene().test(c, "ego"));
+    };
+    EXPECT_FALSE(holds(10.0, ComparisonRule::LessThan));
+    EXPECT_TRUE(holds(10.0, ComparisonRule::LessOrEqual));
+    EXPECT_TRUE(holds(10.005, ComparisonRule::EqualTo)) << "within 0.01 m";
+    EXPECT_TRUE(holds(9.0, ComparisonRule::GreaterThan));
+    EXPECT_THROW(PositionDistanceCondition({NAN, 0}, 1, ComparisonRule::LessThan, Kind::Lateral, false),
+                 std::invalid_argument);
+    EXPECT_THROW(PositionDistanceCondition({0, 0}, -1, ComparisonRule::LessThan, Kind::Lateral, false),
+                 std::invalid_argument);
 }
 
 TEST(RelativeDistanceCondition, RulesYieldTheVehicle) {

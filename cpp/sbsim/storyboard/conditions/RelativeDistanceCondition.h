@@ -6,6 +6,7 @@
 #include "sbsim/storyboard/Condition.h"
 #include "sbsim/storyboard/conditions/ComparisonRule.h"
 #include "sbsim/storyboard/conditions/SnapshotStamp.h"
+#include "sbsim/storyboard/geometry/Distance.h"
 
 namespace sbsim::storyboard {
 
@@ -17,7 +18,7 @@ namespace sbsim::storyboard {
 /// the snapshot's positions, headings, lengths and widths. equalTo holds within 0.01 m.
 class RelativeDistanceCondition : public Condition {
 public:
-    enum class Kind { Longitudinal, Lateral, Cartesian };
+    using Kind = geometry::DistanceKind;
     static constexpr double kEqualTolerance = 0.01;  ///< m
 
     /// Throws std::invalid_argument for an empty id or a negative or non-finite value.

@@ -4,6 +4,7 @@
 
 #include <limits>
 #include <map>
+#include <utility>
 
 #include "sbsim/storyboard/conditions/AccelerationCondition.h"
 #include "sbsim/storyboard/conditions/AllCondition.h"
@@ -28,6 +29,7 @@
 #include "sbsim/storyboard/conditions/NotCondition.h"
 #include "sbsim/storyboard/conditions/OrCondition.h"
 #include "sbsim/storyboard/conditions/PolygonCondition.h"
+#include "sbsim/storyboard/conditions/PositionDistanceCondition.h"
 #include "sbsim/storyboard/conditions/RelativeDistanceCondition.h"
 #include "sbsim/storyboard/conditions/RisingCondition.h"
 #include "sbsim/storyboard/conditions/RoadCondition.h"
@@ -86,6 +88,21 @@ std::set<std::string> toStringSet(const py::handle& ids, const std::string& what
         out.insert(id.cast<std::string>());
     }
     return out;
+}
+
+/// A distance condition's rule and kind by name (`what`: the condition, for the error).
+std::pair<ComparisonRule, geometry::DistanceKind> ruleAndKind(const std::string& rule, const std::string& kind,
+                                                              const std::string& what) {
+    const auto r = ruleNamed(rule);
+    if (!r) {
+        throw py::value_error(what +
+                              " rule must be 'lessThan', 'lessOrEqual', 'equalTo', 'greaterOrEqual', 'greaterThan' "
+                              "or 'notEqualTo', got '" +
+                              rule + "'");
+    }
+    const auto k = RelativeDistanceCondition::kindNamed(kind);
+    if (!k) throw py::value_error(what + " kind must be 'longitudinal', 'lateral' or 'cartesian', got '" + kind + "'");
+    return {*r, *k};
 }
 
 }  // namespace
@@ -225,20 +242,8 @@ void bindConditions(py::module_& m) {
                  if (vehicle.empty()) throw py::value_error("RelativeDistanceCondition vehicle id is empty");
                  const double d = toNumber(value, "RelativeDistanceCondition value");
                  if (d < 0) throw py::value_error("RelativeDistanceCondition value must be >= 0 m");
-                 const auto r = ruleNamed(rule);
-                 if (!r) {
-                     throw py::value_error(
-                         "RelativeDistanceCondition rule must be 'lessThan', 'lessOrEqual', 'equalTo', "
-                         "'greaterOrEqual', 'greaterThan' or 'notEqualTo', got '" +
-                         rule + "'");
-                 }
-                 const auto k = RelativeDistanceCondition::kindNamed(kind);
-                 if (!k) {
-                     throw py::value_error(
-                         "RelativeDistanceCondition kind must be 'longitudinal', 'lateral' or 'cartesian', got '" +
-                         kind + "'");
-                 }
-                 return std::make_shared<RelativeDistanceCondition>(vehicle, d, *r, *k, freespace);
+                 const auto [r, k] = ruleAndKind(rule, kind, "RelativeDistanceCondition");
+                 return std::make_shared<RelativeDistanceCondition>(vehicle, d, r, k, freespace);
              }),
              py::arg("vehicle"), py::arg("value"), py::arg("rule") = "lessThan", py::arg("kind") = "cartesian",
              py::arg("freespace") = false)
@@ -251,6 +256,18 @@ void bindConditions(py::module_& m) {
                                    return std::string(RelativeDistanceCondition::kindName(c.kind()));
                                })
         .def_property_readonly("freespace", &RelativeDistanceCondition::freespace);
+    py::class_<PositionDistanceCondition, Condition, py::smart_holder>(m, "PositionDistanceCondition")
+        .def(py::init([](const py::object& point, const py::object& value, const std::string& rule,
+                         const std::string& kind, bool freespace) {
+                 const double d = toNumber(value, "PositionDistanceCondition value");
+                 if (d < 0) throw py::value_error("PositionDistanceCondition value must be >= 0 m");
+                 const auto [r, k] = ruleAndKind(rule, kind, "PositionDistanceCondition");
+                 return std::make_shared<PositionDistanceCondition>(toSumoPoint(point), d, r, k, freespace);
+             }),
+             py::arg("point"), py::arg("value"), py::arg("rule") = "lessThan", py::arg("kind") = "cartesian",
+             py::arg("freespace") = false)
+        .def_property_readonly("value", &PositionDistanceCondition::value)
+        .def_property_readonly("freespace", &PositionDistanceCondition::freespace);
     py::class_<AndCondition, Condition, py::smart_holder>(m, "AndCondition")
         .def(py::init<ConditionPtr, ConditionPtr>(), py::arg("a"), py::arg("b"));
     py::class_<OrCondition, Condition, py::smart_holder>(m, "OrCondition")
