@@ -281,3 +281,19 @@ def sdk_prefix(directory: Path) -> Path:
     if done.returncode != 0:
         pytest.fail(f"installing the SDK failed:\n{done.stdout}\n{done.stderr}")
     return prefix
+
+
+def netgenerate_grid(out: Path, name: str, *options: str, end: float = 60) -> Path:
+    """A grid network netgenerate makes in `out` (`--grid` with `options`, no U-turns, seed 1) and a
+    sumocfg of it (0.1 s steps from 0 to `end`); returns the sumocfg."""
+    import sumo
+
+    net = out / f"{name}.net.xml"
+    command = [str(Path(sumo.SUMO_HOME) / "bin" / "netgenerate"), "--grid", *options]
+    subprocess.run([*command, "--no-turnarounds=true", "--seed=1", "-o", str(net)], check=True, capture_output=True)
+    cfg = out / f"{name}.sumocfg"
+    cfg.write_text(
+        f'<configuration><input><net-file value="{net.name}"/></input>'
+        f'<time><begin value="0"/><end value="{end:g}"/><step-length value="0.1"/></time></configuration>\n'
+    )
+    return cfg

@@ -9,7 +9,6 @@ import json
 import os
 import re
 import shutil
-import subprocess
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -17,7 +16,7 @@ from typing import Any
 import pytest
 from sbsim.events import read_events
 from sbsim.runner import executable, run
-from sbsim_helpers import FcdTrace, assert_bad_input, assert_no_crash, read_fcd
+from sbsim_helpers import FcdTrace, assert_bad_input, assert_no_crash, netgenerate_grid, read_fcd
 
 CORPUS = Path(__file__).resolve().parents[1] / "openscenario"
 
@@ -25,33 +24,12 @@ CORPUS = Path(__file__).resolve().parents[1] / "openscenario"
 @pytest.fixture(scope="module")
 def road(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The straight road and a sumocfg (0.1 s steps, 60 s); veh0 drives it from t = 0 (for --bind)."""
-    import sumo
-
     out = tmp_path_factory.mktemp("xosc-road")
-    subprocess.run(
-        [
-            str(Path(sumo.SUMO_HOME) / "bin" / "netgenerate"),
-            "--grid",
-            "--grid.x-number=4",
-            "--grid.y-number=1",
-            "--grid.length=500",
-            "--default.lanenumber=2",
-            "--default.speed=33.33",
-            "--no-turnarounds=true",
-            "--seed=1",
-            "-o",
-            str(out / "line.net.xml"),
-        ],
-        check=True,
-        capture_output=True,
-    )
+    line = ("--grid.x-number=4", "--grid.y-number=1", "--grid.length=500", "--default.lanenumber=2")
+    netgenerate_grid(out, "line", *line, "--default.speed=33.33")
     (out / "veh0.rou.xml").write_text(
         '<routes><vehicle id="veh0" depart="0" departSpeed="10" departPos="20">'
         '<route edges="A0B0 B0C0 C0D0"/></vehicle></routes>\n'
-    )
-    (out / "line.sumocfg").write_text(
-        '<configuration><input><net-file value="line.net.xml"/></input>'
-        '<time><begin value="0"/><end value="60"/><step-length value="0.1"/></time></configuration>\n'
     )
     (out / "bound.sumocfg").write_text(
         '<configuration><input><net-file value="line.net.xml"/><route-files value="veh0.rou.xml"/></input>'

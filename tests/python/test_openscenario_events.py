@@ -8,12 +8,11 @@ comment; the straight road and the helpers are test_openscenario.py's, the grid 
 
 from __future__ import annotations
 
-import subprocess
 from pathlib import Path
 
 import pytest
 from sbsim.runner import run
-from sbsim_helpers import FcdTrace, assert_bad_input
+from sbsim_helpers import FcdTrace, assert_bad_input, netgenerate_grid
 from test_openscenario import ends, road, run_xosc, scenario, starts
 
 __all__ = ["road"]  # the fixture, shared with test_openscenario.py
@@ -22,29 +21,9 @@ __all__ = ["road"]  # the fixture, shared with test_openscenario.py
 @pytest.fixture(scope="module")
 def grid(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """A 3 x 3 grid of one-lane 200 m roads (A0..C2) without U-turns, and a sumocfg (0.1 s, 100 s)."""
-    import sumo
-
     out = tmp_path_factory.mktemp("xosc-grid")
-    subprocess.run(
-        [
-            str(Path(sumo.SUMO_HOME) / "bin" / "netgenerate"),
-            "--grid",
-            "--grid.number=3",
-            "--grid.length=200",
-            "--default.lanenumber=1",
-            "--default.speed=13.89",
-            "--no-turnarounds=true",
-            "--seed=1",
-            "-o",
-            str(out / "grid.net.xml"),
-        ],
-        check=True,
-        capture_output=True,
-    )
-    (out / "grid.sumocfg").write_text(
-        '<configuration><input><net-file value="grid.net.xml"/></input>'
-        '<time><begin value="0"/><end value="100"/><step-length value="0.1"/></time></configuration>\n'
-    )
+    options = ("--grid.number=3", "--grid.length=200", "--default.lanenumber=1", "--default.speed=13.89")
+    netgenerate_grid(out, "grid", *options, end=100)
     return out
 
 

@@ -9,17 +9,14 @@ scenario's comment (or the test's, for a scenario it edits)."""
 from __future__ import annotations
 
 import math
-import shutil
 import subprocess
 from pathlib import Path
-from typing import Any
 
 import pytest
 from sbsim.events import read_events
 from sbsim.runner import run
-from sbsim_helpers import FcdTrace, assert_bad_input, assert_no_crash, read_fcd
-
-CORPUS = Path(__file__).resolve().parents[1] / "openscenario"
+from sbsim_helpers import assert_bad_input
+from test_openscenario import run_xosc, scenario, starts
 
 NODES = """<nodes>
   <node id="A" x="0" y="0"/>
@@ -84,31 +81,8 @@ def signal_net(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return out / "b.sumocfg"
 
 
-def scenario(tmp_path: Path, name: str) -> Path:
-    shutil.copytree(CORPUS, tmp_path / "corpus")
-    return tmp_path / "corpus" / name
-
-
-def run_xosc(xosc: Path, cfg: Path, *extra: str) -> tuple[list[dict[str, Any]], FcdTrace]:
-    events, fcd = xosc.with_suffix(".events.jsonl"), xosc.with_suffix(".fcd.xml")
-    result = run(
-        cfg,
-        events=events,
-        sumo_options=[f"--fcd-output {fcd} --precision 4"],
-        extra=["--scenario", str(xosc), *extra],
-        timeout=120,
-    )
-    assert_no_crash(result)
-    assert result.returncode == 0, result.stderr
-    return read_events(events), read_fcd(fcd, step=0.1)
-
-
-def starts(events: list[dict[str, Any]], story: str) -> list[float]:
-    return [e["t"] for e in events if e["type"] == "activate" and e["story"] == story]
-
-
 def test_conditions_fire_when_the_programme_shows_the_state(signal_net: Path, tmp_path: Path) -> None:
-    events, _ = run_xosc(scenario(tmp_path, "signal-condition.xosc"), signal_net)
+    events, _ = run_xosc(scenario(tmp_path, "signal-condition.xosc"), sumocfg=signal_net)
     assert starts(events, "S/A/Whole") == [0.2, 26.1], "GGrr at the start, then the next cycle"
     assert starts(events, "S/A/Green") == [13.1], "link 3 turns green at 13"
     assert starts(events, "S/A/Yellow") == [23.1], "phase eastYellow from 23"
@@ -117,17 +91,17 @@ def test_conditions_fire_when_the_programme_shows_the_state(signal_net: Path, tm
 
 def test_a_state_action_holds_the_light_and_the_entity_stops(signal_net: Path, tmp_path: Path) -> None:
     xosc = scenario(tmp_path, "signal-action.xosc")
-    events, fcd = run_xosc(xosc, signal_net)
+    events, fcd = run_xosc(xosc, sumocfg=signal_net)
     assert starts(events, "S/A/Red (world)") == [5.1]
     assert starts(events, "S/A/Held") == [], "link 0 stays green: the light is held at GGrr"
     assert fcd.lane["Ego"][40.0] == "AB_0" and fcd.speed["Ego"][40.0] == pytest.approx(0.0)
     # Without the action the programme runs and Ego passes in link 3's green.
-    events, fcd = run_xosc(xosc, signal_net, "--param", "At=500")
+    events, fcd = run_xosc(xosc, "--param", "At=500", sumocfg=signal_net)
     assert starts(events, "S/A/Red (world)") == []
     assert starts(events, "S/A/Held") == [10.1]
     assert fcd.lane["Ego"][40.0] == "BC_0"
     # The whole light red: link 0 too, seen the step after the action.
-    events, fcd = run_xosc(xosc, signal_net, "--param", "Signal=B", "--param", "State=rrrr")
+    events, fcd = run_xosc(xosc, "--param", "Signal=B", "--param", "State=rrrr", sumocfg=signal_net)
     assert starts(events, "S/A/Held") == [5.2]
     assert fcd.lane["Ego"][40.0] == "AB_0" and fcd.speed["Ego"][40.0] == pytest.approx(0.0)
 
@@ -178,7 +152,7 @@ def test_a_controller_action_switches_the_programme_to_the_phase(signal_net: Pat
             '<TrafficSignalControllerAction trafficSignalControllerRef="B" phase="eastGreen"/>',
         )
     )
-    events, fcd = run_xosc(xosc, signal_net)
+    events, fcd = run_xosc(xosc, sumocfg=signal_net)
     assert starts(events, "S/A/Red (world)") == [5.1]
     assert starts(events, "S/A/Held") == [5.2]
     assert fcd.lane["Ego"][25.0] == "AB_0" and fcd.speed["Ego"][25.0] == pytest.approx(0.0)
@@ -293,7 +267,7 @@ def test_a_story_on_a_link_and_a_kept_hold(signal_net: Path, tmp_path: Path, hol
 
 
 def test_a_misc_object_is_an_obstacle_the_entity_stops_behind(signal_net: Path, tmp_path: Path) -> None:
-    events, fcd = run_xosc(scenario(tmp_path, "obstacle.xosc"), signal_net)
+    events, fcd = run_xosc(scenario(tmp_path, "obstacle.xosc"), sumocfg=signal_net)
     assert starts(events, "Init/Box (obstacle)") == [0.2], "from when it runs (spawned at the first step)"
     box = {round(x, 3) for x, _ in fcd.pos["Box"].values()}
     assert box == {200.0}, "held at speed 0 where it was put"
