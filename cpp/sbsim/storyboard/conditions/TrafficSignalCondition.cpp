@@ -7,12 +7,11 @@
 #include <string_view>
 
 #include "sbsim/storyboard/CheckContext.h"
+#include "sbsim/storyboard/SignalSpec.h"
 
 namespace sbsim::storyboard {
 
 namespace {
-
-constexpr std::string_view kLetters = "GgrsuyYoO";  // SUMO's signal states
 
 /// A letter's colour: SUMO's upper and lower case differ in priority only.
 char colour(char letter) {
@@ -23,19 +22,7 @@ char colour(char letter) {
 
 TrafficSignalCondition::TrafficSignalCondition(std::string tls, std::string state, std::vector<int> links)
     : tls_(std::move(tls)), state_(std::move(state)), links_(std::move(links)) {
-    if (tls_.empty()) throw std::invalid_argument("TrafficSignalCondition needs a traffic light id");
-    if (state_.empty()) throw std::invalid_argument("TrafficSignalCondition needs a state");
-    if (const auto bad = state_.find_first_not_of(kLetters); bad != std::string::npos) {
-        throw std::invalid_argument(fmt::format("TrafficSignalCondition state '{}': '{}' is not a signal letter ({})",
-                                                state_, state_[bad], kLetters));
-    }
-    if (!links_.empty() && state_.size() != 1) {
-        throw std::invalid_argument(
-            fmt::format("TrafficSignalCondition state '{}' for links: one letter, which each link shows", state_));
-    }
-    for (const int link : links_) {
-        if (link < 0) throw std::invalid_argument(fmt::format("TrafficSignalCondition: link {} < 0", link));
-    }
+    checkSignalSpec("TrafficSignalCondition", tls_, state_, links_);
 }
 
 bool TrafficSignalCondition::shows(const std::string& now) const {

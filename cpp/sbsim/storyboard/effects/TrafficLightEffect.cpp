@@ -7,25 +7,13 @@
 #include <string_view>
 
 #include "sbsim/storyboard/CheckContext.h"
+#include "sbsim/storyboard/SignalSpec.h"
 
 namespace sbsim::storyboard {
 
 TrafficLightEffect::TrafficLightEffect(std::string tls, std::string state, std::vector<int> links, bool keep)
     : tls_(std::move(tls)), state_(std::move(state)), links_(std::move(links)), keep_(keep) {
-    if (tls_.empty()) throw std::invalid_argument("TrafficLightEffect needs a traffic light id");
-    if (state_.empty()) throw std::invalid_argument("TrafficLightEffect needs a state, one letter per signal");
-    constexpr std::string_view kLetters = "GgrsuyYoO";  // SUMO's signal states
-    if (const auto bad = state_.find_first_not_of(kLetters); bad != std::string::npos) {
-        throw std::invalid_argument(fmt::format("TrafficLightEffect state '{}': '{}' is not a signal letter ({})",
-                                                state_, state_[bad], kLetters));
-    }
-    if (!links_.empty() && state_.size() != 1) {
-        throw std::invalid_argument(
-            fmt::format("TrafficLightEffect state '{}' for links: one letter, which each link shows", state_));
-    }
-    for (const int link : links_) {
-        if (link < 0) throw std::invalid_argument(fmt::format("TrafficLightEffect: link {} < 0", link));
-    }
+    checkSignalSpec("TrafficLightEffect", tls_, state_, links_);
 }
 
 std::string TrafficLightEffect::describe() const {
