@@ -40,7 +40,6 @@ CorrelatedShadowing::Index CorrelatedShadowing::pair(std::uint64_t a, std::uint6
             states_[slot.index] = State{};
         }
         slot.key = key;
-        states_[slot.index].key = key;
         ++used_;
     }
     states_[slot.index].seen = now;
@@ -82,13 +81,12 @@ double CorrelatedShadowing::valueDb(Index pair, std::uint64_t a, double ax, doub
                                     double by) {
     State& s = states_[pair];
     if (a > b) {  // the pair's own order: its first station has the smaller key
+        std::swap(a, b);
         std::swap(ax, bx);
         std::swap(ay, by);
     }
     // The pair's n-th value draws from (seed, pair, n) and nothing else.
-    const auto draw = [&] {
-        return CounterRandom(seed_, s.key.lo, s.draws++, s.key.hi, DrawPurpose::CorrelatedShadowing).normal();
-    };
+    const auto draw = [&] { return CounterRandom(seed_, a, s.draws++, b, DrawPurpose::CorrelatedShadowing).normal(); };
     if (s.fresh) {
         s.z = draw();
         s.fresh = false;

@@ -68,15 +68,17 @@ private:
         Key key{};
         Index index = kEmpty;
     };
-    /// One record per pair: a frame reads and writes all of it at once, so its fields sit together.
-    struct State {
-        Key key{};
+    /// One record per pair: a frame reads and writes all of it at once, so its fields sit together,
+    /// in one cache line of its own. (With its key, 80 bytes, every record straddled two lines and a
+    /// drawn link paid two misses, one of them past the prefetch; the key is the callers' a and b.)
+    struct alignas(64) State {
         double z = 0;
         std::uint64_t draws = 0;                    // values drawn so far: the next one's counter
         double loX = 0, loY = 0, hiX = 0, hiY = 0;  // where its stations were at its last value
-        bool fresh = true;                          // no value yet
         kernel::SimTime seen;                       // the last frame that carried it
+        bool fresh = true;                          // no value yet
     };
+    static_assert(sizeof(State) == 64, "a pair's state is one cache line");
     std::size_t slotOf(const Key& key) const;
     /// Lays the live slots out afresh in a table of `slots` (a power of two).
     void rebuild(std::size_t slots);

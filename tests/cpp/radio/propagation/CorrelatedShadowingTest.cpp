@@ -98,6 +98,21 @@ TEST(CorrelatedShadowing, PairsUnseenForFiveSecondsAreForgotten) {
     EXPECT_EQ(shadowing.valueDb(shadowing.pair(0, 2, SimTime::fromMilliseconds(6'100)), 0, 50, 0, 2, 0, 0), first);
 }
 
+TEST(CorrelatedShadowing, ARecordASweepFreedServesANewPairAsAFreshOne) {
+    // A record holds no key (the callers' a and b name the pair): reused for another pair, that
+    // pair's values are its own, in either direction, as in a table that never held the old one.
+    CorrelatedShadowing reused(3, 10, 5), fresh(3, 10, 5);
+    for (std::uint64_t k = 1; k <= 20; ++k) reused.valueDb(reused.pair(0, k, SimTime::zero()), 0, 0, 0, k, 9, 0);
+    reused.forget(SimTime::fromMilliseconds(6'000));
+    ASSERT_EQ(reused.pairs(), 0u);
+    const std::uint64_t a = CounterRandom::keyOf("x"), b = CounterRandom::keyOf("y");
+    for (int t = 0; t < 10; ++t) {
+        const SimTime now = SimTime::fromMilliseconds(6'000 + 100 * t);
+        const double one = reused.valueDb(reused.pair(b, a, now), b, 0, 1, a, 2.0 * t, 0);
+        EXPECT_EQ(one, fresh.valueDb(fresh.pair(a, b, now), a, 2.0 * t, 0, b, 0, 1));
+    }
+}
+
 TEST(ThreeGppLoss, TheTablesLaws) {
     const double f = 5.9e9;
     const ThreeGppHighwayLoss highway(f);
