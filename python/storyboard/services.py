@@ -117,9 +117,10 @@ class Signal(Protocol):
 class Snapshot:
     """The current step's vehicles: ids and numpy columns.
 
-    A column is a read-only view of the step's buffer (``flags.owndata`` is False), the same array for every read
-    and every Python service in the step; one kept past its step stays valid and keeps that step's values (read the
-    snapshot again for the new step's).
+    A column is a read-only view of the snapshot's own array, not a copy (``flags.owndata`` is False), the same
+    array for every read and every Python service in the step; one kept past its step stays valid and keeps that
+    step's values, as sbsim writes the next steps elsewhere while it is held (read the snapshot again for the new
+    step's).
     """
 
     def __init__(self, host: Any) -> None:

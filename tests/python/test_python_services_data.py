@@ -1,7 +1,8 @@
 """What Python services read without copies: a batch's numpy columns agree with the messages one by one, and a
 batch (or a column) a service keeps stays as it was while later batches reuse the service's memory; the snapshot's
-columns are read-only views of the step's buffer, the same object for every read in a step, and a view kept from
-an earlier step keeps that step's values."""
+columns are read-only views of the snapshot's own arrays (no copy: the data pointer is where the snapshot keeps the
+column), the same object for every read and every service in a step, and a view kept from an earlier step keeps
+that step's values while the snapshot is refilled elsewhere."""
 
 from __future__ import annotations
 
@@ -60,10 +61,44 @@ class Keeper(Service):
 
 
 #: Reads the snapshot at every trigger: views (not owning their data, read-only), one per column and step, that
-#: agree with the vehicle's own speed and position; keeps some from earlier steps and checks they never change.
+#: point at the snapshot's own arrays and agree with the vehicle's own speed and position; keeps some from earlier
+#: steps and checks they never change and are not where the snapshot writes now. A second service (Other) records
+#: the addresses it was given per step, to show both services read the same memory.
 SNAPSHOT = """
 import numpy as np
 from storyboard.services import Service
+
+COLUMNS = ("positions", "speeds", "angles", "accelerations", "lengths", "widths")
+SEEN = {}  # step time -> {column: address}, from both services
+
+
+def address(column):
+    return column.__array_interface__["data"][0]
+
+
+def check_addresses(service):
+    snapshot = service.snapshot
+    here = {}
+    for name in COLUMNS:
+        column = getattr(snapshot, name)
+        # The view's data is the snapshot's own storage for this column: nothing was copied.
+        assert address(column) == service._host._snapshot_column_address(name), name
+        here[name] = address(column)
+    step = SEEN.setdefault(snapshot.time, here)
+    assert step == here, (snapshot.time, step, here)  # every service of the step reads the same memory
+    return len(set(here.values())) == len(COLUMNS) or len(snapshot) == 0
+
+
+class Other(Service):
+    def initialize(self):
+        self.checks = 0
+
+    def trigger(self):
+        assert check_addresses(self)
+        self.checks += 1
+
+    def finish(self):
+        self.record_scalar("other_checks", self.checks)
 
 
 class Viewer(Service):
@@ -86,10 +121,13 @@ class Viewer(Service):
         if snapshot.time not in self.steps and len(self.steps) % 5 == 0:
             self.kept.append((snapshot.time, snapshot.ids, speeds, positions, speeds.copy(), positions.copy()))
         self.steps.add(snapshot.time)
+        assert check_addresses(self)
+        now = address(speeds), address(positions)
         for time, ids, s, p, s0, p0 in self.kept:
             assert np.array_equal(s, s0) and np.array_equal(p, p0), time
             if time != snapshot.time:
-                assert s is not speeds
+                # A held view's memory is left to it: the snapshot was refilled elsewhere.
+                assert s is not speeds and address(s) not in now and address(p) not in now, time
         self.checks += 1
 
     def finish(self):
@@ -121,9 +159,11 @@ def test_batches_agree_with_each_cam_and_a_kept_batch_does_not_change(loops_cfg:
 
 def test_snapshot_columns_are_views_of_the_step_that_stay_valid(loops_cfg: Path, tmp_path: Path) -> None:
     write_file(tmp_path, "viewer.py", SNAPSHOT)
-    services = services_file(tmp_path, '<service type="python:viewer.py:Viewer"/>')
+    services = services_file(
+        tmp_path, '<service type="python:viewer.py:Viewer"/>', '<service type="python:viewer.py:Other"/>'
+    )
     stats = tmp_path / "stats.parquet"
     run_ok(loops_cfg, "--services", str(services), "--statistics", str(stats), end=60.0)
     scalars = pd.read_parquet(stats).groupby("name")["value"].sum()
-    assert scalars["checks"] > 1000 and scalars["kept"] > 50
+    assert scalars["checks"] > 1000 and scalars["kept"] > 50 and scalars["other_checks"] == scalars["checks"]
     assert scalars["resized"] > 0  # vehicles came and went while old views were held

@@ -64,15 +64,7 @@ void SnapshotBuilder::removeVehicles(const std::vector<std::string>& ids) {
 }
 
 void SnapshotBuilder::resize(VehicleSnapshot& out, std::size_t n) const {
-    const auto m = static_cast<Eigen::Index>(n);
     out.ids_.resize(n);
-    out.position_.resize(2, m);
-    out.speed_.resize(m);
-    out.angle_.resize(m);
-    out.acceleration_.resize(m);
-    out.length_.resize(m);
-    out.width_.resize(m);
-    out.maxSpeed_.resize(m);
     out.road_.resize(n);
     out.lane_.resize(n);
     out.type_.resize(n);
@@ -91,6 +83,22 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
     out.time_ = time;
     out.columns_ = columns_;
     resize(out, order_.size());
+    const bool position = columns_.contains(SnapshotColumns::Position);
+    const bool speed = columns_.contains(SnapshotColumns::Speed) || columns_.contains(SnapshotColumns::Acceleration);
+    const bool angle = columns_.contains(SnapshotColumns::Angle);
+    const bool lane = columns_.contains(SnapshotColumns::Lane);
+    // The arrays to write: the snapshot's own unless a Python view still holds them (then a spare,
+    // SharedColumn). A column not read this step keeps its values.
+    Eigen::Matrix2Xd& positions = *out.position_.writable(!position);
+    Eigen::VectorXd& speeds = *out.speed_.writable(!speed);
+    Eigen::VectorXd& accelerations = *out.acceleration_.writable(!speed);
+    Eigen::VectorXd& angles = *out.angle_.writable(!angle);
+    Eigen::VectorXd& lengths = *out.length_.writable(false);
+    Eigen::VectorXd& widths = *out.width_.writable(false);
+    Eigen::VectorXd& maxSpeeds = *out.maxSpeed_.writable(false);
+    const auto m = static_cast<Eigen::Index>(order_.size());
+    positions.resize(2, m);
+    for (Eigen::VectorXd* column : {&speeds, &accelerations, &angles, &lengths, &widths, &maxSpeeds}) column->resize(m);
     {
         const std::lock_guard lock(maxSpeedMutex_);
         if (columns_.contains(SnapshotColumns::MaxSpeed)) {
@@ -102,10 +110,6 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
         maxSpeedChanges_.clear();
     }
 
-    const bool position = columns_.contains(SnapshotColumns::Position);
-    const bool speed = columns_.contains(SnapshotColumns::Speed) || columns_.contains(SnapshotColumns::Acceleration);
-    const bool angle = columns_.contains(SnapshotColumns::Angle);
-    const bool lane = columns_.contains(SnapshotColumns::Lane);
     // Independent per vehicle: each index is written by exactly one thread. Without per-step
     // columns there is nothing to ask SUMO, so no thread is woken.
     const auto read = [&](std::size_t begin, std::size_t end) {
@@ -116,21 +120,20 @@ void SnapshotBuilder::fill(VehicleSnapshot& out, kernel::SimTime time, kernel::P
             if (copyIds && out.ids_[k] != id) out.ids_[k] = id;  // most ids keep their slot: no reallocation
             if (position) {
                 const libsumo::TraCIPosition p = libsumo::Vehicle::getPosition(id);
-                out.position_(0, i) = p.x;
-                out.position_(1, i) = p.y;
+                positions(0, i) = p.x;
+                positions(1, i) = p.y;
             }
             if (speed) {
                 const double v = libsumo::Vehicle::getSpeed(id);
-                out.speed_[i] = v;
-                out.acceleration_[i] =
-                    r.hasSpeed ? (v - r.speed) / stepSeconds_ : libsumo::Vehicle::getAcceleration(id);
+                speeds[i] = v;
+                accelerations[i] = r.hasSpeed ? (v - r.speed) / stepSeconds_ : libsumo::Vehicle::getAcceleration(id);
                 r.speed = v;
                 r.hasSpeed = true;
             }
-            if (angle) out.angle_[i] = libsumo::Vehicle::getAngle(id);
-            out.maxSpeed_[i] = r.maxSpeed;
-            out.length_[i] = r.length;
-            out.width_[i] = r.width;
+            if (angle) angles[i] = libsumo::Vehicle::getAngle(id);
+            maxSpeeds[i] = r.maxSpeed;
+            lengths[i] = r.length;
+            widths[i] = r.width;
             out.type_[k] = r.type;
             if (lane) {
                 std::string laneId = libsumo::Vehicle::getLaneID(id);

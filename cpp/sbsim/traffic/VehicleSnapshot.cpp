@@ -42,13 +42,16 @@ void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time
     road_.clear();
     lane_.clear();
     type_.clear();
-    position_.resize(2, n);
-    speed_.resize(n);
-    angle_.resize(n);
-    acceleration_.resize(n);
-    length_.resize(n);
-    width_.resize(n);
-    maxSpeed_.resize(n);
+    // Every element is written below: a held array is left to its reader, unchanged.
+    Eigen::Matrix2Xd& position = *position_.writable(false);
+    Eigen::VectorXd& speed = *speed_.writable(false);
+    Eigen::VectorXd& angle = *angle_.writable(false);
+    Eigen::VectorXd& acceleration = *acceleration_.writable(false);
+    Eigen::VectorXd& length = *length_.writable(false);
+    Eigen::VectorXd& width = *width_.writable(false);
+    Eigen::VectorXd& maxSpeed = *maxSpeed_.writable(false);
+    position.resize(2, n);
+    for (Eigen::VectorXd* column : {&speed, &angle, &acceleration, &length, &width, &maxSpeed}) column->resize(n);
     std::unordered_map<std::string, std::int32_t> interned;
     const auto intern = [&](const std::string& s) {
         const auto [it, inserted] = interned.try_emplace(s, static_cast<std::int32_t>(strings_.size()));
@@ -57,14 +60,14 @@ void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time
     };
     for (Eigen::Index i = 0; i < n; ++i) {
         Vehicle& v = vehicles[i];
-        position_(0, i) = v.x;
-        position_(1, i) = v.y;
-        speed_[i] = v.speed;
-        angle_[i] = v.angle;
-        acceleration_[i] = v.acceleration;
-        length_[i] = v.length;
-        width_[i] = v.width;
-        maxSpeed_[i] = v.maxSpeed;
+        position(0, i) = v.x;
+        position(1, i) = v.y;
+        speed[i] = v.speed;
+        angle[i] = v.angle;
+        acceleration[i] = v.acceleration;
+        length[i] = v.length;
+        width[i] = v.width;
+        maxSpeed[i] = v.maxSpeed;
         road_.push_back(intern(v.road));
         lane_.push_back(intern(v.lane));
         type_.push_back(intern(v.type));
@@ -87,8 +90,15 @@ void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vecto
     road_.resize(keep.size());
     lane_.resize(keep.size());
     type_.resize(keep.size());
-    position_.resize(2, n);
-    for (Eigen::VectorXd* column : {&speed_, &angle_, &acceleration_, &length_, &width_, &maxSpeed_}) column->resize(n);
+    Eigen::Matrix2Xd& position = *position_.writable(false);
+    Eigen::VectorXd& speed = *speed_.writable(false);
+    Eigen::VectorXd& angle = *angle_.writable(false);
+    Eigen::VectorXd& acceleration = *acceleration_.writable(false);
+    Eigen::VectorXd& length = *length_.writable(false);
+    Eigen::VectorXd& width = *width_.writable(false);
+    Eigen::VectorXd& maxSpeed = *maxSpeed_.writable(false);
+    position.resize(2, n);
+    for (Eigen::VectorXd* column : {&speed, &angle, &acceleration, &length, &width, &maxSpeed}) column->resize(n);
     for (Eigen::Index k = 0; k < n; ++k) {
         const Index i = keep[static_cast<std::size_t>(k)];
         if (i < 0 || i >= from.size() || (k > 0 && i <= keep[static_cast<std::size_t>(k - 1)])) {
@@ -102,13 +112,13 @@ void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vecto
         road_[k] = from.road_[i];
         lane_[k] = from.lane_[i];
         type_[k] = from.type_[i];
-        position_.col(k) = from.position_.col(i);
-        speed_[k] = from.speed_[i];
-        angle_[k] = from.angle_[i];
-        acceleration_[k] = from.acceleration_[i];
-        length_[k] = from.length_[i];
-        width_[k] = from.width_[i];
-        maxSpeed_[k] = from.maxSpeed_[i];
+        position.col(k) = from.position_->col(i);
+        speed[k] = (*from.speed_)[i];
+        angle[k] = (*from.angle_)[i];
+        acceleration[k] = (*from.acceleration_)[i];
+        length[k] = (*from.length_)[i];
+        width[k] = (*from.width_)[i];
+        maxSpeed[k] = (*from.maxSpeed_)[i];
     }
     if (!sameIds) idsVersion_ = nextGeneration();
 }

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Object.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/traffic/SharedColumn.h"
 #include "sbsim/traffic/SnapshotColumns.h"
 
 namespace sbsim::traffic {
@@ -39,13 +41,21 @@ public:
     /// Unique process-wide; a different id list always gets a new one.
     std::uint64_t idsVersion() const { return idsVersion_; }
 
-    const Eigen::Matrix2Xd& positions() const { return position_; }         ///< SUMO network x, y (front bumper)
-    const Eigen::VectorXd& speeds() const { return speed_; }                ///< m/s
-    const Eigen::VectorXd& angles() const { return angle_; }                ///< degrees, SUMO's: 0 = north, clockwise
-    const Eigen::VectorXd& accelerations() const { return acceleration_; }  ///< m/s²
-    const Eigen::VectorXd& lengths() const { return length_; }              ///< m
-    const Eigen::VectorXd& widths() const { return width_; }                ///< m
-    const Eigen::VectorXd& maxSpeeds() const { return maxSpeed_; }          ///< m/s, the vehicle's own cap
+    const Eigen::Matrix2Xd& positions() const { return *position_; }         ///< SUMO network x, y (front bumper)
+    const Eigen::VectorXd& speeds() const { return *speed_; }                ///< m/s
+    const Eigen::VectorXd& angles() const { return *angle_; }                ///< degrees, SUMO's: 0 = north, clockwise
+    const Eigen::VectorXd& accelerations() const { return *acceleration_; }  ///< m/s²
+    const Eigen::VectorXd& lengths() const { return *length_; }              ///< m
+    const Eigen::VectorXd& widths() const { return *width_; }                ///< m
+    const Eigen::VectorXd& maxSpeeds() const { return *maxSpeed_; }          ///< m/s, the vehicle's own cap
+    /// The same arrays, for a reader that keeps them past the step (a Python service's numpy
+    /// view): the next refill writes elsewhere while they are held, so they keep this step's values.
+    std::shared_ptr<const Eigen::Matrix2Xd> sharedPositions() const { return position_.shared(); }
+    std::shared_ptr<const Eigen::VectorXd> sharedSpeeds() const { return speed_.shared(); }
+    std::shared_ptr<const Eigen::VectorXd> sharedAngles() const { return angle_.shared(); }
+    std::shared_ptr<const Eigen::VectorXd> sharedAccelerations() const { return acceleration_.shared(); }
+    std::shared_ptr<const Eigen::VectorXd> sharedLengths() const { return length_.shared(); }
+    std::shared_ptr<const Eigen::VectorXd> sharedWidths() const { return width_.shared(); }
 
     const std::string& roadId(Index i) const { return strings_[road_[i]]; }
     const std::string& laneId(Index i) const { return strings_[lane_[i]]; }
@@ -82,8 +92,9 @@ private:
     kernel::SimTime time_;
     SnapshotColumns columns_ = SnapshotColumns::all();
     std::vector<std::string> ids_;
-    Eigen::Matrix2Xd position_;
-    Eigen::VectorXd speed_, angle_, acceleration_, length_, width_, maxSpeed_;
+    // Shared so that a Python view can point at a step's values and keep them (SharedColumn).
+    SharedColumn<Eigen::Matrix2Xd> position_;
+    SharedColumn<Eigen::VectorXd> speed_, angle_, acceleration_, length_, width_, maxSpeed_;
     std::vector<std::int32_t> road_, lane_, type_;  // indices into strings_
     std::vector<std::string> strings_;              // interned road, lane and type ids
     std::uint64_t generation_ = nextGeneration();   // unique per string table, process-wide

@@ -7,10 +7,10 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <variant>
 
 #include "sbsim/facilities/StationRegistry.h"
@@ -56,18 +56,15 @@ py::object orNone(const std::optional<T>& v) {
     return v ? py::cast(*v) : py::none();
 }
 
-/// The step's snapshot columns for all Python services: each column is written once per step into
-/// a buffer of its own, and every read in the step gets the same read-only numpy view of it. A view
-/// holds its buffer, so one kept past its step stays valid and keeps that step's values (the
-/// snapshot's own arrays are rewritten, and move, as vehicles come and go); a buffer no view holds
-/// any more is written again at the next step.
+/// The step's snapshot columns for all Python services: a read-only numpy view of the snapshot's
+/// own array (no copy), the same view for every read in the step. The view holds the array
+/// (traffic::SharedColumn), so one kept past its step stays valid and keeps that step's values:
+/// the next refill writes into a spare array while it is held.
 struct StepArrays {
-    using Buffer = std::shared_ptr<std::vector<double>>;
     const traffic::VehicleSnapshot* snapshot = nullptr;
     SimTime time = SimTime::max();
     std::size_t size = std::numeric_limits<std::size_t>::max();
-    py::dict columns;                                 // this step's views, by name
-    std::unordered_map<std::string, Buffer> buffers;  // the latest buffer of each column
+    py::dict columns;  // this step's views, by name
 
     void renew(const traffic::VehicleSnapshot& s) {
         if (snapshot == &s && time == s.time() && size == static_cast<std::size_t>(s.size())) return;
@@ -76,14 +73,15 @@ struct StepArrays {
         size = static_cast<std::size_t>(s.size());
         columns = py::dict();  // the last step's views: freed unless a service kept them
     }
-    py::object column(const char* name, const double* data, py::ssize_t rows, py::ssize_t width) {
+    template <typename Array>
+    py::object column(const char* name, std::shared_ptr<const Array> array, py::ssize_t width) {
         if (columns.contains(name)) return columns[name];
-        Buffer& buffer = buffers[name];
-        if (!buffer || buffer.use_count() > 1) buffer = std::make_shared<std::vector<double>>();
-        buffer->assign(data, data + rows * width);
-        const py::capsule base(new Buffer(buffer), [](void* p) { delete static_cast<Buffer*>(p); });
-        py::array out = width == 1 ? py::array(py::dtype::of<double>(), {rows}, {}, buffer->data(), base)
-                                   : py::array(py::dtype::of<double>(), {rows, width}, {}, buffer->data(), base);
+        using Held = std::shared_ptr<const Array>;
+        const double* data = array->data();
+        const auto rows = static_cast<py::ssize_t>(array->size()) / width;
+        const py::capsule base(new Held(std::move(array)), [](void* p) { delete static_cast<Held*>(p); });
+        py::array out = width == 1 ? py::array(py::dtype::of<double>(), {rows}, {}, data, base)
+                                   : py::array(py::dtype::of<double>(), {rows, width}, {}, data, base);
         out.attr("setflags")(py::arg("write") = false);
         columns[name] = out;
         return out;
@@ -269,13 +267,25 @@ void bindHost(py::module_& m) {
                  const Snap& s = h.get().snapshot();
                  StepArrays& arrays = stepArrays();
                  arrays.renew(s);
-                 const auto n = static_cast<py::ssize_t>(s.size());
-                 if (name == "positions") return arrays.column("positions", s.positions().data(), n, 2);
-                 if (name == "speeds") return arrays.column("speeds", s.speeds().data(), n, 1);
-                 if (name == "angles") return arrays.column("angles", s.angles().data(), n, 1);
-                 if (name == "accelerations") return arrays.column("accelerations", s.accelerations().data(), n, 1);
-                 if (name == "lengths") return arrays.column("lengths", s.lengths().data(), n, 1);
-                 if (name == "widths") return arrays.column("widths", s.widths().data(), n, 1);
+                 // Eigen keeps positions column-major 2 x N: one vehicle's x, y adjacent.
+                 if (name == "positions") return arrays.column("positions", s.sharedPositions(), 2);
+                 if (name == "speeds") return arrays.column("speeds", s.sharedSpeeds(), 1);
+                 if (name == "angles") return arrays.column("angles", s.sharedAngles(), 1);
+                 if (name == "accelerations") return arrays.column("accelerations", s.sharedAccelerations(), 1);
+                 if (name == "lengths") return arrays.column("lengths", s.sharedLengths(), 1);
+                 if (name == "widths") return arrays.column("widths", s.sharedWidths(), 1);
+                 throw py::value_error("no snapshot column '" + name + "'");
+             })
+        // For tests: where the snapshot keeps a column now, to show a view points at it (no copy).
+        .def("_snapshot_column_address",
+             [](const Host& h, const std::string& name) -> std::uintptr_t {
+                 const Snap& s = h.get().snapshot();
+                 if (name == "positions") return reinterpret_cast<std::uintptr_t>(s.positions().data());
+                 if (name == "speeds") return reinterpret_cast<std::uintptr_t>(s.speeds().data());
+                 if (name == "angles") return reinterpret_cast<std::uintptr_t>(s.angles().data());
+                 if (name == "accelerations") return reinterpret_cast<std::uintptr_t>(s.accelerations().data());
+                 if (name == "lengths") return reinterpret_cast<std::uintptr_t>(s.lengths().data());
+                 if (name == "widths") return reinterpret_cast<std::uintptr_t>(s.widths().data());
                  throw py::value_error("no snapshot column '" + name + "'");
              })
         .def("ldm",
