@@ -64,4 +64,14 @@ void CertificatePolicy::heardAll(std::span<const Index> stations, Index sender, 
     for (const Index station : unknown_) of(station, now).requested = true;
 }
 
+void CertificatePolicy::heardAll(LastHeard::List stations, Index sender, SecurityProfile profile, kernel::SimTime now) {
+    if (!secured_ || stations == nullptr || stations->empty()) return;
+    forgetOld(now);
+    if (sender >= heardBy_.size()) heardBy_.resize(sender + 1);
+    unknown_.clear();
+    heardBy_[sender].hearList(std::move(stations), now, now - kForgetAfter, unknown_);
+    if (profile != SecurityProfile::Cam) return;
+    for (const Index station : unknown_) of(station, now).requested = true;
+}
+
 }  // namespace sbsim::radio

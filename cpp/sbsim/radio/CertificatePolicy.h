@@ -57,6 +57,9 @@ public:
     /// Each of `stations` (distinct; fastest in ascending order) received one message of `sender`
     /// at `now`: as heard() for each, with one walk through the sender's table.
     void heardAll(std::span<const Index> stations, Index sender, SecurityProfile profile, kernel::SimTime now);
+    /// The same for a list that may come again unchanged for the sender's next frames (a medium's
+    /// receivers of the step; it must not change while held): a repeat costs no walk (LastHeard::hearList).
+    void heardAll(LastHeard::List stations, Index sender, SecurityProfile profile, kernel::SimTime now);
     void heard(std::string_view station, std::string_view sender, SecurityProfile profile, kernel::SimTime now) {
         if (secured_) heard(index(station), index(sender), profile, now);
     }

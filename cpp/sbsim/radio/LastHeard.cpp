@@ -25,6 +25,7 @@ std::size_t LastHeard::seek(std::size_t from, Index station) const {
 }
 
 std::optional<kernel::SimTime> LastHeard::hear(Index station, kernel::SimTime now) {
+    settle();
     const auto at = std::lower_bound(stations_.begin(), stations_.end(), station);
     const auto k = at - stations_.begin();
     if (at != stations_.end() && *at == station) {
@@ -39,6 +40,46 @@ std::optional<kernel::SimTime> LastHeard::hear(Index station, kernel::SimTime no
 
 void LastHeard::hearAll(std::span<const Index> stations, kernel::SimTime now, kernel::SimTime since,
                         std::vector<Index>& unknown) {
+    settle();
+    walk(stations, now, since, unknown);
+}
+
+void LastHeard::hearList(List stations, kernel::SimTime now, kernel::SimTime since, std::vector<Index>& unknown) {
+    // Every station of the list was last heard at pendingNs_ (anything else touching the arrays
+    // writes the notes first and drops the list): none is unknown unless that is before `since`,
+    // and a walk would only write `now`.
+    if (stations == pending_ && since.raw() <= pendingNs_) {
+        pendingNs_ = now.raw();
+        pendingDirty_ = true;
+        return;
+    }
+    flush();
+    walk(*stations, now, since, unknown);
+    pending_ = std::move(stations);
+    pendingNs_ = now.raw();
+}
+
+void LastHeard::flush() {
+    if (!pendingDirty_) return;
+    pendingDirty_ = false;
+    // The list's stations are all in the arrays (its first walk added them): a walk that writes.
+    std::size_t at = 0;
+    Index last = 0;
+    for (const Index station : *pending_) {
+        if (station < last) at = 0;
+        last = station;
+        at = seek(at, station);
+        if (at < stations_.size() && stations_[at] == station) heardNs_[at++] = pendingNs_;
+    }
+}
+
+void LastHeard::settle() {
+    flush();
+    pending_.reset();
+}
+
+void LastHeard::walk(std::span<const Index> stations, kernel::SimTime now, kernel::SimTime since,
+                     std::vector<Index>& unknown) {
     newcomers_.clear();
     std::size_t at = 0;
     Index last = 0;
@@ -81,6 +122,7 @@ void LastHeard::addNewcomers(kernel::SimTime now) {
 }
 
 void LastHeard::forgetBefore(kernel::SimTime before) {
+    settle();  // and a sender gone for good keeps no list
     std::size_t kept = 0;
     for (std::size_t k = 0; k < stations_.size(); ++k) {
         if (heardNs_[k] < before.raw()) continue;

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -16,9 +17,15 @@ namespace sbsim::radio {
 /// media find in an order close to their indices', are matched by one forward walk (hearAll), so
 /// the tables of a full city (5,000 senders, ~1,000 stations each) are read sequentially where a
 /// hash table's random probes cost a cache miss per reception (a third of the disc model's run).
+///
+/// A list that comes again (hearList: a medium's receivers of a step, shared by the sender's
+/// frames of that step) is walked once: its repeats, which can find no station unknown, only note
+/// their time, written out when another list comes, and before hear(), hearAll() or
+/// forgetBefore() read the times. Answers are those of a walk per frame.
 class SBSIM_API LastHeard {
 public:
     using Index = std::uint32_t;
+    using List = std::shared_ptr<const std::vector<Index>>;
 
     /// Records that `station` heard at `now`; returns when it heard last before, if ever.
     std::optional<kernel::SimTime> hear(Index station, kernel::SimTime now);
@@ -27,8 +34,14 @@ public:
     /// not heard since `since` (or never).
     void hearAll(std::span<const Index> stations, kernel::SimTime now, kernel::SimTime since,
                  std::vector<Index>& unknown);
+    /// As hearAll() for `stations`, which must not change while it is held here (kept until
+    /// another list comes or forgetBefore()): the same list again, when none of its stations can
+    /// have been heard before `since`, costs no walk.
+    void hearList(List stations, kernel::SimTime now, kernel::SimTime since, std::vector<Index>& unknown);
     /// Forgets the stations that last heard before `before`.
     void forgetBefore(kernel::SimTime before);
+    /// Repeats of a list noted and not yet written (for tests).
+    bool pending() const { return pendingDirty_; }
     std::size_t size() const { return stations_.size(); }
 
 private:
@@ -36,10 +49,19 @@ private:
     std::size_t seek(std::size_t from, Index station) const;
     /// Merges `newcomers_` (heard at `now`, none known) into the sorted arrays.
     void addNewcomers(kernel::SimTime now);
+    /// Writes the times the repeats of `pending_` noted, so the arrays hold every reception.
+    void flush();
+    /// flush(), and the list dropped: the arrays are about to change otherwise.
+    void settle();
+    /// hearAll()'s walk, on arrays that hold every reception.
+    void walk(std::span<const Index> stations, kernel::SimTime now, kernel::SimTime since, std::vector<Index>& unknown);
 
     std::vector<Index> stations_;                // ascending
     std::vector<kernel::SimTime::rep> heardNs_;  // as stations_
     std::vector<Index> newcomers_;               // scratch of hearAll
+    List pending_;                               // the last list walked or noted (hearList)
+    kernel::SimTime::rep pendingNs_ = 0;         // when it was heard last: every station of it at or after
+    bool pendingDirty_ = false;                  // its stations' times in the arrays are older
 };
 
 }  // namespace sbsim::radio

@@ -11,15 +11,17 @@ namespace {
 /// One frame's receptions at one time.
 struct FrameDelivery : kernel::Message {
     static constexpr int kKind = 0x7632'7801;
-    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::shared_ptr<const Medium::Recipients> r,
+    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::shared_ptr<const Medium::Recipients> r, bool kept,
                   std::uint64_t changes)
         : kernel::Message("v2x frame", kKind),
           message(std::move(m)),
           recipients(std::move(r)),
+          keptByMedium(kept),
           moduleChanges(changes) {}
     std::shared_ptr<const V2xMessage> message;
     std::shared_ptr<const Medium::Recipients> recipients;  // its stations, to find them should one leave meanwhile
-    std::uint64_t moduleChanges;                           // the simulation's when the receivers were taken
+    bool keptByMedium;            // the list may come again, unchanged, for the sender's next frames
+    std::uint64_t moduleChanges;  // the simulation's when the receivers were taken
 };
 }  // namespace
 
@@ -40,15 +42,21 @@ Receiver* Medium::receivingSide(const std::string& stationId) {
 void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
                           std::vector<StationIndex> stations, kernel::SimTime delay) {
     if (receivers.empty()) return;
-    deliverLater(std::move(message),
-                 std::make_shared<const Recipients>(Recipients{std::move(receivers), std::move(stations)}), delay);
+    queue(std::move(message), std::make_shared<const Recipients>(Recipients{std::move(receivers), std::move(stations)}),
+          false, delay);
 }
 
 void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
                           kernel::SimTime delay) {
+    queue(std::move(message), std::move(recipients), true, delay);
+}
+
+void Medium::queue(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
+                   bool keptByMedium, kernel::SimTime delay) {
     if (recipients == nullptr || recipients->receivers.empty()) return;
     const std::uint64_t changes = simulation().moduleChanges();
-    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(recipients), changes), delay, *this);
+    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(recipients), keptByMedium, changes), delay,
+               *this);
 }
 
 void Medium::handleMessage(kernel::Message& msg) {
@@ -71,8 +79,15 @@ void Medium::handleMessage(kernel::Message& msg) {
     // What each receiver heard is kept before any of them handles the message: the policy's
     // answers for one station do not depend on the others', and a station's own sending (a
     // forward while it receives) sees its reception recorded either way.
-    if (certificates_.secured())
-        certificates_.heardAll(recipients->stations, message.senderIndex_, message.securityProfile(), simTime());
+    if (certificates_.secured()) {
+        if (recipients == frame.recipients.get() && frame.keptByMedium) {
+            // The sender's list of the step, held by the policy so its next frames cost no walk.
+            certificates_.heardAll(LastHeard::List(frame.recipients, &frame.recipients->stations), message.senderIndex_,
+                                   message.securityProfile(), simTime());
+        } else {
+            certificates_.heardAll(recipients->stations, message.senderIndex_, message.securityProfile(), simTime());
+        }
+    }
     if (toEveryReceiver(message)) {
         for (Receiver* receiver : recipients->receivers) receiver->receive(message);
         return;

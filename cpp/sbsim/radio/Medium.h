@@ -139,7 +139,10 @@ protected:
     /// else the stations are looked up again by name.
     void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
                       std::vector<StationIndex> stations, kernel::SimTime delay);
-    /// The same with receivers a medium keeps (and may hand several frames) rather than copies.
+    /// The same with receivers a medium keeps (and may hand several frames) rather than copies. They
+    /// must not change while another holder has them (the certificate policy keeps a sender's last
+    /// list to know its next frames' receivers unchanged): a medium refills them only when
+    /// use_count() is 1.
     void deliverLater(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
                       kernel::SimTime delay);
 
@@ -156,6 +159,9 @@ private:
     bool everyReceiverRegistered_ = true;  // every receiver found so far called setTypesTaken() first
     /// Whether `message` goes to every receiver whatever they take.
     bool toEveryReceiver(const V2xMessage& message);
+    /// Queues a frame's delivery; `keptByMedium`: the medium may hand the same list to the sender's next frames.
+    void queue(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
+               bool keptByMedium, kernel::SimTime delay);
 };
 
 }  // namespace sbsim::radio

@@ -65,6 +65,101 @@ TEST(LastHeard, AFrameAtOnceAnswersAsOneStationAtATime) {
     for (const auto& [s, t] : reference) EXPECT_EQ(heard.hear(s, SimTime::fromSeconds(10)), t);
 }
 
+// A sender's frames of a step share one list (a medium's receivers of the step): its repeats only
+// note their time. Lists repeated, changed, left for longer than the window, mixed with single
+// receptions, frames of their own and forgetting, against a std::map holding the same history.
+TEST(LastHeard, RepeatsOfAListAnswerAsAWalkPerFrame) {
+    std::mt19937 random(11);
+    LastHeard heard;
+    std::map<Index, SimTime> reference;
+    const SimTime window = SimTime::fromMilliseconds(500);
+    const auto expectFrame = [&](const std::vector<Index>& stations, SimTime now, const std::vector<Index>& unknown) {
+        std::vector<Index> expected;
+        for (const Index s : stations) {
+            const auto it = reference.find(s);
+            if (it == reference.end() || it->second < now - window) expected.push_back(s);
+            reference[s] = now;
+        }
+        return unknown == expected;
+    };
+    LastHeard::List list;
+    int repeats = 0, lazy = 0;
+    SimTime now = SimTime::zero();
+    for (int frame = 0; frame < 2000; ++frame) {
+        // Mostly 10 ms apart; now and then a pause longer than the window, so a repeat must walk.
+        now = now + SimTime::fromMilliseconds(random() % 40 == 0 ? 700 : 10);
+        const unsigned pick = random() % 20;
+        if (list == nullptr || pick < 2) {
+            auto fresh = std::make_shared<std::vector<Index>>();
+            const Index base = static_cast<Index>(random() % 300);
+            for (Index s = base; s < base + 300; ++s) {
+                if (random() % 3 == 0) fresh->push_back(s);
+            }
+            if (pick == 1) std::shuffle(fresh->begin(), fresh->end(), random);
+            list = fresh;
+        } else if (pick == 2) {
+            // A frame of its own (stationary stations in range) between the list's frames.
+            std::vector<Index> own;
+            for (Index s = static_cast<Index>(random() % 50); s < 450; s += 1 + random() % 20) own.push_back(s);
+            std::vector<Index> unknown;
+            heard.hearAll(own, now, now - window, unknown);
+            ASSERT_TRUE(expectFrame(own, now, unknown)) << "frame " << frame << " (own list)";
+            continue;
+        } else if (pick == 3) {
+            // A single reception reads the time the repeats noted.
+            const Index s = list->empty() ? 0 : (*list)[random() % list->size()];
+            const auto it = reference.find(s);
+            const std::optional<SimTime> expected =
+                it == reference.end() ? std::nullopt : std::optional<SimTime>(it->second);
+            ASSERT_EQ(heard.hear(s, now), expected) << "frame " << frame << " station " << s;
+            reference[s] = now;
+            continue;
+        } else {
+            ++repeats;
+        }
+        std::vector<Index> unknown;
+        heard.hearList(list, now, now - window, unknown);
+        if (heard.pending()) ++lazy;
+        ASSERT_TRUE(expectFrame(*list, now, unknown)) << "frame " << frame;
+        if (frame % 97 == 96) {
+            // Now and then just before the list's last frames: what they noted must survive.
+            const SimTime before = now - SimTime::fromMilliseconds(frame % 2 == 0 ? 200 : 15);
+            heard.forgetBefore(before);
+            std::erase_if(reference, [&](const auto& entry) { return entry.second < before; });
+        }
+        ASSERT_EQ(heard.size(), reference.size());
+    }
+    EXPECT_GT(lazy, repeats / 2);  // the repeats did take the lazy path
+    // What the repeats noted is written before it is read.
+    heard.forgetBefore(SimTime::zero());
+    for (const auto& [s, t] : reference) EXPECT_EQ(heard.hear(s, now + SimTime::fromSeconds(10)), t) << s;
+}
+
+TEST(LastHeard, ARepeatAfterTheWindowFindsItsStationsUnknown) {
+    LastHeard heard;
+    const auto list = std::make_shared<const std::vector<Index>>(std::vector<Index>{2, 5, 9});
+    const SimTime window = SimTime::fromMilliseconds(500);
+    std::vector<Index> unknown;
+    heard.hearList(list, SimTime::fromMilliseconds(100), SimTime::fromMilliseconds(100) - window, unknown);
+    EXPECT_EQ(unknown, (std::vector<Index>{2, 5, 9}));
+    unknown.clear();
+    heard.hearList(list, SimTime::fromMilliseconds(400), SimTime::fromMilliseconds(400) - window, unknown);
+    EXPECT_TRUE(unknown.empty());
+    EXPECT_TRUE(heard.pending());
+    // 500 ms after the noted 400 ms: still known; 501 ms: unknown again.
+    heard.hearList(list, SimTime::fromMilliseconds(900), SimTime::fromMilliseconds(900) - window, unknown);
+    EXPECT_TRUE(unknown.empty());
+    heard.hearList(list, SimTime::fromMilliseconds(1401), SimTime::fromMilliseconds(1401) - window, unknown);
+    EXPECT_EQ(unknown, (std::vector<Index>{2, 5, 9}));
+    // Another list writes the notes out first: 5 was heard at 1401 ms.
+    unknown.clear();
+    heard.hearAll(std::vector<Index>{5, 7}, SimTime::fromMilliseconds(1500), SimTime::fromMilliseconds(1500) - window,
+                  unknown);
+    EXPECT_EQ(unknown, (std::vector<Index>{7}));
+    EXPECT_FALSE(heard.pending());
+    EXPECT_EQ(heard.hear(9, SimTime::fromMilliseconds(1600)), SimTime::fromMilliseconds(1401));
+}
+
 TEST(CertificatePolicy, AFrameAtOnceDecidesAsItsReceptionsOneByOne) {
     // Each receiver's next CAM carries the certificate when it heard a new sender, one by one or
     // the frame at once.
@@ -93,6 +188,48 @@ TEST(CertificatePolicy, AFrameAtOnceDecidesAsItsReceptionsOneByOne) {
         EXPECT_EQ(one, std::string(name) == "r1" ? SignerIdentifier::Digest : SignerIdentifier::Certificate) << name;
     }
     EXPECT_EQ(frame.remembered(), single.remembered());
+}
+
+// Ten frames a step from each of a few senders, each step's list shared by its frames (as the disc
+// model hands them): the certificates signed are those of a policy told each reception one by one.
+TEST(CertificatePolicy, SharedListsDecideAsReceptionsOneByOne) {
+    std::mt19937 random(3);
+    CertificatePolicy single, shared;
+    std::vector<std::string> names;
+    for (int k = 0; k < 40; ++k) names.push_back("v" + std::to_string(k));
+    for (const std::string& name : names) {
+        EXPECT_EQ(single.index(name), shared.index(name));
+    }
+    std::map<int, LastHeard::List> lists;
+    int certificates = 0;
+    for (int step = 0; step < 60; ++step) {
+        // Steps of 1 s, a pause of 25 s now and then (past kForgetAfter: all forgotten).
+        const SimTime begin = SimTime::fromSeconds(step % 20 == 19 ? step + 25 : step);
+        for (int sender = 0; sender < 5; ++sender) {
+            auto list = std::make_shared<std::vector<CertificatePolicy::Index>>();
+            for (CertificatePolicy::Index s = 0; s < names.size(); ++s) {
+                if (static_cast<int>(s) != sender && random() % 2 == 0) list->push_back(s);
+            }
+            lists[sender] = list;
+        }
+        for (int frame = 0; frame < 10; ++frame) {
+            for (int sender = 0; sender < 5; ++sender) {
+                const SimTime now = begin + SimTime::fromMilliseconds(100 * frame + 7 * sender);
+                for (const CertificatePolicy::Index s : *lists[sender])
+                    single.heard(s, static_cast<CertificatePolicy::Index>(sender), SecurityProfile::Cam, now);
+                shared.heardAll(lists[sender], static_cast<CertificatePolicy::Index>(sender), SecurityProfile::Cam,
+                                now);
+                // Every station signs a CAM now and then.
+                const auto signer = static_cast<CertificatePolicy::Index>(random() % names.size());
+                const SignerIdentifier one = single.sign(signer, SecurityProfile::Cam, now);
+                ASSERT_EQ(shared.sign(signer, SecurityProfile::Cam, now), one)
+                    << "step " << step << " frame " << frame << " sender " << sender;
+                if (one == SignerIdentifier::Certificate) ++certificates;
+            }
+        }
+        ASSERT_EQ(shared.remembered(), single.remembered()) << "step " << step;
+    }
+    EXPECT_GT(certificates, 0);
 }
 
 }  // namespace

@@ -169,12 +169,15 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
 }
 
 void DiscMedium::takeReceivers(Neighbourhood& near) {
-    // Refilled in place unless a frame on the air still holds them.
+    // Refilled in place unless a frame on the air or the certificate policy (the sender's last
+    // list) still holds them.
     if (near.recipients == nullptr || near.recipients.use_count() > 1) near.recipients = std::make_shared<Recipients>();
     std::vector<Receiver*>& receivers = near.recipients->receivers;
     std::vector<StationIndex>& stations = near.recipients->stations;
     receivers.clear();
     stations.clear();
+    receivers.reserve(near.others.size());
+    stations.reserve(near.others.size());
     near.perBin.clear();
     for (std::size_t k = 0; k < near.others.size(); ++k) {
         const auto other = near.others[k];
