@@ -23,6 +23,30 @@ std::optional<VehicleSnapshot::Index> VehicleSnapshot::indexOf(std::string_view 
 
 namespace sbsim::traffic {
 
+namespace {
+
+/// The seven numeric columns, writable and sized for `n` vehicles. Every element is written after,
+/// so a column a reader holds is left to it unchanged (a fresh array takes its place).
+struct Resized {
+    Eigen::Matrix2Xd& position;
+    Eigen::VectorXd &speed, &angle, &acceleration, &length, &width, &maxSpeed;
+};
+
+Resized resized(Eigen::Index n, SharedColumn<Eigen::Matrix2Xd>& position, SharedColumn<Eigen::VectorXd>& speed,
+                SharedColumn<Eigen::VectorXd>& angle, SharedColumn<Eigen::VectorXd>& acceleration,
+                SharedColumn<Eigen::VectorXd>& length, SharedColumn<Eigen::VectorXd>& width,
+                SharedColumn<Eigen::VectorXd>& maxSpeed) {
+    Resized out{*position.writable(false),     *speed.writable(false),  *angle.writable(false),
+                *acceleration.writable(false), *length.writable(false), *width.writable(false),
+                *maxSpeed.writable(false)};
+    out.position.resize(2, n);
+    for (Eigen::VectorXd* column : {&out.speed, &out.angle, &out.acceleration, &out.length, &out.width, &out.maxSpeed})
+        column->resize(n);
+    return out;
+}
+
+}  // namespace
+
 void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time) {
     std::sort(vehicles.begin(), vehicles.end(), [](const Vehicle& a, const Vehicle& b) { return a.id < b.id; });
     for (std::size_t i = 1; i < vehicles.size(); ++i) {
@@ -42,16 +66,10 @@ void VehicleSnapshot::assign(std::vector<Vehicle> vehicles, kernel::SimTime time
     road_.clear();
     lane_.clear();
     type_.clear();
-    // Every element is written below: a held array is left to its reader, unchanged.
-    Eigen::Matrix2Xd& position = *position_.writable(false);
-    Eigen::VectorXd& speed = *speed_.writable(false);
-    Eigen::VectorXd& angle = *angle_.writable(false);
-    Eigen::VectorXd& acceleration = *acceleration_.writable(false);
-    Eigen::VectorXd& length = *length_.writable(false);
-    Eigen::VectorXd& width = *width_.writable(false);
-    Eigen::VectorXd& maxSpeed = *maxSpeed_.writable(false);
-    position.resize(2, n);
-    for (Eigen::VectorXd* column : {&speed, &angle, &acceleration, &length, &width, &maxSpeed}) column->resize(n);
+    const Resized c = resized(n, position_, speed_, angle_, acceleration_, length_, width_, maxSpeed_);
+    Eigen::Matrix2Xd& position = c.position;
+    Eigen::VectorXd &speed = c.speed, &angle = c.angle, &acceleration = c.acceleration;
+    Eigen::VectorXd &length = c.length, &width = c.width, &maxSpeed = c.maxSpeed;
     std::unordered_map<std::string, std::int32_t> interned;
     const auto intern = [&](const std::string& s) {
         const auto [it, inserted] = interned.try_emplace(s, static_cast<std::int32_t>(strings_.size()));
@@ -90,15 +108,10 @@ void VehicleSnapshot::assignSubset(const VehicleSnapshot& from, const std::vecto
     road_.resize(keep.size());
     lane_.resize(keep.size());
     type_.resize(keep.size());
-    Eigen::Matrix2Xd& position = *position_.writable(false);
-    Eigen::VectorXd& speed = *speed_.writable(false);
-    Eigen::VectorXd& angle = *angle_.writable(false);
-    Eigen::VectorXd& acceleration = *acceleration_.writable(false);
-    Eigen::VectorXd& length = *length_.writable(false);
-    Eigen::VectorXd& width = *width_.writable(false);
-    Eigen::VectorXd& maxSpeed = *maxSpeed_.writable(false);
-    position.resize(2, n);
-    for (Eigen::VectorXd* column : {&speed, &angle, &acceleration, &length, &width, &maxSpeed}) column->resize(n);
+    const Resized c = resized(n, position_, speed_, angle_, acceleration_, length_, width_, maxSpeed_);
+    Eigen::Matrix2Xd& position = c.position;
+    Eigen::VectorXd &speed = c.speed, &angle = c.angle, &acceleration = c.acceleration;
+    Eigen::VectorXd &length = c.length, &width = c.width, &maxSpeed = c.maxSpeed;
     for (Eigen::Index k = 0; k < n; ++k) {
         const Index i = keep[static_cast<std::size_t>(k)];
         if (i < 0 || i >= from.size() || (k > 0 && i <= keep[static_cast<std::size_t>(k - 1)])) {
