@@ -109,6 +109,11 @@ py::array columnView(const std::shared_ptr<MessageBatch>& batch, const std::vect
     return out;
 }
 
+/// A batch column's property: the column as a numpy view that keeps the batch alive (`width` values a message).
+auto batchColumn(MessageBatch::Column c, py::ssize_t width) {
+    return [c, width](const std::shared_ptr<MessageBatch>& b) { return columnView(b, b->column(c), width); };
+}
+
 py::tuple xy(const Eigen::Vector2d& p) { return py::make_tuple(p.x(), p.y()); }
 
 /// "station:sequence" (Denm.action, send_denm's answer) as an action id.
@@ -187,29 +192,12 @@ void bindMessages(py::module_& m) {
              })
         .def_property_readonly("types", &MessageBatch::types)
         .def_property_readonly("senders", &MessageBatch::senders)
-        .def_property_readonly("received_at",
-                               [](const std::shared_ptr<MessageBatch>& b) {
-                                   return columnView(b, b->column(MessageBatch::Column::ReceivedAt), 1);
-                               })
-        .def_property_readonly("sent_at",
-                               [](const std::shared_ptr<MessageBatch>& b) {
-                                   return columnView(b, b->column(MessageBatch::Column::SentAt), 1);
-                               })
-        .def_property_readonly("sizes",
-                               [](const std::shared_ptr<MessageBatch>& b) {
-                                   return columnView(b, b->column(MessageBatch::Column::Size), 1);
-                               })
-        .def_property_readonly("cam_positions",
-                               [](const std::shared_ptr<MessageBatch>& b) {
-                                   return columnView(b, b->column(MessageBatch::Column::CamPosition), 2);
-                               })
-        .def_property_readonly("cam_speeds",
-                               [](const std::shared_ptr<MessageBatch>& b) {
-                                   return columnView(b, b->column(MessageBatch::Column::CamSpeed), 1);
-                               })
-        .def_property_readonly("cam_headings", [](const std::shared_ptr<MessageBatch>& b) {
-            return columnView(b, b->column(MessageBatch::Column::CamHeading), 1);
-        });
+        .def_property_readonly("received_at", batchColumn(MessageBatch::Column::ReceivedAt, 1))
+        .def_property_readonly("sent_at", batchColumn(MessageBatch::Column::SentAt, 1))
+        .def_property_readonly("sizes", batchColumn(MessageBatch::Column::Size, 1))
+        .def_property_readonly("cam_positions", batchColumn(MessageBatch::Column::CamPosition, 2))
+        .def_property_readonly("cam_speeds", batchColumn(MessageBatch::Column::CamSpeed, 1))
+        .def_property_readonly("cam_headings", batchColumn(MessageBatch::Column::CamHeading, 1));
 
     py::class_<traffic::StoryboardSignal, std::shared_ptr<traffic::StoryboardSignal>>(m, "Signal")
         .def_property_readonly("cause", [](const traffic::StoryboardSignal& s) { return s.cause; })
