@@ -120,7 +120,7 @@ def main() -> None:
     base_wall = median([r.wall for r in results["sumo"]]) if "sumo" in results else None
     print(
         f"\n{'command':<26} {'wall s':>8} {'cpu s':>8} {'cpu×':>6} {'wall×':>6} {'rss MB':>7} {'sent':>9} "
-        f"{'delivered':>11} {'full links':>12} {'interf. links':>14} {'ns/link':>8} {'µs/rx':>6}"
+        f"{'delivered':>11} {'full links':>12} {'interf. links':>14} {'ns/link':>8} {'µs/rx':>6} {'M rx/cpu s':>10}"
     )
     for name, rs in results.items():
         wall, cpu = median([r.wall for r in rs]), median([r.cpu for r in rs])
@@ -132,12 +132,14 @@ def main() -> None:
         links = f.get("full", 0) + f.get("interference", 0)
         ns_link = f"{1e9 * above / links:.1f}" if above is not None and links else ""
         us_rx = f"{1e6 * above / f['delivered']:.3f}" if above is not None and f.get("delivered") else ""
-        cpu_x = f"{cpu / base_cpu:.1f}" if base_cpu else ""
-        wall_x = f"{wall / base_wall:.1f}" if base_wall else ""
+        # Receptions per CPU second of the whole run: the throughput a study sees.
+        rx_rate = f"{f['delivered'] / cpu / 1e6:.1f}" if f.get("delivered") else ""
+        cpu_x = f"{cpu / base_cpu:.2f}" if base_cpu else ""
+        wall_x = f"{wall / base_wall:.2f}" if base_wall else ""
         print(
             f"{name:<26} {wall:8.2f} {cpu:8.2f} {cpu_x:>6} {wall_x:>6} {rss:7.0f} {f.get('sent', ''):>9} "
             f"{f.get('delivered', ''):>11} {f.get('full', ''):>12} {f.get('interference', ''):>14} "
-            f"{ns_link:>8} {us_rx:>6}"
+            f"{ns_link:>8} {us_rx:>6} {rx_rate:>10}"
         )
     load = os.getloadavg()
     print(f"\nload average after the runs: {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} ({os.cpu_count()} CPUs)")
