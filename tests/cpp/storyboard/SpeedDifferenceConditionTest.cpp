@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "StoryboardTestSupport.h"
+#include "sbsim/kernel/ParallelFor.h"
 
 namespace sbsim::storyboard::test {
 namespace {
@@ -103,6 +104,61 @@ TEST(SpeedDifferenceCondition, MatchesBruteForceOnRandomTraffic) {
         }
     }
     EXPECT_GT(nonEmpty, 1000u);
+}
+
+TEST(SpeedDifferenceCondition, AnswersAheadWithAPoolMatchBruteForce) {
+    // With a distance and a pool, prepare() finds every answer at once (one sweep of the pairs)
+    // once test() asked about most vehicles in the step before; the answers are the definition's.
+    std::mt19937_64 rng(4711);
+    std::uniform_real_distribution<double> coordinate(-300, 300);
+    std::uniform_int_distribution<int> speedStep(0, 60);  // quarter m/s steps: ties and exact differences
+    std::vector<Vehicle> steps[3];
+    for (int k = 0; k < 800; ++k) {
+        for (int t = 0; t < 3; ++t) {
+            // Lattice positions in the last step: pairs exactly on the distance and on cell borders.
+            const double x = t == 2 ? 10.0 * std::round(coordinate(rng) / 10) : coordinate(rng);
+            const double y = t == 2 ? 10.0 * std::round(coordinate(rng) / 10) : coordinate(rng);
+            const double speed = k == 7 ? std::numeric_limits<double>::quiet_NaN() : 0.25 * speedStep(rng);
+            steps[t].push_back(car("veh" + std::to_string(k), x, y, speed));
+        }
+    }
+    kernel::ParallelFor pool(2);
+    std::size_t nonEmpty = 0;
+    for (const double distance : {30.0, 50.0}) {
+        for (const double delta : {-0.25, 0.0, 2.5, 8.0}) {
+            SpeedDifferenceConditionFaster faster(delta, distance);
+            SpeedDifferenceConditionSlower slower(delta, distance);
+            for (int t = 0; t < 3; ++t) {
+                Scene scene(steps[t], SimTime::fromSeconds(t), 50);
+                const EvaluationContext pooled(scene.snapshot(), scene.grid(), nullptr, &pool);
+                faster.prepare(pooled);
+                slower.prepare(pooled);
+                EXPECT_EQ(faster.answersAhead(), t > 0) << "step " << t;  // nothing asked before step 0
+                EXPECT_EQ(slower.answersAhead(), t > 0) << "step " << t;
+                for (VehicleIndex ego = 0; ego < scene.snapshot().size(); ++ego) {
+                    const ConditionResult f = faster.test(pooled, ego);
+                    const ConditionResult s = slower.test(pooled, ego);
+                    ASSERT_EQ(f.others(), bruteForce(scene.snapshot(), ego, true, delta, distance))
+                        << "step " << t << " ego " << ego << " delta " << delta << " distance " << distance;
+                    ASSERT_EQ(s.others(), bruteForce(scene.snapshot(), ego, false, delta, distance))
+                        << "step " << t << " ego " << ego << " delta " << delta << " distance " << distance;
+                    nonEmpty += f.isTrue() + s.isTrue();
+                }
+            }
+            // Asked about one vehicle only: the next step searches per ego again.
+            Scene few(steps[0], SimTime::fromSeconds(3), 50);
+            const EvaluationContext pooledFew(few.snapshot(), few.grid(), nullptr, &pool);
+            faster.prepare(pooledFew);
+            EXPECT_TRUE(faster.answersAhead());
+            ASSERT_EQ(faster.test(pooledFew, 0).others(), bruteForce(few.snapshot(), 0, true, delta, distance));
+            Scene next(steps[1], SimTime::fromSeconds(4), 50);
+            const EvaluationContext pooledNext(next.snapshot(), next.grid(), nullptr, &pool);
+            faster.prepare(pooledNext);
+            EXPECT_FALSE(faster.answersAhead());
+            ASSERT_EQ(faster.test(pooledNext, 5).others(), bruteForce(next.snapshot(), 5, true, delta, distance));
+        }
+    }
+    EXPECT_GT(nonEmpty, 5000u);
 }
 
 TEST(SpeedDifferenceCondition, WithADistanceTheStepsExtremeSpeedsSpareTheSearch) {

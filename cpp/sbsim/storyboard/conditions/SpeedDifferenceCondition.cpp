@@ -38,6 +38,46 @@ void SpeedDifferenceCondition::prepare(const EvaluationContext& ctx) {
     lowestSpeed_ = low;
     highestSpeed_ = high;
     stamp_ = SnapshotStamp::of(ctx.snapshot());
+    // All answers ahead only pay when test() will ask about most vehicles, as it did last step: a
+    // story whose other conditions fail first (a time window, an area) asks about few or none.
+    answersReady_ = false;
+    const std::size_t before = preparedSize_;
+    preparedSize_ = static_cast<std::size_t>(ctx.snapshot().size());
+    const std::size_t asked = tests_.exchange(0, std::memory_order_relaxed);
+    if (ctx.parallel() != nullptr && before > 0 && 2 * asked >= before) computeAnswers(ctx);
+}
+
+void SpeedDifferenceCondition::computeAnswers(const EvaluationContext& ctx) {
+    const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
+    const auto n = static_cast<std::size_t>(snapshot.size());
+    const Eigen::VectorXd& speeds = snapshot.speeds();
+    sweep_.build(snapshot, *distance_);
+    const std::size_t rows = sweep_.rows();
+    if (rowFound_.size() < rows) rowFound_.resize(rows);
+    ctx.parallel()->run(
+        rows,
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t row = begin; row < end; ++row) {
+                std::vector<std::pair<VehicleIndex, VehicleIndex>>& found = rowFound_[row];
+                found.clear();
+                sweep_.forEachPairInRow(row, [&](VehicleIndex a, VehicleIndex b) {
+                    if (qualifies(speeds[a], speeds[b])) found.emplace_back(a, b);
+                    if (qualifies(speeds[b], speeds[a])) found.emplace_back(b, a);
+                });
+            }
+        },
+        1);
+    // Sorted by ego, then other: each ego's answer is one ascending run.
+    found_.clear();
+    for (std::size_t row = 0; row < rows; ++row)
+        found_.insert(found_.end(), rowFound_[row].begin(), rowFound_[row].end());
+    std::sort(found_.begin(), found_.end());
+    answerStart_.assign(n + 1, 0);
+    for (const auto& [ego, other] : found_) ++answerStart_[static_cast<std::size_t>(ego) + 1];
+    for (std::size_t k = 0; k < n; ++k) answerStart_[k + 1] += answerStart_[k];
+    answerOthers_.resize(found_.size());
+    for (std::size_t k = 0; k < found_.size(); ++k) answerOthers_[k] = found_[k].second;
+    answersReady_ = true;
 }
 
 void SpeedDifferenceCondition::sortBySpeed(const traffic::VehicleSnapshot& snapshot) {
@@ -53,13 +93,19 @@ void SpeedDifferenceCondition::sortBySpeed(const traffic::VehicleSnapshot& snaps
 ConditionResult SpeedDifferenceCondition::test(const EvaluationContext& ctx, VehicleIndex ego) {
     const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
     if (!distance_) return testAll(snapshot, ego);
+    tests_.fetch_add(1, std::memory_order_relaxed);
     const Eigen::VectorXd& speeds = snapshot.speeds();
     const double egoSpeed = speeds[ego];
+    const bool prepared = stamp_ == SnapshotStamp::of(snapshot);
     // Rounded subtraction is monotone, so if the step's fastest (slowest) vehicle does not
     // qualify, none does. Only with the extremes of this very snapshot (prepare()'s).
-    if (stamp_ == SnapshotStamp::of(snapshot) && !qualifies(egoSpeed, highestSpeed_) &&
-        !qualifies(egoSpeed, lowestSpeed_)) {
+    if (prepared && !qualifies(egoSpeed, highestSpeed_) && !qualifies(egoSpeed, lowestSpeed_)) {
         return ConditionResult::ofOthers({});
+    }
+    if (prepared && answersReady_) {
+        const auto k = static_cast<std::size_t>(ego);
+        return ConditionResult::ofOthers(std::vector<VehicleIndex>(answerOthers_.begin() + answerStart_[k],
+                                                                   answerOthers_.begin() + answerStart_[k + 1]));
     }
     std::vector<VehicleIndex> others;  // local: test() may run on several threads at once
     ctx.neighbours().forEachWithin(ego, *distance_, [&](VehicleIndex o) {

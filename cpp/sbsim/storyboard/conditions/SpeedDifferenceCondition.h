@@ -1,10 +1,14 @@
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "sbsim/storyboard/Condition.h"
 #include "sbsim/storyboard/conditions/SnapshotStamp.h"
+#include "sbsim/traffic/PairSweep.h"
 
 namespace sbsim::storyboard {
 
@@ -23,6 +27,9 @@ public:
     std::string describe() const override;
     double delta() const { return delta_; }
     std::optional<double> distance() const { return distance_; }
+    /// Whether the last prepare() found every vehicle's answer ahead (with a distance and a pool,
+    /// when test() asked about most vehicles in the step before).
+    bool answersAhead() const { return answersReady_; }
 
 protected:
     enum class Direction { EgoFaster, EgoSlower };
@@ -37,6 +44,9 @@ private:
     }
     ConditionResult testAll(const traffic::VehicleSnapshot& snapshot, VehicleIndex ego);
     void sortBySpeed(const traffic::VehicleSnapshot& snapshot);
+    /// With a distance: every vehicle's answer at once, from one sweep of the pairs within the
+    /// distance (each pair's distance tested once), on the pool; fills answerStart_ and answerOthers_.
+    void computeAnswers(const EvaluationContext& ctx);
 
     Direction direction_;
     double delta_;
@@ -49,6 +59,17 @@ private:
     // Per step, with a distance: the lowest and highest speed of the snapshot stamp_ names.
     double lowestSpeed_ = 0;
     double highestSpeed_ = 0;
+    // With a distance and a pool, when test() asked about most vehicles in the step before (as
+    // TtcCondition does): vehicle i's answer is answerOthers_[answerStart_[i], answerStart_[i + 1]),
+    // ascending, for the snapshot stamp_ names. rowFound_[k]: the (ego, other) the sweep's row k found.
+    bool answersReady_ = false;
+    std::atomic<std::size_t> tests_{0};  // test() calls since the last prepare()
+    std::size_t preparedSize_ = 0;       // vehicles at the last prepare()
+    std::vector<std::int32_t> answerStart_;
+    std::vector<VehicleIndex> answerOthers_;
+    traffic::PairSweep sweep_;
+    std::vector<std::vector<std::pair<VehicleIndex, VehicleIndex>>> rowFound_;
+    std::vector<std::pair<VehicleIndex, VehicleIndex>> found_;
 };
 
 /// The other vehicles the ego is faster than by more than `delta`: speed(ego) - speed(o) > delta.

@@ -45,38 +45,44 @@ void TtcCondition::prepare(const EvaluationContext& ctx) {
 
 void TtcCondition::computePairs(const EvaluationContext& ctx) {
     const std::size_t n = movers_.size();
-    laterConflicts_.resize(n);
+    // One sweep visits each pair within distance_ once (a search per vehicle meets it twice);
+    // a pair is tested with its smaller index first, as the search per vehicle does.
+    sweep_.build(ctx.snapshot(), distance_);
+    const std::size_t rows = sweep_.rows();
+    if (rowConflicts_.size() < rows) rowConflicts_.resize(rows);
     ctx.parallel()->run(
-        n,
+        rows,
         [&](std::size_t begin, std::size_t end) {
-            for (std::size_t k = begin; k < end; ++k) {
-                const auto ego = static_cast<VehicleIndex>(k);
-                std::vector<VehicleIndex>& found = laterConflicts_[k];
+            for (std::size_t row = begin; row < end; ++row) {
+                std::vector<std::pair<VehicleIndex, VehicleIndex>>& found = rowConflicts_[row];
                 found.clear();
-                ctx.neighbours().forEachWithin(ego, distance_, [&](VehicleIndex o) {
-                    if (o > ego && conflicts(ego, o)) found.push_back(o);
+                sweep_.forEachPairInRow(row, [&](VehicleIndex a, VehicleIndex b) {
+                    const VehicleIndex ego = std::min(a, b);
+                    const VehicleIndex other = std::max(a, b);
+                    if (conflicts(ego, other)) found.emplace_back(ego, other);
                 });
-                std::sort(found.begin(), found.end());
             }
         },
-        128);
-    // Each pair counts for both vehicles. Walking the vehicles in ascending order appends to
+        1);
+    // Few pairs conflict: sorted, they are each vehicle's later conflicts in ascending order.
+    conflicting_.clear();
+    for (std::size_t row = 0; row < rows; ++row) {
+        conflicting_.insert(conflicting_.end(), rowConflicts_[row].begin(), rowConflicts_[row].end());
+    }
+    std::sort(conflicting_.begin(), conflicting_.end());
+    // Each pair counts for both vehicles. Walking the pairs in ascending order appends to
     // vehicle j first the smaller indices that found it, then its own larger ones: ascending.
     pairStart_.assign(n + 1, 0);
-    for (std::size_t k = 0; k < n; ++k) {
-        for (const VehicleIndex o : laterConflicts_[k]) {
-            ++pairStart_[k + 1];
-            ++pairStart_[static_cast<std::size_t>(o) + 1];
-        }
+    for (const auto& [k, o] : conflicting_) {
+        ++pairStart_[static_cast<std::size_t>(k) + 1];
+        ++pairStart_[static_cast<std::size_t>(o) + 1];
     }
     for (std::size_t k = 0; k < n; ++k) pairStart_[k + 1] += pairStart_[k];
     pairOthers_.resize(static_cast<std::size_t>(pairStart_[n]));
     std::vector<std::int32_t> next(pairStart_.begin(), pairStart_.end() - 1);
-    for (std::size_t k = 0; k < n; ++k) {
-        for (const VehicleIndex o : laterConflicts_[k]) {
-            pairOthers_[static_cast<std::size_t>(next[k]++)] = o;
-            pairOthers_[static_cast<std::size_t>(next[static_cast<std::size_t>(o)]++)] = static_cast<VehicleIndex>(k);
-        }
+    for (const auto& [k, o] : conflicting_) {
+        pairOthers_[static_cast<std::size_t>(next[static_cast<std::size_t>(k)]++)] = o;
+        pairOthers_[static_cast<std::size_t>(next[static_cast<std::size_t>(o)]++)] = k;
     }
     pairsReady_ = true;
 }

@@ -5,12 +5,14 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "sbsim/storyboard/Condition.h"
 #include "sbsim/storyboard/conditions/SnapshotStamp.h"
 #include "sbsim/storyboard/geometry/Footprint.h"
 #include "sbsim/storyboard/geometry/MovingFootprint.h"
+#include "sbsim/traffic/PairSweep.h"
 
 namespace sbsim::storyboard {
 
@@ -82,7 +84,8 @@ private:
     bool conflicts(VehicleIndex a, VehicleIndex b) const;
     /// The step's movers and poses; on the pool when one is given.
     void computeMovers(const traffic::VehicleSnapshot& snapshot, kernel::ParallelFor* parallel);
-    /// Every pair within distance_ tested once, on the pool; fills pairStart_ and pairOthers_.
+    /// Every pair within distance_ tested once, on the pool (one sweep of the pairs, a row of
+    /// cells per task); fills pairStart_ and pairOthers_.
     void computePairs(const EvaluationContext& ctx);
 
     /// The front bumper poses of one snapshot, by vehicle id in ascending order.
@@ -100,11 +103,14 @@ private:
     std::vector<geometry::MovingFootprint> movers_;  // per vehicle of the step
     std::vector<geometry::MovingCircle> circles_;    // the same, compact
     // Pairs tested ahead: vehicle i's others are pairOthers_[pairStart_[i], pairStart_[i + 1]),
-    // ascending. laterConflicts_[i] holds those with a larger index (one writer per i).
+    // ascending. rowConflicts_[k] holds the conflicting pairs (smaller index first) the sweep's
+    // row k found (one writer per row).
     bool pairsReady_ = false;
     std::vector<std::int32_t> pairStart_;
     std::vector<VehicleIndex> pairOthers_;
-    std::vector<std::vector<VehicleIndex>> laterConflicts_;
+    traffic::PairSweep sweep_;
+    std::vector<std::vector<std::pair<VehicleIndex, VehicleIndex>>> rowConflicts_;
+    std::vector<std::pair<VehicleIndex, VehicleIndex>> conflicting_;
     std::atomic<std::size_t> tests_{0};  // test() calls since the last prepare()
     // The poses of the last snapshot seen and of the one before it (an earlier time): a snapshot
     // seen again at the same time compares with the same previous poses.
