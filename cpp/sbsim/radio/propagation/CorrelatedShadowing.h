@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
+#include "sbsim/kernel/HugePageAllocator.h"
 #include "sbsim/kernel/SimTime.h"
 
 namespace sbsim::radio {
@@ -88,9 +89,12 @@ private:
 
     double sigmaDb_, correlationDistance_;
     std::uint64_t seed_;
-    std::vector<Slot> table_;
+    // Both tables are read at random, a miss each: on huge pages, so the miss is not a TLB miss too.
+    template <class T>
+    using Table = std::vector<T, kernel::HugePageAllocator<T>>;
+    Table<Slot> table_;
     std::size_t used_ = 0;
-    std::vector<State> states_;
+    Table<State> states_;
     std::vector<Index> free_;
     kernel::SimTime lastSweep_;
     std::uint64_t generation_ = 0;
