@@ -135,7 +135,8 @@ std::shared_ptr<const StepLinks> LinkBudget::computeLinks(Slot s, std::uint64_t 
                 link.locked = false;
                 double dbm = near.fullMeanDbm[j];
                 if (shadowing_) {
-                    if (j + 4 < end) shadowing_->prefetch(near.pair[j + 4]);
+                    constexpr std::size_t ahead = CorrelatedShadowing::kPrefetchAhead;
+                    if (j + ahead < end) shadowing_->prefetch(near.pair[j + ahead]);
                     shadowing_->touch(near.pair[j], now);
                     dbm += shadowing_->valueDb(near.pair[j], stations_.keys[s], stations_.x[s], stations_.y[s],
                                                near.fullKey[j], stations_.x[r], stations_.y[r]);

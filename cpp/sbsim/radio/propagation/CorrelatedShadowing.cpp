@@ -66,7 +66,7 @@ void CorrelatedShadowing::pairs(std::uint64_t a, const std::vector<std::uint64_t
 }
 
 void CorrelatedShadowing::rebuild(std::size_t slots) {
-    std::vector<Slot> old(slots);
+    Table<Slot> old(slots);
     old.swap(table_);
     const std::size_t mask = slots - 1;
     for (const Slot& s : old) {
