@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "sbsim/radio/CounterRandom.h"
 #include "sbsim/radio/Decibels.h"
@@ -289,6 +292,19 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
     near.obstaclesPending = false;
 }
 
+namespace {
+/// classify()'s per-link columns, one set per thread (a neighbourhood is classified on one).
+struct ClassifyScratch {
+    std::vector<std::uint32_t> candidate;  // index into the candidates
+    std::vector<double> distance, lossDb;
+    struct FarCell {
+        FarCells::Cell cell;
+        std::uint32_t occupants;
+    };
+    std::vector<FarCell> far;
+};
+}  // namespace
+
 void LinkBudget::classify(Slot s) {
     Neighbourhood& near = near_[s];
     const std::vector<Slot>& candidates = near.candidates;
@@ -300,7 +316,8 @@ void LinkBudget::classify(Slot s) {
     near.fullKey.clear();
     near.fullMeanDbm.clear();
     near.skipped = 0;
-    const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
+    const double fromX = stations_.x[s];
+    const double fromY = stations_.y[s];
     const bool obstacles = obstacles_ && obstacles_->size() > 0;
     const bool tiers = settings_.linkTiers;
     // Tiers: below the floor by the cutoff's margin (buildings can put a link there), or below
@@ -309,12 +326,31 @@ void LinkBudget::classify(Slot s) {
     const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
     const double fullFrom = std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
     const bool far = far_ && cells_.usable();
+    // In passes over columns (the links' distances, then their path loss in one call) rather than
+    // link by link: the square roots go two at a time and the law is one virtual call, not one a
+    // link. The values are those of the link-by-link form: the same operations on each.
+    static thread_local ClassifyScratch scratch;
+    ClassifyScratch& columns = scratch;
+    columns.candidate.clear();
+    columns.distance.clear();
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Slot r = candidates[c];
-        if (far && cells_.beyond(r, from.x(), from.y(), farRange_)) continue;  // in a far cell below
-        const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
-        const double distance = (to - from).norm();
-        double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
+        if (far && cells_.beyond(r, fromX, fromY, farRange_)) continue;  // in a far cell below
+        const double dx = stations_.x[r] - fromX;
+        const double dy = stations_.y[r] - fromY;
+        columns.candidate.push_back(static_cast<std::uint32_t>(c));
+        columns.distance.push_back(dx * dx + dy * dy);  // squared until the pass below
+    }
+    const std::size_t n = columns.candidate.size();
+    Eigen::Map<Eigen::ArrayXd> distances(columns.distance.data(), static_cast<Eigen::Index>(n));
+    distances = distances.sqrt();
+    columns.lossDb.resize(n);
+    pathLoss_->lossesDb(columns.distance, columns.lossDb);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t c = columns.candidate[k];
+        const Slot r = candidates[c];
+        const double distance = columns.distance[k];
+        double mean = settings_.powerDbm - columns.lossDb[k];
         if (obstacles) mean -= near.obstacleDb[c];
         if (tiers && mean < skipBelow) {
             ++near.skipped;
@@ -338,23 +374,31 @@ void LinkBudget::classify(Slot s) {
     if (!far) return;
     // The far tier: a cell wholly beyond the far range is one link for its occupants, the mean power
     // at its centre (within the cutoff).
+    columns.far.clear();
+    columns.distance.clear();
     cells_.forEachOccupied(
-        from.x(), from.y(), cutoff_ + cells_.size(),
+        fromX, fromY, cutoff_ + cells_.size(),
         [&](FarCells::Cell cell, std::uint32_t occupants, double x, double y, std::int32_t cx, std::int32_t cy) {
-            if (!cells_.cellBeyond(cx, cy, from.x(), from.y(), farRange_)) return;
-            const double distance = std::hypot(x - from.x(), y - from.y());
+            if (!cells_.cellBeyond(cx, cy, fromX, fromY, farRange_)) return;
+            const double distance = std::hypot(x - fromX, y - fromY);
             if (distance > cutoff_) return;
-            const double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
-            if (mean < skipBelow) {
-                near.skipped += occupants;
-                return;
-            }
-            const double mw = dbToLinear(mean + meanGainDb_);
-            step.farCell.push_back(cell);
-            step.farUnits.push_back(mw >= floorMw_ ? Reception::unitsOf(mw) : 0);
-            step.farOccupants.push_back(occupants);
-            step.farBin.push_back(static_cast<std::uint32_t>(distance / kDistanceBin));
+            columns.far.push_back({cell, occupants});
+            columns.distance.push_back(distance);
         });
+    columns.lossDb.resize(columns.far.size());
+    pathLoss_->lossesDb(columns.distance, columns.lossDb);
+    for (std::size_t k = 0; k < columns.far.size(); ++k) {
+        const double mean = settings_.powerDbm - columns.lossDb[k];
+        if (mean < skipBelow) {
+            near.skipped += columns.far[k].occupants;
+            continue;
+        }
+        const double mw = dbToLinear(mean + meanGainDb_);
+        step.farCell.push_back(columns.far[k].cell);
+        step.farUnits.push_back(mw >= floorMw_ ? Reception::unitsOf(mw) : 0);
+        step.farOccupants.push_back(columns.far[k].occupants);
+        step.farBin.push_back(static_cast<std::uint32_t>(columns.distance[k] / kDistanceBin));
+    }
 }
 
 }  // namespace sbsim::radio
