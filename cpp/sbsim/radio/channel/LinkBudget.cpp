@@ -346,6 +346,26 @@ void LinkBudget::classify(Slot s) {
     distances = distances.sqrt();
     columns.lossDb.resize(n);
     pathLoss_->lossesDb(columns.distance, columns.lossDb);
+    // The step's columns sized for every link and cut to what was kept: written through plain
+    // pointers, not a push_back (its end pointer reloaded and stored per link and column).
+    step.receivers.resize(n);
+    step.distance.resize(n);
+    step.bin.resize(n);
+    step.tier.resize(n);
+    step.units.resize(n);
+    near.full.resize(n);
+    near.fullKey.resize(n);
+    near.fullMeanDbm.resize(n);
+    Slot* const receivers = step.receivers.data();
+    double* const distanceOut = step.distance.data();
+    std::uint32_t* const bins = step.bin.data();
+    std::uint8_t* const tier = step.tier.data();
+    StepLinks::Units* const units = step.units.data();
+    std::uint32_t* const full = near.full.data();
+    std::uint64_t* const fullKey = near.fullKey.data();
+    double* const fullMeanDbm = near.fullMeanDbm.data();
+    std::size_t kept = 0;
+    std::size_t drawn = 0;
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t c = columns.candidate[k];
         const Slot r = candidates[c];
@@ -356,21 +376,31 @@ void LinkBudget::classify(Slot s) {
             ++near.skipped;
             continue;
         }
-        step.receivers.push_back(r);
-        step.distance.push_back(distance);
-        step.bin.push_back(static_cast<std::uint32_t>(distance / kDistanceBin));
+        receivers[kept] = r;
+        distanceOut[kept] = distance;
+        bins[kept] = static_cast<std::uint32_t>(distance / kDistanceBin);
         if (tiers && mean < fullFrom) {
             const double mw = dbToLinear(mean + meanGainDb_);
-            step.tier.push_back(mw >= floorMw_ ? StepLinks::kInterference : StepLinks::kBelowFloor);
-            step.units.push_back(Reception::unitsOf(mw));
+            tier[kept] = mw >= floorMw_ ? StepLinks::kInterference : StepLinks::kBelowFloor;
+            units[kept] = Reception::unitsOf(mw);
         } else {
-            step.tier.push_back(StepLinks::kDrawn);
-            step.units.push_back(0);
-            near.full.push_back(static_cast<std::uint32_t>(step.receivers.size() - 1));
-            near.fullKey.push_back(stations_.keys[r]);
-            near.fullMeanDbm.push_back(mean);
+            tier[kept] = StepLinks::kDrawn;
+            units[kept] = 0;
+            full[drawn] = static_cast<std::uint32_t>(kept);
+            fullKey[drawn] = stations_.keys[r];
+            fullMeanDbm[drawn] = mean;
+            ++drawn;
         }
+        ++kept;
     }
+    step.receivers.resize(kept);
+    step.distance.resize(kept);
+    step.bin.resize(kept);
+    step.tier.resize(kept);
+    step.units.resize(kept);
+    near.full.resize(drawn);
+    near.fullKey.resize(drawn);
+    near.fullMeanDbm.resize(drawn);
     if (!far) return;
     // The far tier: a cell wholly beyond the far range is one link for its occupants, the mean power
     // at its centre (within the cutoff).
