@@ -303,6 +303,12 @@ struct ClassifyScratch {
     };
     std::vector<FarCell> far;
 };
+/// This thread's columns. Not inlined: GCC re-derives an inlined thread_local's address at each
+/// use (a __tls_get_addr per link).
+[[gnu::noinline]] ClassifyScratch& classifyScratch() {
+    static thread_local ClassifyScratch scratch;
+    return scratch;
+}
 }  // namespace
 
 void LinkBudget::classify(Slot s) {
@@ -329,19 +335,25 @@ void LinkBudget::classify(Slot s) {
     // In passes over columns (the links' distances, then their path loss in one call) rather than
     // link by link: the square roots go two at a time and the law is one virtual call, not one a
     // link. The values are those of the link-by-link form: the same operations on each.
-    static thread_local ClassifyScratch scratch;
-    ClassifyScratch& columns = scratch;
-    columns.candidate.clear();
-    columns.distance.clear();
+    ClassifyScratch& columns = classifyScratch();
+    columns.candidate.resize(candidates.size());
+    columns.distance.resize(candidates.size());
+    std::uint32_t* const keptCandidate = columns.candidate.data();
+    double* const squared = columns.distance.data();
+    const double* const x = stations_.x.data();
+    const double* const y = stations_.y.data();
+    std::size_t n = 0;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Slot r = candidates[c];
         if (far && cells_.beyond(r, fromX, fromY, farRange_)) continue;  // in a far cell below
-        const double dx = stations_.x[r] - fromX;
-        const double dy = stations_.y[r] - fromY;
-        columns.candidate.push_back(static_cast<std::uint32_t>(c));
-        columns.distance.push_back(dx * dx + dy * dy);  // squared until the pass below
+        const double dx = x[r] - fromX;
+        const double dy = y[r] - fromY;
+        keptCandidate[n] = static_cast<std::uint32_t>(c);
+        squared[n] = dx * dx + dy * dy;  // squared until the pass below
+        ++n;
     }
-    const std::size_t n = columns.candidate.size();
+    columns.candidate.resize(n);
+    columns.distance.resize(n);
     Eigen::Map<Eigen::ArrayXd> distances(columns.distance.data(), static_cast<Eigen::Index>(n));
     distances = distances.sqrt();
     columns.lossDb.resize(n);
