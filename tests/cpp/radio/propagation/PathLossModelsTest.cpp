@@ -48,8 +48,8 @@ TEST(PathLossModels, EveryModelBuildsFromItsDefaultsAndLosesMoreFartherAway) {
 }
 
 TEST(PathLossModels, EveryModelsBatchGivesItsLossesOneByOneExactly) {
-    // Below 1 m, around each law's breakpoint or crossover (WINNER+ B1 ~ 79 m, two-ray ~ 222 m at
-    // these heights) and out to the far tier: the batch is the channel's hot path, so bit for bit.
+    // Below 1 m, around each law's breakpoint or crossover (WINNER+ B1 ~ 79 m, two-ray ~ 555 m at
+    // the default 1.5 m) and out to the far tier: the batch is the channel's hot path, so bit for bit.
     std::vector<double> distances{0.25, 1.0, 1.5, 3.7, 10.0, 42.0};
     for (double d = 60; d < 1500; d *= 1.0137) distances.push_back(d);
     for (const auto& [name, model] : PathLossModels::all()) {
