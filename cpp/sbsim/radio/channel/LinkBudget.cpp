@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "sbsim/radio/CounterRandom.h"
 #include "sbsim/radio/Decibels.h"
@@ -290,6 +293,25 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
     near.obstaclesPending = false;
 }
 
+namespace {
+/// classify()'s per-link columns, one set per thread (a neighbourhood is classified on one).
+struct ClassifyScratch {
+    std::vector<std::uint32_t> candidate;  // index into the candidates
+    std::vector<double> distance, lossDb;
+    struct FarCell {
+        FarCells::Cell cell;
+        std::uint32_t occupants;
+    };
+    std::vector<FarCell> far;
+};
+/// This thread's columns. Not inlined: GCC re-derives an inlined thread_local's address at each
+/// use (a __tls_get_addr per link).
+[[gnu::noinline]] ClassifyScratch& classifyScratch() {
+    static thread_local ClassifyScratch scratch;
+    return scratch;
+}
+}  // namespace
+
 void LinkBudget::classify(Slot s) {
     Neighbourhood& near = near_[s];
     const std::vector<Slot>& candidates = near.candidates;
@@ -301,7 +323,8 @@ void LinkBudget::classify(Slot s) {
     near.fullKey.clear();
     near.fullMeanDbm.clear();
     near.skipped = 0;
-    const Eigen::Vector2d from(stations_.x[s], stations_.y[s]);
+    const double fromX = stations_.x[s];
+    const double fromY = stations_.y[s];
     const bool obstacles = obstacles_ && obstacles_->size() > 0;
     const bool tiers = settings_.linkTiers;
     // Tiers: below the floor by the cutoff's margin (buildings can put a link there), or below
@@ -310,52 +333,115 @@ void LinkBudget::classify(Slot s) {
     const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
     const double fullFrom = std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
     const bool far = far_ && cells_.usable();
+    // In passes over columns (the links' distances, then their path loss in one call) rather than
+    // link by link: the square roots go two at a time and the law is one virtual call, not one a
+    // link. The values are those of the link-by-link form: the same operations on each.
+    ClassifyScratch& columns = classifyScratch();
+    columns.candidate.resize(candidates.size());
+    columns.distance.resize(candidates.size());
+    std::uint32_t* const keptCandidate = columns.candidate.data();
+    double* const squared = columns.distance.data();
+    const double* const x = stations_.x.data();
+    const double* const y = stations_.y.data();
+    std::size_t n = 0;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Slot r = candidates[c];
-        if (far && cells_.beyond(r, from.x(), from.y(), farRange_)) continue;  // in a far cell below
-        const Eigen::Vector2d to(stations_.x[r], stations_.y[r]);
-        const double distance = (to - from).norm();
-        double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
+        if (far && cells_.beyond(r, fromX, fromY, farRange_)) continue;  // in a far cell below
+        const double dx = x[r] - fromX;
+        const double dy = y[r] - fromY;
+        keptCandidate[n] = static_cast<std::uint32_t>(c);
+        squared[n] = dx * dx + dy * dy;  // squared until the pass below
+        ++n;
+    }
+    columns.candidate.resize(n);
+    columns.distance.resize(n);
+    Eigen::Map<Eigen::ArrayXd> distances(columns.distance.data(), static_cast<Eigen::Index>(n));
+    distances = distances.sqrt();
+    columns.lossDb.resize(n);
+    pathLoss_->lossesDb(columns.distance, columns.lossDb);
+    // The step's columns sized for every link and cut to what was kept: written through plain
+    // pointers, not a push_back (its end pointer reloaded and stored per link and column).
+    step.receivers.resize(n);
+    step.distance.resize(n);
+    step.bin.resize(n);
+    step.tier.resize(n);
+    step.units.resize(n);
+    near.full.resize(n);
+    near.fullKey.resize(n);
+    near.fullMeanDbm.resize(n);
+    Slot* const receivers = step.receivers.data();
+    double* const distanceOut = step.distance.data();
+    std::uint32_t* const bins = step.bin.data();
+    std::uint8_t* const tier = step.tier.data();
+    StepLinks::Units* const units = step.units.data();
+    std::uint32_t* const full = near.full.data();
+    std::uint64_t* const fullKey = near.fullKey.data();
+    double* const fullMeanDbm = near.fullMeanDbm.data();
+    std::size_t kept = 0;
+    std::size_t drawn = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t c = columns.candidate[k];
+        const Slot r = candidates[c];
+        const double distance = columns.distance[k];
+        double mean = settings_.powerDbm - columns.lossDb[k];
         if (obstacles) mean -= near.obstacleDb[c];
         if (tiers && mean < skipBelow) {
             ++near.skipped;
             continue;
         }
-        step.receivers.push_back(r);
-        step.distance.push_back(distance);
-        step.bin.push_back(static_cast<std::uint32_t>(distance / kDistanceBin));
+        receivers[kept] = r;
+        distanceOut[kept] = distance;
+        bins[kept] = static_cast<std::uint32_t>(distance / kDistanceBin);
         if (tiers && mean < fullFrom) {
             const double mw = dbToLinear(mean + meanGainDb_);
-            step.tier.push_back(mw >= floorMw_ ? StepLinks::kInterference : StepLinks::kBelowFloor);
-            step.units.push_back(Reception::unitsOf(mw));
+            tier[kept] = mw >= floorMw_ ? StepLinks::kInterference : StepLinks::kBelowFloor;
+            units[kept] = Reception::unitsOf(mw);
         } else {
-            step.tier.push_back(StepLinks::kDrawn);
-            step.units.push_back(0);
-            near.full.push_back(static_cast<std::uint32_t>(step.receivers.size() - 1));
-            near.fullKey.push_back(stations_.keys[r]);
-            near.fullMeanDbm.push_back(mean);
+            tier[kept] = StepLinks::kDrawn;
+            units[kept] = 0;
+            full[drawn] = static_cast<std::uint32_t>(kept);
+            fullKey[drawn] = stations_.keys[r];
+            fullMeanDbm[drawn] = mean;
+            ++drawn;
         }
+        ++kept;
     }
+    step.receivers.resize(kept);
+    step.distance.resize(kept);
+    step.bin.resize(kept);
+    step.tier.resize(kept);
+    step.units.resize(kept);
+    near.full.resize(drawn);
+    near.fullKey.resize(drawn);
+    near.fullMeanDbm.resize(drawn);
     if (!far) return;
     // The far tier: a cell wholly beyond the far range is one link for its occupants, the mean power
     // at its centre (within the cutoff).
+    columns.far.clear();
+    columns.distance.clear();
     cells_.forEachOccupied(
-        from.x(), from.y(), cutoff_ + cells_.size(),
+        fromX, fromY, cutoff_ + cells_.size(),
         [&](FarCells::Cell cell, std::uint32_t occupants, double x, double y, std::int32_t cx, std::int32_t cy) {
-            if (!cells_.cellBeyond(cx, cy, from.x(), from.y(), farRange_)) return;
-            const double distance = std::hypot(x - from.x(), y - from.y());
+            if (!cells_.cellBeyond(cx, cy, fromX, fromY, farRange_)) return;
+            const double distance = std::hypot(x - fromX, y - fromY);
             if (distance > cutoff_) return;
-            const double mean = settings_.powerDbm - pathLoss_->lossDb(distance);
-            if (mean < skipBelow) {
-                near.skipped += occupants;
-                return;
-            }
-            const double mw = dbToLinear(mean + meanGainDb_);
-            step.farCell.push_back(cell);
-            step.farUnits.push_back(mw >= floorMw_ ? Reception::unitsOf(mw) : 0);
-            step.farOccupants.push_back(occupants);
-            step.farBin.push_back(static_cast<std::uint32_t>(distance / kDistanceBin));
+            columns.far.push_back({cell, occupants});
+            columns.distance.push_back(distance);
         });
+    columns.lossDb.resize(columns.far.size());
+    pathLoss_->lossesDb(columns.distance, columns.lossDb);
+    for (std::size_t k = 0; k < columns.far.size(); ++k) {
+        const double mean = settings_.powerDbm - columns.lossDb[k];
+        if (mean < skipBelow) {
+            near.skipped += columns.far[k].occupants;
+            continue;
+        }
+        const double mw = dbToLinear(mean + meanGainDb_);
+        step.farCell.push_back(columns.far[k].cell);
+        step.farUnits.push_back(mw >= floorMw_ ? Reception::unitsOf(mw) : 0);
+        step.farOccupants.push_back(columns.far[k].occupants);
+        step.farBin.push_back(static_cast<std::uint32_t>(columns.distance[k] / kDistanceBin));
+    }
 }
 
 }  // namespace sbsim::radio

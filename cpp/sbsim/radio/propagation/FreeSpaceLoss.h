@@ -5,7 +5,7 @@
 namespace sbsim::radio {
 
 /// Friis free-space loss: 20 log10(4π d f / c).
-class SBSIM_API FreeSpaceLoss : public PathLoss {
+class SBSIM_API FreeSpaceLoss : public BatchedPathLoss<FreeSpaceLoss> {
 public:
     explicit FreeSpaceLoss(double frequencyHz);
     double lossDb(double distance) const override;

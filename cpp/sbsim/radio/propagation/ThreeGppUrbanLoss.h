@@ -10,7 +10,7 @@ namespace sbsim::radio {
 ///  - NLOS (a building between): 36.85 + 30 log10 d + 18.9 log10 f_GHz (σ = 4 dB, 13 m).
 /// Which one applies is the radio file's choice (`3gpp-urban` or `3gpp-urban-nlos`): sbsim draws no
 /// LOS state per link; with SUMO's buildings as obstacles use the LOS law and let them add the walls.
-class SBSIM_API ThreeGppUrbanLoss : public PathLoss {
+class SBSIM_API ThreeGppUrbanLoss : public BatchedPathLoss<ThreeGppUrbanLoss> {
 public:
     /// Throws std::invalid_argument for a frequency not > 0.
     ThreeGppUrbanLoss(double frequencyHz, bool lineOfSight);

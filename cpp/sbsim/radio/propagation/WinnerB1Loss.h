@@ -9,7 +9,7 @@ namespace sbsim::radio {
 /// below it 22.7 log10 d + 27 + 20 log10 f_GHz, at or above 40 log10 d + 7.56 + 2.7 log10 f_GHz
 /// (the standard's form with h − h_E = 1 m), and never less than free space
 /// 20 log10 d + 46.4 + 20 log10(f / 5 GHz).
-class SBSIM_API WinnerB1Loss : public PathLoss {
+class SBSIM_API WinnerB1Loss : public BatchedPathLoss<WinnerB1Loss> {
 public:
     WinnerB1Loss(double frequencyHz, double antennaHeight, double environmentHeight);
     double lossDb(double distance) const override;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sbsim/radio/propagation/FreeSpaceLoss.h"
 #include "sbsim/radio/propagation/LogDistanceLoss.h"
@@ -43,6 +44,20 @@ TEST(PathLossModels, EveryModelBuildsFromItsDefaultsAndLosesMoreFartherAway) {
         const double far = loss->lossDb(1000);
         EXPECT_TRUE(std::isfinite(near) && std::isfinite(far)) << name;
         EXPECT_GT(far, near) << name;
+    }
+}
+
+TEST(PathLossModels, EveryModelsBatchGivesItsLossesOneByOneExactly) {
+    // Below 1 m, around each law's breakpoint or crossover (WINNER+ B1 ~ 79 m, two-ray ~ 555 m at
+    // the default 1.5 m) and out to the far tier: the batch is the channel's hot path, so bit for bit.
+    std::vector<double> distances{0.25, 1.0, 1.5, 3.7, 10.0, 42.0};
+    for (double d = 60; d < 1500; d *= 1.0137) distances.push_back(d);
+    for (const auto& [name, model] : PathLossModels::all()) {
+        const auto loss = PathLossModels::make(name, kF, {});
+        std::vector<double> out(distances.size(), -1.0);
+        loss->lossesDb(distances, out);
+        for (std::size_t k = 0; k < distances.size(); ++k)
+            EXPECT_EQ(out[k], loss->lossDb(distances[k])) << name << " at " << distances[k] << " m";
     }
 }
 
