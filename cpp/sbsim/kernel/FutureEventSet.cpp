@@ -14,17 +14,19 @@ void Message::setPriority(int priority) {
     priority_ = priority;
 }
 
-FutureEventSet::~FutureEventSet() {
-    for (Entry& e : heap_) {
+FutureEventSet::~FutureEventSet() { clear(); }
+
+void FutureEventSet::clear() {
+    // Taken out of the heap first: an owned message's destructor then finds itself unscheduled.
+    std::vector<Entry> all;
+    all.swap(heap_);
+    for (const Entry& e : all) {
         e.msg->heapIndex_ = Message::kNotScheduled;
         e.msg->fes_ = nullptr;
     }
-}
-
-bool FutureEventSet::before(const Message& a, const Message& b) {
-    if (a.arrival_ != b.arrival_) return a.arrival_ < b.arrival_;
-    if (a.priority_ != b.priority_) return a.priority_ < b.priority_;
-    return a.insertionOrder_ < b.insertionOrder_;
+    for (const Entry& e : all) {
+        if (e.msg->ownedBySet_) delete e.msg;
+    }
 }
 
 void FutureEventSet::insert(Message& msg, SimTime at, Module* target) {
@@ -33,7 +35,8 @@ void FutureEventSet::insert(Message& msg, SimTime at, Module* target) {
     msg.target_ = target;
     msg.insertionOrder_ = nextInsertion_++;
     msg.fes_ = this;
-    heap_.push_back(Entry{&msg, nullptr});
+    msg.ownedBySet_ = false;
+    heap_.push_back(Entry{at, msg.insertionOrder_, msg.priority_, &msg});
     msg.heapIndex_ = heap_.size() - 1;
     siftUp(heap_.size() - 1);
 }
@@ -41,21 +44,22 @@ void FutureEventSet::insert(Message& msg, SimTime at, Module* target) {
 void FutureEventSet::insert(std::unique_ptr<Message> msg, SimTime at, Module* target) {
     Message& m = *msg;
     insert(m, at, target);
-    heap_[m.heapIndex_].owned = std::move(msg);
+    m.ownedBySet_ = true;
+    msg.release();  // the set frees it (remove, clear) or hands it back (pop)
 }
 
 void FutureEventSet::remove(Message& msg) {
     if (msg.fes_ != this || !msg.isScheduled()) return;
-    Entry e = take(msg.heapIndex_);
+    Message& m = take(msg.heapIndex_);
     // An owned message being cancelled dies here, as it would have after delivery.
-    e.owned.reset();
+    if (m.ownedBySet_) delete &m;
 }
 
 Message& FutureEventSet::pop(std::unique_ptr<Message>& owned) {
     if (heap_.empty()) throw std::logic_error("pop from an empty future-event set");
-    Entry e = take(0);
-    owned = std::move(e.owned);
-    return *e.msg;
+    Message& m = take(0);
+    if (m.ownedBySet_) owned.reset(&m);
+    return m;
 }
 
 void FutureEventSet::removeAllFor(const Module& target) {
@@ -67,15 +71,15 @@ void FutureEventSet::removeAllFor(const Module& target) {
     for (Message* m : doomed) remove(*m);
 }
 
-FutureEventSet::Entry FutureEventSet::take(std::size_t i) {
-    Entry out = std::move(heap_[i]);
-    out.msg->heapIndex_ = Message::kNotScheduled;
-    out.msg->fes_ = nullptr;
-    Entry last = std::move(heap_.back());
+Message& FutureEventSet::take(std::size_t i) {
+    Message& out = *heap_[i].msg;
+    out.heapIndex_ = Message::kNotScheduled;
+    out.fes_ = nullptr;
+    const Entry last = heap_.back();
     heap_.pop_back();
     if (i < heap_.size()) {
-        place(i, std::move(last));
-        if (i > 0 && before(*heap_[i].msg, *heap_[(i - 1) / 2].msg)) {
+        place(i, last);
+        if (i > 0 && before(heap_[i], heap_[(i - 1) / kArity])) {
             siftUp(i);
         } else {
             siftDown(i);
@@ -84,34 +88,34 @@ FutureEventSet::Entry FutureEventSet::take(std::size_t i) {
     return out;
 }
 
-void FutureEventSet::place(std::size_t i, Entry e) {
-    e.msg->heapIndex_ = i;
-    heap_[i] = std::move(e);
-}
-
 void FutureEventSet::siftUp(std::size_t i) {
-    Entry moving = std::move(heap_[i]);
+    const Entry moving = heap_[i];
     while (i > 0) {
-        const std::size_t parent = (i - 1) / 2;
-        if (!before(*moving.msg, *heap_[parent].msg)) break;
-        place(i, std::move(heap_[parent]));
+        const std::size_t parent = (i - 1) / kArity;
+        if (!before(moving, heap_[parent])) break;
+        place(i, heap_[parent]);
         i = parent;
     }
-    place(i, std::move(moving));
+    place(i, moving);
 }
 
 void FutureEventSet::siftDown(std::size_t i) {
     const std::size_t n = heap_.size();
-    Entry moving = std::move(heap_[i]);
+    const Entry moving = heap_[i];
     while (true) {
-        std::size_t child = 2 * i + 1;
-        if (child >= n) break;
-        if (child + 1 < n && before(*heap_[child + 1].msg, *heap_[child].msg)) ++child;
-        if (!before(*heap_[child].msg, *moving.msg)) break;
-        place(i, std::move(heap_[child]));
-        i = child;
+        const std::size_t first = kArity * i + 1;
+        if (first >= n) break;
+        // The least of up to four children (the key order is total: no ties to break).
+        std::size_t best = first;
+        const std::size_t end = first + kArity < n ? first + kArity : n;
+        for (std::size_t c = first + 1; c < end; ++c) {
+            if (before(heap_[c], heap_[best])) best = c;
+        }
+        if (!before(heap_[best], moving)) break;
+        place(i, heap_[best]);
+        i = best;
     }
-    place(i, std::move(moving));
+    place(i, moving);
 }
 
 }  // namespace sbsim::kernel

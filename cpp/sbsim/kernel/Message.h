@@ -46,6 +46,7 @@ private:
     std::size_t heapIndex_ = kNotScheduled;
     FutureEventSet* fes_ = nullptr;
     Module* target_ = nullptr;
+    bool ownedBySet_ = false;  // handed over with a unique_ptr: the set frees it unless delivered
 };
 
 }  // namespace sbsim::kernel

@@ -133,6 +133,8 @@ protected:
     /// `station`'s index for the run (interned on first use): a medium looks it up once per station
     /// and step, and hands deliverLater() indices, not names to copy per reception.
     StationIndex stationIndex(std::string_view station) { return certificates_.index(station); }
+    /// The sender's stationIndex(), as stamp() looked it up.
+    static StationIndex senderIndex(const V2xMessage& message) { return message.senderIndex_; }
     /// Delivers `message` to `receivers` (in this order; `stations` are their stationIndex()) after
     /// `delay`, from one kernel event. A station that has left by then is skipped, as its own event
     /// would have been dropped: the pointers are used only while no module joined or left meanwhile,

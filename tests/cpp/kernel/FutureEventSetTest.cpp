@@ -260,6 +260,17 @@ TEST_F(FutureEventSetTest, MatchesAReferenceModelUnderRandomOperations) {
             reference.erase(it);
             std::erase(ownedLive, m);
             fes.remove(*m);
+        } else if (op == 65 && pick(0, 9) == 0) {  // a module goes: everything addressed to it
+            Module& target = pick(0, 1) == 0 ? a_ : b_;
+            for (auto it = reference.begin(); it != reference.end();) {
+                if (it->msg->arrivalModule() == &target) {
+                    std::erase(ownedLive, it->msg);
+                    it = reference.erase(it);
+                } else {
+                    ++it;
+                }
+            }
+            fes.removeAllFor(target);
         } else if (op < 68) {  // destroy a scheduled pool message outright
             const int i = pick(0, static_cast<int>(pool.size()) - 1);
             if (!pool[i]->isScheduled()) continue;
@@ -291,6 +302,69 @@ TEST_F(FutureEventSetTest, MatchesAReferenceModelUnderRandomOperations) {
         ASSERT_EQ(&fes.pop(owned), k.msg);
     }
     EXPECT_TRUE(fes.empty());
+}
+
+// Many events at once (a city's timers and frames): the heap is several levels deep and most
+// times are shared, so the order rests on priority and insertion; interleaved pops and inserts.
+TEST_F(FutureEventSetTest, DeepHeapDeliversInKeyOrder) {
+    struct Key {
+        SimTime at;
+        int priority;
+        std::uint64_t order;
+        auto operator<=>(const Key&) const = default;
+    };
+    std::mt19937_64 rng(7);
+    FutureEventSet fes;
+    std::vector<std::unique_ptr<Message>> pool;
+    std::vector<Key> keys;  // per pool index, the key it was scheduled with
+    std::uint64_t order = 0;
+    SimTime now;
+    const auto schedule = [&](std::size_t i) {
+        // Never at `now`: what comes later is then after every key delivered so far.
+        const SimTime at = now + ms(1 + static_cast<SimTime::rep>(rng() % 50));
+        pool[i]->setPriority(static_cast<int>(rng() % 3) - 1);
+        keys[i] = {at, pool[i]->priority(), order++};
+        fes.insert(*pool[i], at, &a_);
+    };
+    for (std::size_t i = 0; i < 20'000; ++i) {
+        pool.push_back(std::make_unique<Message>(std::to_string(i)));
+        keys.emplace_back();
+        schedule(i);
+    }
+    Key last{SimTime::zero(), -2, 0};
+    for (int k = 0; k < 100'000; ++k) {
+        std::unique_ptr<Message> owned;
+        Message& m = fes.pop(owned);
+        const std::size_t i = std::stoul(m.name());
+        ASSERT_LT(last, keys[i]) << "pop " << k;
+        last = keys[i];
+        now = m.arrivalTime();
+        if (k % 7 != 0) schedule(i);  // most come back, the heap shrinks slowly
+        if (k % 11 == 0 && !fes.empty()) {
+            // A cancel from the middle, rescheduled at once: its key is new.
+            const std::size_t j = rng() % pool.size();
+            if (pool[j]->isScheduled()) {
+                fes.remove(*pool[j]);
+                schedule(j);
+            }
+        }
+        if (fes.empty()) break;
+    }
+}
+
+TEST_F(FutureEventSetTest, ClearFreesOwnedAndUnschedulesTheRest) {
+    int destroyed = 0;
+    FutureEventSet fes;
+    Message timer("timer");
+    fes.insert(timer, ms(2), &a_);
+    fes.insert(std::make_unique<CountedMessage>("x", destroyed), ms(1), &b_);
+    fes.insert(std::make_unique<CountedMessage>("y", destroyed), ms(3), &a_);
+    fes.clear();
+    EXPECT_TRUE(fes.empty());
+    EXPECT_EQ(destroyed, 2);
+    EXPECT_FALSE(timer.isScheduled());
+    fes.insert(timer, ms(4), &a_);  // usable again
+    EXPECT_EQ(drain(fes), (std::vector<std::string>{"timer"}));
 }
 
 }  // namespace

@@ -38,7 +38,24 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     stamp(*message, sender);
 
     const FixedStations& fixed = fixedStations();
-    const auto self = snapshot_.indexOf(sender);
+    if (idsVersion_ != snapshot_.idsVersion()) {
+        // The snapshot's ids interned in its order (ascending indices for the certificate
+        // policy's tables) when they change, not per step; and each station's place in them, so a
+        // frame finds its sender by the index stamp() looked up, not by a search among the names.
+        idsVersion_ = snapshot_.idsVersion();
+        const auto& ids = snapshot_.ids();
+        stationIndices_.resize(ids.size());
+        for (std::size_t i = 0; i < ids.size(); ++i) stationIndices_[i] = stationIndex(ids[i]);
+        snapshotIndices_.assign(
+            stationIndices_.empty() ? 0 : *std::max_element(stationIndices_.begin(), stationIndices_.end()) + 1,
+            kNotInSnapshot);
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            snapshotIndices_[stationIndices_[i]] = static_cast<traffic::VehicleSnapshot::Index>(i);
+    }
+    const StationIndex senderIndex = Medium::senderIndex(*message);
+    const auto self = senderIndex < snapshotIndices_.size() && snapshotIndices_[senderIndex] != kNotInSnapshot
+                          ? std::optional<traffic::VehicleSnapshot::Index>(snapshotIndices_[senderIndex])
+                          : std::nullopt;
     const auto fixedSelf = self ? std::nullopt : fixed.indexOf(sender);
     if (!self && !fixedSelf) return;  // not on the road (yet): nobody hears it
     if (gridTime_ != snapshot_.time()) {
@@ -49,8 +66,6 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         receiverKnown_.clear();
         for (Neighbourhood& n : near_) n.known = n.receiversKnown = false;
         near_.resize(snapshot_.ids().size());
-        stationIndices_.resize(snapshot_.ids().size());
-        for (std::size_t i = 0; i < stationIndices_.size(); ++i) stationIndices_[i] = stationIndex(snapshot_.ids()[i]);
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
         fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));

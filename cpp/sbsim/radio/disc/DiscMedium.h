@@ -42,6 +42,10 @@ private:
     /// step's grid is built (so a frame's receivers come in ascending indices, as the certificate
     /// policy's tables are sorted); per stationary station, the same.
     std::vector<StationIndex> stationIndices_;
+    std::uint64_t idsVersion_ = 0;  // the snapshot's idsVersion() that stationIndices_ follow
+    /// Per stationIndex(), its vehicle's snapshot index, or kNotInSnapshot.
+    std::vector<traffic::VehicleSnapshot::Index> snapshotIndices_;
+    static constexpr auto kNotInSnapshot = static_cast<traffic::VehicleSnapshot::Index>(-1);
     std::vector<StationIndex> fixedIndices_;
     std::uint64_t receiversChanges_ = 0;
     /// Per snapshot index, the stations within the visit radius and their distances, computed at
