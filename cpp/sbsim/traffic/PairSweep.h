@@ -1,9 +1,11 @@
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
 
+#include "sbsim/kernel/ParallelFor.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
 namespace sbsim::traffic {
@@ -36,6 +38,15 @@ public:
     void forEachPair(Visit&& visit) const {
         for (std::size_t row = 0; row < rows(); ++row) forEachPairInRow(row, visit);
     }
+
+    using Pair = std::pair<Index, Index>;
+    /// Calls `emit(a, b, out)` for every pair within the radius, a row of cells per task on `pool`;
+    /// `emit` appends to `out` what the caller keeps of the pair (none, (a, b), (b, a), ...). The
+    /// kept pairs, sorted, go into `kept`: the same whatever the thread count. `rowScratch` holds
+    /// the rows' buffers from step to step.
+    template <typename Emit>
+    void collectSorted(kernel::ParallelFor& pool, std::vector<std::vector<Pair>>& rowScratch, std::vector<Pair>& kept,
+                       Emit&& emit) const;
 
 private:
     struct Cell {
@@ -95,6 +106,26 @@ void PairSweep::forEachPairInRow(std::size_t row, Visit&& visit) const {
             for (std::int32_t b = upBegin; b < upEnd; ++b) test(a, b);
         }
     }
+}
+
+template <typename Emit>
+void PairSweep::collectSorted(kernel::ParallelFor& pool, std::vector<std::vector<Pair>>& rowScratch,
+                              std::vector<Pair>& kept, Emit&& emit) const {
+    const std::size_t n = rows();
+    if (rowScratch.size() < n) rowScratch.resize(n);
+    pool.run(
+        n,
+        [&](std::size_t begin, std::size_t end) {
+            for (std::size_t row = begin; row < end; ++row) {
+                std::vector<Pair>& out = rowScratch[row];
+                out.clear();
+                forEachPairInRow(row, [&](Index a, Index b) { emit(a, b, out); });
+            }
+        },
+        1);
+    kept.clear();
+    for (std::size_t row = 0; row < n; ++row) kept.insert(kept.end(), rowScratch[row].begin(), rowScratch[row].end());
+    std::sort(kept.begin(), kept.end());
 }
 
 }  // namespace sbsim::traffic

@@ -52,26 +52,11 @@ void SpeedDifferenceCondition::computeAnswers(const EvaluationContext& ctx) {
     const auto n = static_cast<std::size_t>(snapshot.size());
     const Eigen::VectorXd& speeds = snapshot.speeds();
     sweep_.build(snapshot, *distance_);
-    const std::size_t rows = sweep_.rows();
-    if (rowFound_.size() < rows) rowFound_.resize(rows);
-    ctx.parallel()->run(
-        rows,
-        [&](std::size_t begin, std::size_t end) {
-            for (std::size_t row = begin; row < end; ++row) {
-                std::vector<std::pair<VehicleIndex, VehicleIndex>>& found = rowFound_[row];
-                found.clear();
-                sweep_.forEachPairInRow(row, [&](VehicleIndex a, VehicleIndex b) {
-                    if (qualifies(speeds[a], speeds[b])) found.emplace_back(a, b);
-                    if (qualifies(speeds[b], speeds[a])) found.emplace_back(b, a);
-                });
-            }
-        },
-        1);
     // Sorted by ego, then other: each ego's answer is one ascending run.
-    found_.clear();
-    for (std::size_t row = 0; row < rows; ++row)
-        found_.insert(found_.end(), rowFound_[row].begin(), rowFound_[row].end());
-    std::sort(found_.begin(), found_.end());
+    sweep_.collectSorted(*ctx.parallel(), rowFound_, found_, [&](VehicleIndex a, VehicleIndex b, auto& out) {
+        if (qualifies(speeds[a], speeds[b])) out.emplace_back(a, b);
+        if (qualifies(speeds[b], speeds[a])) out.emplace_back(b, a);
+    });
     answerStart_.assign(n + 1, 0);
     for (const auto& [ego, other] : found_) ++answerStart_[static_cast<std::size_t>(ego) + 1];
     for (std::size_t k = 0; k < n; ++k) answerStart_[k + 1] += answerStart_[k];

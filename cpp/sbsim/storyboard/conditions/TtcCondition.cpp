@@ -48,28 +48,12 @@ void TtcCondition::computePairs(const EvaluationContext& ctx) {
     // One sweep visits each pair within distance_ once (a search per vehicle meets it twice);
     // a pair is tested with its smaller index first, as the search per vehicle does.
     sweep_.build(ctx.snapshot(), distance_);
-    const std::size_t rows = sweep_.rows();
-    if (rowConflicts_.size() < rows) rowConflicts_.resize(rows);
-    ctx.parallel()->run(
-        rows,
-        [&](std::size_t begin, std::size_t end) {
-            for (std::size_t row = begin; row < end; ++row) {
-                std::vector<std::pair<VehicleIndex, VehicleIndex>>& found = rowConflicts_[row];
-                found.clear();
-                sweep_.forEachPairInRow(row, [&](VehicleIndex a, VehicleIndex b) {
-                    const VehicleIndex ego = std::min(a, b);
-                    const VehicleIndex other = std::max(a, b);
-                    if (conflicts(ego, other)) found.emplace_back(ego, other);
-                });
-            }
-        },
-        1);
     // Few pairs conflict: sorted, they are each vehicle's later conflicts in ascending order.
-    conflicting_.clear();
-    for (std::size_t row = 0; row < rows; ++row) {
-        conflicting_.insert(conflicting_.end(), rowConflicts_[row].begin(), rowConflicts_[row].end());
-    }
-    std::sort(conflicting_.begin(), conflicting_.end());
+    sweep_.collectSorted(*ctx.parallel(), rowConflicts_, conflicting_, [&](VehicleIndex a, VehicleIndex b, auto& out) {
+        const VehicleIndex ego = std::min(a, b);
+        const VehicleIndex other = std::max(a, b);
+        if (conflicts(ego, other)) out.emplace_back(ego, other);
+    });
     // Each pair counts for both vehicles. Walking the pairs in ascending order appends to
     // vehicle j first the smaller indices that found it, then its own larger ones: ascending.
     pairStart_.assign(n + 1, 0);
