@@ -361,14 +361,8 @@ void LinkBudget::classify(Slot s) {
     pathLoss_->lossesDb(columns.distance, columns.lossDb);
     // The step's columns sized for every link and cut to what was kept: written through plain
     // pointers, not a push_back (its end pointer reloaded and stored per link and column).
-    step.receivers.resize(n);
-    step.distance.resize(n);
-    step.bin.resize(n);
-    step.tier.resize(n);
-    step.units.resize(n);
-    near.full.resize(n);
-    near.fullKey.resize(n);
-    near.fullMeanDbm.resize(n);
+    step.resizeLinks(n);
+    near.resizeFull(n);
     Slot* const receivers = step.receivers.data();
     double* const distanceOut = step.distance.data();
     std::uint32_t* const bins = step.bin.data();
@@ -406,14 +400,8 @@ void LinkBudget::classify(Slot s) {
         }
         ++kept;
     }
-    step.receivers.resize(kept);
-    step.distance.resize(kept);
-    step.bin.resize(kept);
-    step.tier.resize(kept);
-    step.units.resize(kept);
-    near.full.resize(drawn);
-    near.fullKey.resize(drawn);
-    near.fullMeanDbm.resize(drawn);
+    step.resizeLinks(kept);
+    near.resizeFull(drawn);
     if (!far) return;
     // The far tier: a cell wholly beyond the far range is one link for its occupants, the mean power
     // at its centre (within the cutoff).

@@ -77,7 +77,12 @@ private:
         std::vector<std::uint32_t> full;     // the links drawn per frame (every one without tiers)
         std::vector<std::uint64_t> fullKey;  // their receivers' keys, contiguous
         std::vector<double> fullMeanDbm;     // their mean power
-        std::uint64_t skipped = 0;           // within the cutoff but below the floor (obstacles)
+        void resizeFull(std::size_t n) {
+            full.resize(n);
+            fullKey.resize(n);
+            fullMeanDbm.resize(n);
+        }
+        std::uint64_t skipped = 0;  // within the cutoff but below the floor (obstacles)
         /// The full links' shadowing pairs, looked up at the step's first frame (a generation of
         /// CorrelatedShadowing: a sweep that freed pairs makes them stale).
         std::vector<CorrelatedShadowing::Index> pair;

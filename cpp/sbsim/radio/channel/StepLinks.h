@@ -36,6 +36,15 @@ struct StepLinks {
     std::vector<std::uint32_t> farOccupants, farBin;
 
     std::size_t size() const { return receivers.size(); }
+    /// The individual links' columns at `n` links (the far cells' untouched): sized for every
+    /// candidate, written through pointers, then cut to what was kept.
+    void resizeLinks(std::size_t n) {
+        receivers.resize(n);
+        distance.resize(n);
+        bin.resize(n);
+        tier.resize(n);
+        units.resize(n);
+    }
     void clear() {
         receivers.clear();
         bin.clear();
