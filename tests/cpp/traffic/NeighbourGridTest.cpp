@@ -8,19 +8,15 @@
 #include <random>
 #include <stdexcept>
 
+#include "TestScenes.h"
+
 namespace sbsim::traffic {
 namespace {
 
-using Vehicle = VehicleSnapshot::Vehicle;
+using test::car;
+using test::randomVehicles;
+using test::Vehicle;
 using Index = NeighbourGrid::Index;
-
-Vehicle car(std::string id, double x, double y) {
-    Vehicle v;
-    v.id = std::move(id);
-    v.x = x;
-    v.y = y;
-    return v;
-}
 
 std::vector<Index> bruteForce(const VehicleSnapshot& s, Index i, double radius) {
     std::vector<Index> out;
@@ -30,19 +26,6 @@ std::vector<Index> bruteForce(const VehicleSnapshot& s, Index i, double radius) 
         if (j != i && dx * dx + dy * dy <= radius * radius) out.push_back(j);
     }
     return out;
-}
-
-std::vector<Vehicle> randomVehicles(std::mt19937_64& rng, int n, double extent, bool lattice) {
-    std::uniform_real_distribution<double> coordinate(-extent, extent);
-    std::uniform_int_distribution<int> cell(-static_cast<int>(extent / 10), static_cast<int>(extent / 10));
-    std::vector<Vehicle> vehicles;
-    for (int k = 0; k < n; ++k) {
-        // Lattice points sit on cell borders and at exact distances (3-4-5 and alike).
-        const double x = lattice ? 10.0 * cell(rng) : coordinate(rng);
-        const double y = lattice ? 10.0 * cell(rng) : coordinate(rng);
-        vehicles.push_back(car("v" + std::to_string(k), x, y));
-    }
-    return vehicles;
 }
 
 void expectSameAsBruteForce(const VehicleSnapshot& s, const NeighbourGrid& grid, double radius) {
@@ -60,7 +43,7 @@ void expectSameAsBruteForce(const VehicleSnapshot& s, const NeighbourGrid& grid,
 TEST(NeighbourGrid, MatchesBruteForceOnRandomPositions) {
     std::mt19937_64 rng(20240601);
     VehicleSnapshot s;
-    s.assign(randomVehicles(rng, 1500, 1000, false), kernel::SimTime::zero());
+    s.assign(randomVehicles(rng, 1500, 1000), kernel::SimTime::zero());
     NeighbourGrid grid;
     grid.build(s, 50);
     EXPECT_EQ(grid.cellSize(), 50);
@@ -75,7 +58,7 @@ TEST(NeighbourGrid, MatchesBruteForceOnRandomPositions) {
 TEST(NeighbourGrid, MatchesBruteForceOnLatticeWithExactDistances) {
     std::mt19937_64 rng(7);
     VehicleSnapshot s;
-    s.assign(randomVehicles(rng, 800, 200, true), kernel::SimTime::zero());
+    s.assign(randomVehicles(rng, 800, 200, 10), kernel::SimTime::zero());
     for (const double cellSize : {10.0, 25.0, 50.0}) {
         NeighbourGrid grid;
         grid.build(s, cellSize);
@@ -84,17 +67,8 @@ TEST(NeighbourGrid, MatchesBruteForceOnLatticeWithExactDistances) {
 }
 
 TEST(NeighbourGrid, MatchesBruteForceWhenSpreadFarApartAndClustered) {
-    // Clusters tens of kilometres apart: far more cells than vehicles in the bounding box.
-    std::mt19937_64 rng(99);
-    std::normal_distribution<double> jitter(0, 15);
-    std::vector<Vehicle> vehicles;
-    for (int k = 0; k < 600; ++k) {
-        const double cx = (k % 3) * 40'000.0 - 1e6;
-        const double cy = (k % 5) * 25'000.0 + 3e5;
-        vehicles.push_back(car("v" + std::to_string(k), cx + jitter(rng), cy + jitter(rng)));
-    }
     VehicleSnapshot s;
-    s.assign(vehicles, kernel::SimTime::zero());
+    s.assign(test::clustersFarApart(), kernel::SimTime::zero());
     NeighbourGrid grid;
     grid.build(s, 20);
     for (const double radius : {5.0, 20.0, 60.0}) expectSameAsBruteForce(s, grid, radius);
@@ -104,7 +78,7 @@ TEST(NeighbourGrid, MatchesBruteForceWithOneStrayFarOffPosition) {
     // A compact scene (one bucket per cell) turned sparse by one vehicle at SUMO's "invalid"
     // position, as libsumo reports for a vehicle off the road: both layouts give the same answers.
     std::mt19937_64 rng(5);
-    std::vector<Vehicle> vehicles = randomVehicles(rng, 400, 300, false);
+    std::vector<Vehicle> vehicles = randomVehicles(rng, 400, 300);
     VehicleSnapshot compact;
     compact.assign(vehicles, kernel::SimTime::zero());
     vehicles.push_back(car("stray", -1073741824.0, -1073741824.0));
@@ -134,7 +108,7 @@ TEST(NeighbourGrid, DistanceIsInclusiveAndExcludesTheVehicleItself) {
 TEST(NeighbourGrid, AroundAPointMatchesBruteForceInBothLayouts) {
     // A roadside unit's neighbours: every vehicle within the radius of a place, none skipped.
     std::mt19937_64 rng(77);
-    std::vector<Vehicle> vehicles = randomVehicles(rng, 500, 400, false);
+    std::vector<Vehicle> vehicles = randomVehicles(rng, 500, 400);
     VehicleSnapshot compact;
     compact.assign(vehicles, kernel::SimTime::zero());
     vehicles.push_back(car("stray", -1073741824.0, -1073741824.0));

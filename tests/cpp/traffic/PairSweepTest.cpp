@@ -9,20 +9,16 @@
 #include <stdexcept>
 #include <utility>
 
+#include "TestScenes.h"
+
 namespace sbsim::traffic {
 namespace {
 
-using Vehicle = VehicleSnapshot::Vehicle;
+using test::car;
+using test::randomVehicles;
+using test::Vehicle;
 using Index = PairSweep::Index;
 using Pairs = std::vector<std::pair<Index, Index>>;
-
-Vehicle car(std::string id, double x, double y) {
-    Vehicle v;
-    v.id = std::move(id);
-    v.x = x;
-    v.y = y;
-    return v;
-}
 
 /// Every pair (smaller index first) within `radius`, by NeighbourGrid's test, ascending.
 Pairs bruteForce(const VehicleSnapshot& s, double radius) {
@@ -63,23 +59,10 @@ std::size_t expectSameAsBruteForce(const VehicleSnapshot& s, double radius) {
     return expected.size();
 }
 
-std::vector<Vehicle> randomVehicles(std::mt19937_64& rng, int n, double extent, double lattice) {
-    std::uniform_real_distribution<double> coordinate(-extent, extent);
-    std::uniform_int_distribution<int> step(-static_cast<int>(extent / lattice), static_cast<int>(extent / lattice));
-    std::vector<Vehicle> vehicles;
-    for (int k = 0; k < n; ++k) {
-        // Lattice points sit on cell borders and at exact distances (3-4-5 and alike).
-        const double x = lattice > 0 ? lattice * step(rng) : coordinate(rng);
-        const double y = lattice > 0 ? lattice * step(rng) : coordinate(rng);
-        vehicles.push_back(car("v" + std::to_string(k), x, y));
-    }
-    return vehicles;
-}
-
 TEST(PairSweep, MatchesBruteForceOnRandomPositions) {
     std::mt19937_64 rng(20261126);
     VehicleSnapshot s;
-    s.assign(randomVehicles(rng, 1500, 1000, 0), kernel::SimTime::zero());
+    s.assign(randomVehicles(rng, 1500, 1000), kernel::SimTime::zero());
     std::size_t found = 0;
     for (const double radius : {0.0, 7.5, 30.0, 50.0, 120.0, 3000.0}) found += expectSameAsBruteForce(s, radius);
     EXPECT_GT(found, 10'000u);  // not vacuous
@@ -119,14 +102,7 @@ TEST(PairSweep, MatchesBruteForceWhenSpreadFarApartOrStray) {
     // Clusters tens of kilometres apart (far more cells than vehicles: sorted, not counted), one
     // vehicle at SUMO's "invalid" position, positions that are not finite, and coordinates so
     // large that every pair is tested.
-    std::mt19937_64 rng(99);
-    std::normal_distribution<double> jitter(0, 15);
-    std::vector<Vehicle> vehicles;
-    for (int k = 0; k < 600; ++k) {
-        const double cx = (k % 3) * 40'000.0 - 1e6;
-        const double cy = (k % 5) * 25'000.0 + 3e5;
-        vehicles.push_back(car("v" + std::to_string(k), cx + jitter(rng), cy + jitter(rng)));
-    }
+    std::vector<Vehicle> vehicles = test::clustersFarApart();
     VehicleSnapshot clustered;
     clustered.assign(vehicles, kernel::SimTime::zero());
     for (const double radius : {5.0, 20.0, 60.0}) EXPECT_GT(expectSameAsBruteForce(clustered, radius), 100u);
@@ -141,7 +117,8 @@ TEST(PairSweep, MatchesBruteForceWhenSpreadFarApartOrStray) {
     stray.assign(vehicles, kernel::SimTime::zero());
     for (const double radius : {5.0, 20.0}) EXPECT_GT(expectSameAsBruteForce(stray, radius), 100u);
 
-    std::vector<Vehicle> huge = randomVehicles(rng, 300, 100, 0);
+    std::mt19937_64 rng(99);
+    std::vector<Vehicle> huge = randomVehicles(rng, 300, 100);
     huge.push_back(car("far", 4e15, 4e15));
     huge.push_back(car("far2", 4e15 + 8, 4e15));  // 8 m apart: one ulp at 4e15 is 0.5 m
     VehicleSnapshot far;
