@@ -1,5 +1,6 @@
 #include "sbsim/radio/Medium.h"
 
+#include <cassert>
 #include <stdexcept>
 
 #include "sbsim/radio/CounterRandom.h"
@@ -113,9 +114,23 @@ bool Medium::toEveryReceiver(const V2xMessage& message) {
     return taken;
 }
 
+void Medium::broadcastFrom(StationIndex index, const std::string& sender, std::unique_ptr<V2xMessage> message) {
+    assert(certificates_.name(index) == sender);
+    knownSender_ = &sender;
+    knownSenderIndex_ = index;
+    // Forgotten however broadcast() ends (it may throw before its stamp).
+    struct Forget {
+        const std::string*& known;
+        ~Forget() { known = nullptr; }
+    } forget{knownSender_};
+    broadcast(sender, std::move(message));
+}
+
 void Medium::stamp(V2xMessage& message, const std::string& sender) {
-    // The sender's name is looked up once per frame: its sequence and certificate go by index.
-    const StationIndex index = stationIndex(sender);
+    // The sender's name is looked up at most once per frame (not at all when broadcastFrom() named
+    // its index): its sequence and certificate go by index.
+    const StationIndex index = &sender == knownSender_ ? knownSenderIndex_ : stationIndex(sender);
+    knownSender_ = nullptr;
     message.sender_ = sender;
     message.senderIndex_ = index;
     message.sentAt_ = simTime();

@@ -74,6 +74,12 @@ public:
 
     /// Sends `message` from `sender` (stamped with the sender and the current time).
     virtual void broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) = 0;
+    /// broadcast() by a station that keeps its stationIndex(), `index` (its middleware looks it up
+    /// once): the frame's stamp then needs no lookup of the sender's name, a cache miss per frame.
+    void broadcastFrom(StationIndex index, const std::string& sender, std::unique_ptr<V2xMessage> message);
+    /// `station`'s index for the run (interned on first use): a medium looks it up once per station
+    /// and step, and hands deliverLater() indices, not names to copy per reception.
+    StationIndex stationIndex(std::string_view station) { return certificates_.index(station); }
     /// The least time between two messages that the channel's congestion control (ETSI DCC)
     /// allows `station` now; none when the medium models no congestion control.
     virtual std::optional<kernel::SimTime> dccInterval(const std::string& /*station*/) const { return std::nullopt; }
@@ -130,9 +136,6 @@ protected:
     /// The receiving side of `stationId`'s module; null for a vehicle that is not a station. Media
     /// hand deliverLater() only receivers found here (so it knows whether all said what they take).
     Receiver* receivingSide(const std::string& stationId);
-    /// `station`'s index for the run (interned on first use): a medium looks it up once per station
-    /// and step, and hands deliverLater() indices, not names to copy per reception.
-    StationIndex stationIndex(std::string_view station) { return certificates_.index(station); }
     /// The sender's stationIndex(), as stamp() looked it up.
     static StationIndex senderIndex(const V2xMessage& message) { return message.senderIndex_; }
     /// Delivers `message` to `receivers` (in this order; `stations` are their stationIndex()) after
@@ -159,6 +162,9 @@ private:
     std::function<bool(const V2xMessage&)> layersTake_;
     std::vector<std::pair<const std::type_info*, bool>> layersTakeKnown_;  // layersTake_'s answers per type
     bool everyReceiverRegistered_ = true;  // every receiver found so far called setTypesTaken() first
+    // The sender broadcastFrom() named and its index, for the stamp of the frame it is sending.
+    const std::string* knownSender_ = nullptr;
+    StationIndex knownSenderIndex_ = 0;
     /// Whether `message` goes to every receiver whatever they take.
     bool toEveryReceiver(const V2xMessage& message);
     /// Queues a frame's delivery; `keptByMedium`: the medium may hand the same list to the sender's next frames.

@@ -122,7 +122,13 @@ std::vector<radio::geonet::Neighbour> Middleware::neighbours() const {
 void Middleware::send(std::unique_ptr<radio::V2xMessage> message) {
     if (!message) throw std::invalid_argument("cannot send a null V2X message");
     if (message->geonet().geoBroadcast()) router_.originate(*message, position(), [this] { return neighbours(); });
-    manager_.medium().broadcast(vehicleId_, std::move(message));
+    broadcast(std::move(message));
+}
+
+void Middleware::broadcast(std::unique_ptr<radio::V2xMessage> message) {
+    radio::Medium& medium = manager_.medium();
+    if (!radioIndex_) radioIndex_ = medium.stationIndex(vehicleId_);
+    medium.broadcastFrom(*radioIndex_, vehicleId_, std::move(message));
 }
 
 void Middleware::scheduleForwarding() {
@@ -137,8 +143,7 @@ void Middleware::handleMessage(kernel::Message& msg) {
         return trigger();
     }
     if (&msg != &forwardTimer_) return kernel::Module::handleMessage(msg);
-    for (auto& packet : router_.takeExpired(simTime(), position()))
-        manager_.medium().broadcast(vehicleId_, std::move(packet));
+    for (auto& packet : router_.takeExpired(simTime(), position())) broadcast(std::move(packet));
     scheduleForwarding();
 }
 
@@ -146,7 +151,7 @@ void Middleware::receive(const radio::V2xMessage& message) {
     if (message.geonet().geoBroadcast()) {
         radio::geonet::Router::Reception r =
             router_.receive(message, position(), simTime(), [this] { return neighbours(); });
-        if (r.forwardNow) manager_.medium().broadcast(vehicleId_, std::move(r.forwardNow));
+        if (r.forwardNow) broadcast(std::move(r.forwardNow));
         if (r.timersChanged) scheduleForwarding();
         if (!r.passUp) return;
     }

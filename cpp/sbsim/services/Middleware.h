@@ -14,6 +14,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/radio/Receiver.h"
+#include "sbsim/radio/StationIds.h"
 #include "sbsim/radio/geonet/Router.h"
 #include "sbsim/services/Service.h"
 #include "sbsim/services/ServiceVehicle.h"
@@ -96,10 +97,15 @@ private:
     std::vector<radio::geonet::Neighbour> neighbours() const;
     /// The forwarding timer at the router's next timeout (or off).
     void scheduleForwarding();
+    /// Hands `message` to the medium as this station's (its index looked up at the first send).
+    void broadcast(std::unique_ptr<radio::V2xMessage> message);
 
     ServiceManager& manager_;
     std::string vehicleId_;
     facilities::StationRegistry::Index station_;
+    // The medium's index of this station, from its first send on: the same index the medium's
+    // stamp would have interned then (so the run's indices do not change), without a lookup per frame.
+    std::optional<radio::StationIds::Index> radioIndex_;
     mutable traffic::VehicleSnapshot::Index selfHint_ = 0;        // where the vehicle was last found
     std::shared_ptr<traffic::VehicleRegistry::Vehicle> vehicle_;  // the storyboard's as well
     std::vector<Service*> services_;

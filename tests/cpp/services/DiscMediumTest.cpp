@@ -128,6 +128,30 @@ TEST(DiscMedium, CountsSentAndDeliveredPerType) {
     EXPECT_EQ(received(h, "r3"), 0u);
 }
 
+TEST(DiscMedium, AStationsFramesByIndexAndByNameShareOneNumbering) {
+    // A middleware hands its frames over with its index (broadcastFrom); a frame sent by name from
+    // the same station continues the same numbering. A broadcastFrom() that throws leaves no index
+    // behind, even for the same string holding another name next.
+    Harness h(kAllButBare, disc(100));
+    h.step(secs(1), {vehicle("s"), vehicle("t", 10, 0), vehicle("r", 5, 0)});
+    sendAt(h, secs(1), "s", "Ping", 1);
+    h.at(secs(1), [&] { h.medium.broadcast("s", std::make_unique<TestMessage>("Ping", 2)); });
+    sendAt(h, secs(1), "s", "Ping", 3);
+    h.at(secs(1), [&] {
+        std::string name = "s";
+        EXPECT_THROW(h.medium.broadcastFrom(h.medium.stationIndex("s"), name, nullptr), std::invalid_argument);
+        name = "t";
+        h.medium.broadcast(name, std::make_unique<TestMessage>("Ping", 4));
+    });
+    h.sim.run(secs(2));
+    const ProbeRecord* r = h.log.find("r");
+    ASSERT_NE(r, nullptr);
+    std::vector<std::tuple<std::string, int, std::uint64_t>> got;
+    for (const Indication& i : r->indications) got.emplace_back(i.sender, i.seq, i.sequence);
+    using Frame = std::tuple<std::string, int, std::uint64_t>;
+    EXPECT_EQ(got, (std::vector<Frame>{{"s", 1, 0}, {"s", 2, 1}, {"s", 3, 2}, {"t", 4, 0}}));
+}
+
 TEST(DiscMedium, UsesTheCurrentStepsPositions) {
     Harness h(kAllButBare, disc(100));
     // r moves in and out of range from step to step; s sends once per step. Bystanders without

@@ -139,7 +139,8 @@ void ProbeService::receiveSignal(const traffic::StoryboardSignal& signal) {
 void ProbeService::indicate(const radio::V2xMessage& message) {
     called();
     const auto& m = dynamic_cast<const TestMessage&>(message);
-    record_->indications.push_back({simTime(), std::string(m.typeName()), m.sender(), m.sentAt(), m.seq()});
+    record_->indications.push_back(
+        {simTime(), std::string(m.typeName()), m.sender(), m.sentAt(), m.seq(), m.sequence()});
 }
 
 void ProbeService::finish() {

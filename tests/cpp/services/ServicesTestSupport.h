@@ -47,6 +47,7 @@ struct Indication {
     std::string sender;
     SimTime sentAt;
     int seq;
+    std::uint64_t sequence;  ///< the medium's number of the sender's frame
 };
 
 /// A beacon a probe sent from trigger(), with the vehicles a brute-force search found in range.
