@@ -67,6 +67,24 @@ def read_rgb(path: Path) -> np.ndarray:
 
 
 @needs_xvfb
+def under_xvfb(command: list[str], tmp_path: Path) -> subprocess.CompletedProcess[str]:
+    """Runs `command` on a virtual display. xvfb-run fails on its own now and then (its xauth or Xvfb
+    start, under `set -e`: exit 1 and nothing on stderr, its messages in its error file); only such
+    a start is tried again. sbsim's own failures always say a line on stderr, so they count."""
+    for attempt in range(3):
+        errors = tmp_path / f"xvfb-{attempt}.log"
+        run = subprocess.run(
+            [str(XVFB_RUN), "-a", "-e", str(errors), "-s", "-screen 0 1280x1024x24", *command],
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
+        if not (run.returncode == 1 and not run.stderr and errors.exists() and errors.read_text().strip()):
+            return run
+    run.stderr = f"xvfb-run failed to start three times; its last errors: {errors.read_text()}"
+    return run
+
+
 def test_gui_shows_the_area_and_the_story_colour_and_only_watches(offset_cfg: Path, tmp_path: Path) -> None:
     story = write_story(tmp_path, STORY)
     settings = tmp_path / "view.xml"
@@ -81,12 +99,8 @@ def test_gui_shows_the_area_and_the_story_colour_and_only_watches(offset_cfg: Pa
         timeout=300,
     )
     assert plain.returncode == 0, plain.stderr
-    gui = subprocess.run(
+    gui = under_xvfb(
         [
-            str(XVFB_RUN),
-            "-a",
-            "-s",
-            "-screen 0 1280x1024x24",
             str(executable()),
             *common,
             "--events",
@@ -101,9 +115,7 @@ def test_gui_shows_the_area_and_the_story_colour_and_only_watches(offset_cfg: Pa
             "--gui-screenshot",
             f"200:{during}",
         ],
-        capture_output=True,
-        text=True,
-        timeout=300,
+        tmp_path,
     )
     assert gui.returncode == 0, gui.stderr
     # libsumo's GUI sometimes never returns from closing; sbsim's watchdog then ends the run with
