@@ -53,25 +53,28 @@ void CertificatePolicy::heard(Index station, Index sender, SecurityProfile profi
     if (!wasKnown && profile == SecurityProfile::Cam) of(station, now).requested = true;
 }
 
-void CertificatePolicy::heardAll(std::span<const Index> stations, Index sender, SecurityProfile profile,
-                                 kernel::SimTime now) {
-    if (!secured_ || stations.empty()) return;
+template <typename Hear>
+void CertificatePolicy::heardBy(Index sender, SecurityProfile profile, kernel::SimTime now, Hear&& hear) {
     forgetOld(now);
     if (sender >= heardBy_.size()) heardBy_.resize(sender + 1);
     unknown_.clear();
-    heardBy_[sender].hearAll(stations, now, now - kForgetAfter, unknown_);
+    hear(heardBy_[sender], now - kForgetAfter);
     if (profile != SecurityProfile::Cam) return;
     for (const Index station : unknown_) of(station, now).requested = true;
 }
 
+void CertificatePolicy::heardAll(std::span<const Index> stations, Index sender, SecurityProfile profile,
+                                 kernel::SimTime now) {
+    if (!secured_ || stations.empty()) return;
+    heardBy(sender, profile, now,
+            [&](LastHeard& table, kernel::SimTime since) { table.hearAll(stations, now, since, unknown_); });
+}
+
 void CertificatePolicy::heardAll(LastHeard::List stations, Index sender, SecurityProfile profile, kernel::SimTime now) {
     if (!secured_ || stations == nullptr || stations->empty()) return;
-    forgetOld(now);
-    if (sender >= heardBy_.size()) heardBy_.resize(sender + 1);
-    unknown_.clear();
-    heardBy_[sender].hearList(std::move(stations), now, now - kForgetAfter, unknown_);
-    if (profile != SecurityProfile::Cam) return;
-    for (const Index station : unknown_) of(station, now).requested = true;
+    heardBy(sender, profile, now, [&](LastHeard& table, kernel::SimTime since) {
+        table.hearList(std::move(stations), now, since, unknown_);
+    });
 }
 
 }  // namespace sbsim::radio

@@ -78,6 +78,10 @@ private:
     };
     Station& of(Index station, kernel::SimTime now);
     void forgetOld(kernel::SimTime now);
+    /// heardAll's common part: `hear(table, since)` records a frame's stations in the sender's
+    /// table and leaves the ones it did not know in unknown_.
+    template <typename Hear>
+    void heardBy(Index sender, SecurityProfile profile, kernel::SimTime now, Hear&& hear);
 
     bool secured_;
     StationIds ids_;
