@@ -51,6 +51,7 @@ void FarCells::newStep(const ChannelStations& stations) {
     const std::int64_t area =
         any ? (static_cast<std::int64_t>(x1) - x0 + 1) * (static_cast<std::int64_t>(y1) - y0 + 1) : 0;
     usable_ = any && area <= kMaxDenseCells;
+    byIndex_.assign(stations.slotOfIndex.size(), IndexCell{kNoCell, kNoCell});
     if (!usable_) {
         std::fill(cellOf_.begin(), cellOf_.end(), -1);
         memberStart_.clear();
@@ -70,6 +71,10 @@ void FarCells::newStep(const ChannelStations& stations) {
         if (dense_[k] < 0) dense_[k] = idOf(cx_[s], cy_[s]);
         cellOf_[s] = dense_[k];
         ++occupants_[k];
+    }
+    for (std::size_t j = 0; j < byIndex_.size(); ++j) {
+        const Slot s = stations.slotOfIndex[j];
+        if (s >= 0 && static_cast<std::size_t>(s) < n && cellOf_[s] >= 0) byIndex_[j] = {cx_[s], cy_[s]};
     }
     // Members by cell id (counting sort, slots ascending within a cell).
     memberStart_.assign(cells() + 1, 0);

@@ -229,13 +229,31 @@ void LinkBudget::computeNeighbourhood(Slot s) {
     const FixedStations& fixed = fixed_;
     const auto fixedSelf = index ? std::nullopt : fixed.indexOf(stations_.ids[s]);
     // With the far tier only stations in cells not wholly beyond the far range have their own links.
-    const double radius =
-        far_ && cells_.usable() ? std::min(cutoff_, farRange_ + cells_.size() * std::sqrt(2.0)) : cutoff_;
+    const bool far = far_ && cells_.usable();
+    const double radius = far ? std::min(cutoff_, farRange_ + cells_.size() * std::sqrt(2.0)) : cutoff_;
+    // The far cells' vehicles (~40 % of the radius's) are dropped as the grid meets them, by
+    // index (read in the grid's order), before they cost a candidate and a read by slot;
+    // classify() would drop exactly these.
+    const double fromX = stations_.x[s];
+    const double fromY = stations_.y[s];
+    const double farRange = farRange_;
+    const auto takeNear = [&](traffic::VehicleSnapshot::Index j) {
+        if (!cells_.beyondIndex(static_cast<std::size_t>(j), fromX, fromY, farRange)) take(j);
+    };
     if (index) {
-        grid_.forEachWithin(*index, radius, take);
+        if (far) {
+            grid_.forEachWithin(*index, radius, takeNear);
+        } else {
+            grid_.forEachWithin(*index, radius, take);
+        }
     } else if (fixedSelf) {
-        grid_.forEachAround(stations_.x[s], stations_.y[s], radius, take);
+        if (far) {
+            grid_.forEachAround(fromX, fromY, radius, takeNear);
+        } else {
+            grid_.forEachAround(fromX, fromY, radius, take);
+        }
     }
+    near.farTested = far ? candidates.size() : 0;
     if ((index || fixedSelf) && !fixed.empty()) {
         fixed.forEachWithin({stations_.x[s], stations_.y[s]}, cutoff_, fixedSelf, [&](FixedStations::Index k, double) {
             const auto it = stations_.slotOf.find(fixed.ids()[k]);
@@ -346,7 +364,8 @@ void LinkBudget::classify(Slot s) {
     std::size_t n = 0;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Slot r = candidates[c];
-        if (far && cells_.beyond(r, fromX, fromY, farRange_)) continue;  // in a far cell below
+        // In a far cell (below); the grid's candidates were tested as it met them.
+        if (far && c >= near.farTested && cells_.beyond(r, fromX, fromY, farRange_)) continue;
         const double dx = x[r] - fromX;
         const double dy = y[r] - fromY;
         keptCandidate[n] = static_cast<std::uint32_t>(c);

@@ -406,6 +406,38 @@ TEST(FarCells, AStationAtNoPlaceHasNoCellAndLeavesTheOthersTheirs) {
     EXPECT_EQ(seen, expected);
 }
 
+TEST(FarCells, ByIndexItAnswersAsByTheStationsSlot) {
+    // Slots in the order stations appeared, snapshot indices in another: the grid's visit asks by
+    // index, classify() asked by slot, and both must drop the same vehicles.
+    ChannelStations stations;
+    const std::vector<std::tuple<const char*, double, double>> placed{
+        {"a", 10, 10}, {"b", 250, 30}, {"c", 640, 90}, {"d", 930, 720}, {"e", -480, 350}, {"lost", -1073741824.0, 0}};
+    for (const auto& [id, x, y] : placed) {
+        const auto s = stations.add(id, 0);
+        stations.x[s] = x;
+        stations.y[s] = y;
+        stations.present[s] = 1;
+    }
+    // Index j is slot order[j]; index 3 is a vehicle without a station.
+    const std::vector<ChannelStations::Slot> order{4, 2, 5, -1, 0, 3, 1};
+    stations.slotOfIndex = order;
+    FarCells cells(100);
+    cells.newStep(stations);
+    ASSERT_TRUE(cells.usable());
+    int beyond = 0, near = 0;
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {600.0, 80.0}, {-300.0, 500.0}}) {
+        for (const double range : {150.0, 400.0, 700.0}) {
+            for (std::size_t j = 0; j < order.size(); ++j) {
+                const bool expected = order[j] >= 0 && cells.beyond(order[j], x, y, range);
+                EXPECT_EQ(cells.beyondIndex(j, x, y, range), expected) << "index " << j << " range " << range;
+                (expected ? beyond : near) += 1;
+            }
+        }
+    }
+    EXPECT_GT(beyond, 10);  // the cases do test both answers
+    EXPECT_GT(near, 10);
+}
+
 TEST(ChannelMedium, BusyRatioAndDccFollowTheLoad) {
     Bench b({{"a", 0}, {"b", 50}});
     // a sends every 2 ms for 300 ms: 728 µs (its 508-byte frame) of 2000 busy at b.
