@@ -27,6 +27,24 @@ FarCells::Cell FarCells::idOf(std::int32_t cx, std::int32_t cy) {
     return it->second;
 }
 
+void FarCells::fillBeyond(double x, double y, double radius, double range, BeyondTable& table) const {
+    table.x = x;
+    table.y = y;
+    table.range = range;
+    table.x0 = coordinate(x - radius);
+    table.y0 = coordinate(y - radius);
+    // A cell id of kNoCell is never in the table: coordinate() stays within ±1e9.
+    table.width = coordinate(x + radius) - table.x0 + 1;
+    table.height = coordinate(y + radius) - table.y0 + 1;
+    table.beyond.resize(static_cast<std::size_t>(table.width) * static_cast<std::size_t>(table.height));
+    std::size_t k = 0;
+    for (std::int32_t row = 0; row < table.height; ++row) {
+        for (std::int32_t column = 0; column < table.width; ++column) {
+            table.beyond[k++] = cellBeyond(table.x0 + column, table.y0 + row, x, y, range) ? 1 : 0;
+        }
+    }
+}
+
 void FarCells::newStep(const ChannelStations& stations) {
     const std::size_t n = stations.present.size();
     cellOf_.assign(n, -1);

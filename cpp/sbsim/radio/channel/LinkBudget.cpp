@@ -215,6 +215,19 @@ void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {
         kStationsPerChunk);
 }
 
+namespace {
+/// computeNeighbourhood()'s kept vehicles and far cells, one set per thread (a neighbourhood is
+/// computed on one).
+struct NearScratch {
+    std::vector<ChannelStations::Slot> kept;
+    FarCells::BeyondTable table;
+};
+[[gnu::noinline]] NearScratch& nearScratch() {
+    static thread_local NearScratch scratch;
+    return scratch;
+}
+}  // namespace
+
 void LinkBudget::computeNeighbourhood(Slot s) {
     Neighbourhood& near = near_[s];
     near.at = stations_.refreshedAt;
@@ -236,9 +249,21 @@ void LinkBudget::computeNeighbourhood(Slot s) {
     // classify() would drop exactly these.
     const double fromX = stations_.x[s];
     const double fromY = stations_.y[s];
-    const double farRange = farRange_;
+    // Written without a branch on the answer (near and far vehicles come mixed, by index): each
+    // visited vehicle is stored and the end moves on only for a kept one.
+    NearScratch& scratch = nearScratch();
+    std::vector<Slot>& kept = scratch.kept;
+    if (far) cells_.fillBeyond(fromX, fromY, radius, farRange_, scratch.table);
+    const FarCells::BeyondTable& table = scratch.table;
+    kept.resize(static_cast<std::size_t>(snapshot_.size()) + 1);
+    Slot* const keptData = kept.data();
+    std::size_t nKept = 0;
+    const Slot* const slotOfIndex = stations_.slotOfIndex.data();
     const auto takeNear = [&](traffic::VehicleSnapshot::Index j) {
-        if (!cells_.beyondIndex(static_cast<std::size_t>(j), fromX, fromY, farRange)) take(j);
+        const Slot r = slotOfIndex[j];
+        keptData[nKept] = r;
+        nKept += static_cast<std::size_t>(static_cast<int>(r >= 0) & static_cast<int>(r != s) &
+                                          static_cast<int>(!cells_.beyondIndex(static_cast<std::size_t>(j), table)));
     };
     if (index) {
         if (far) {
@@ -253,6 +278,7 @@ void LinkBudget::computeNeighbourhood(Slot s) {
             grid_.forEachAround(fromX, fromY, radius, take);
         }
     }
+    if (far) candidates.assign(keptData, keptData + nKept);
     near.farTested = far ? candidates.size() : 0;
     if ((index || fixedSelf) && !fixed.empty()) {
         fixed.forEachWithin({stations_.x[s], stations_.y[s]}, cutoff_, fixedSelf, [&](FixedStations::Index k, double) {
