@@ -340,8 +340,8 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
 namespace {
 /// classify()'s per-link columns, one set per thread (a neighbourhood is classified on one).
 struct ClassifyScratch {
-    std::vector<std::uint32_t> candidate;  // index into the candidates
-    std::vector<double> distance, lossDb;
+    StepLinks::Column<std::uint32_t> candidate;  // index into the candidates
+    StepLinks::Column<double> distance, lossDb;
     struct FarCell {
         FarCells::Cell cell;
         std::uint32_t occupants;

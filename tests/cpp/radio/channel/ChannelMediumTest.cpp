@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -16,6 +17,7 @@
 #include "sbsim/radio/Receiver.h"
 #include "sbsim/radio/channel/ChannelMedium.h"
 #include "sbsim/radio/channel/FarCells.h"
+#include "sbsim/radio/channel/StepLinks.h"
 
 namespace sbsim::radio {
 namespace {
@@ -443,6 +445,23 @@ TEST(FarCells, ByIndexItAnswersAsByTheStationsSlot) {
     }
     EXPECT_GT(beyond, 20);  // the cases do test both answers
     EXPECT_GT(near, 20);
+}
+
+TEST(StepLinks, ItsColumnsKeepEveryValueGivenThem) {
+    // The columns skip only the zero-fill of a resize: values given by a constructor, an
+    // insertion or a copy are kept, and what was written before a resize stays.
+    StepLinks::Column<double> column(3, 2.5);
+    EXPECT_EQ(column, (StepLinks::Column<double>{2.5, 2.5, 2.5}));
+    column.push_back(-1);
+    column.insert(column.begin(), 4, 7.0);
+    EXPECT_EQ(column, (StepLinks::Column<double>{7, 7, 7, 7, 2.5, 2.5, 2.5, -1}));
+    for (std::size_t k = 0; k < column.size(); ++k) column[k] = static_cast<double>(k);
+    column.resize(1000);  // grows (a new block): the values written move with it
+    for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(column[k], static_cast<double>(k));
+    const StepLinks::Column<double> copy = column;
+    EXPECT_TRUE(std::equal(copy.begin(), copy.begin() + 8, column.begin()));
+    StepLinks::Column<StepLinks::Units> units(2, StepLinks::Units{1} << 100);
+    EXPECT_EQ(units[1] >> 100, 1u);
 }
 
 TEST(ChannelMedium, BusyRatioAndDccFollowTheLoad) {
