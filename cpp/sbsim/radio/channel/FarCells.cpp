@@ -27,6 +27,24 @@ FarCells::Cell FarCells::idOf(std::int32_t cx, std::int32_t cy) {
     return it->second;
 }
 
+void FarCells::fillBeyond(double x, double y, double radius, double range, BeyondTable& table) const {
+    table.x = x;
+    table.y = y;
+    table.range = range;
+    table.x0 = coordinate(x - radius);
+    table.y0 = coordinate(y - radius);
+    // A cell id of kNoCell is never in the table: coordinate() stays within ±1e9.
+    table.width = coordinate(x + radius) - table.x0 + 1;
+    table.height = coordinate(y + radius) - table.y0 + 1;
+    table.beyond.resize(static_cast<std::size_t>(table.width) * static_cast<std::size_t>(table.height));
+    std::size_t k = 0;
+    for (std::int32_t row = 0; row < table.height; ++row) {
+        for (std::int32_t column = 0; column < table.width; ++column) {
+            table.beyond[k++] = cellBeyond(table.x0 + column, table.y0 + row, x, y, range) ? 1 : 0;
+        }
+    }
+}
+
 void FarCells::newStep(const ChannelStations& stations) {
     const std::size_t n = stations.present.size();
     cellOf_.assign(n, -1);
@@ -51,6 +69,7 @@ void FarCells::newStep(const ChannelStations& stations) {
     const std::int64_t area =
         any ? (static_cast<std::int64_t>(x1) - x0 + 1) * (static_cast<std::int64_t>(y1) - y0 + 1) : 0;
     usable_ = any && area <= kMaxDenseCells;
+    byIndex_.assign(stations.slotOfIndex.size(), IndexCell{kNoCell, kNoCell});
     if (!usable_) {
         std::fill(cellOf_.begin(), cellOf_.end(), -1);
         memberStart_.clear();
@@ -70,6 +89,10 @@ void FarCells::newStep(const ChannelStations& stations) {
         if (dense_[k] < 0) dense_[k] = idOf(cx_[s], cy_[s]);
         cellOf_[s] = dense_[k];
         ++occupants_[k];
+    }
+    for (std::size_t j = 0; j < byIndex_.size(); ++j) {
+        const Slot s = stations.slotOfIndex[j];
+        if (s >= 0 && static_cast<std::size_t>(s) < n && cellOf_[s] >= 0) byIndex_[j] = {cx_[s], cy_[s]};
     }
     // Members by cell id (counting sort, slots ascending within a cell).
     memberStart_.assign(cells() + 1, 0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -38,6 +39,28 @@ public:
         const Cell c = cellOf(s);
         return c >= 0 && cellBeyond(cx_[s], cy_[s], x, y, range);
     }
+    /// cellBeyond() answered once per cell of a square around a point, for a sender's whole grid
+    /// visit (~15 x 15 cells against ~1,700 vehicles tested).
+    struct BeyondTable {
+        std::int32_t x0 = 0, y0 = 0, width = 0, height = 0;
+        double x = 0, y = 0, range = 0;
+        std::vector<std::uint8_t> beyond;  // row by row
+    };
+    /// Fills `table` for the cells meeting the square of half-side `radius` around (x, y).
+    void fillBeyond(double x, double y, double radius, double range, BeyondTable& table) const;
+    /// beyond() for the station of snapshot index `j` (ChannelStations::slotOfIndex; false for no
+    /// station or no cell) from (table.x, table.y): the same answer, read in the order a grid visit
+    /// meets vehicles — by index rather than by slot — so a far vehicle is dropped before it is a
+    /// candidate.
+    bool beyondIndex(std::size_t j, const BeyondTable& table) const {
+        const IndexCell c = byIndex_[j];
+        const auto column = static_cast<std::uint32_t>(c.cx - table.x0);  // wraps below x0
+        const auto row = static_cast<std::uint32_t>(c.cy - table.y0);
+        if (column < static_cast<std::uint32_t>(table.width) && row < static_cast<std::uint32_t>(table.height)) {
+            return table.beyond[row * static_cast<std::uint32_t>(table.width) + column] != 0;
+        }
+        return c.cx != kNoCell && cellBeyond(c.cx, c.cy, table.x, table.y, table.range);  // outside the square
+    }
     /// The stations in `cell` this step, in slot order.
     std::pair<const Slot*, const Slot*> members(Cell cell) const {
         if (static_cast<std::size_t>(cell) + 1 >= memberStart_.size()) return {nullptr, nullptr};
@@ -60,6 +83,12 @@ private:
         return static_cast<std::int32_t>(std::floor(std::clamp(v * inverse_, -1e9, 1e9)));
     }
     Cell idOf(std::int32_t cx, std::int32_t cy);
+    /// A cell's coordinates by snapshot index; kNoCell: no station or no cell (coordinate() never
+    /// gives it: it clamps to ±1e9).
+    struct IndexCell {
+        std::int32_t cx, cy;
+    };
+    static constexpr std::int32_t kNoCell = std::numeric_limits<std::int32_t>::min();
 
     double size_, inverse_;
     std::unordered_map<std::uint64_t, Cell> ids_;
@@ -67,6 +96,7 @@ private:
     // Per slot, this step.
     std::vector<Cell> cellOf_;
     std::vector<std::int32_t> cx_, cy_;
+    std::vector<IndexCell> byIndex_;  // per snapshot index
     // This step's occupied bounding box of cells, row by row: id and occupants.
     bool usable_ = false;
     std::int32_t lowX_ = 0, lowY_ = 0, width_ = 0, height_ = 0;

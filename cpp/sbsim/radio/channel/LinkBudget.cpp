@@ -215,6 +215,19 @@ void LinkBudget::prepareStep(Slot first, kernel::ParallelFor& pool) {
         kStationsPerChunk);
 }
 
+namespace {
+/// computeNeighbourhood()'s kept vehicles and far cells, one set per thread (a neighbourhood is
+/// computed on one).
+struct NearScratch {
+    std::vector<ChannelStations::Slot> kept;
+    FarCells::BeyondTable table;
+};
+[[gnu::noinline]] NearScratch& nearScratch() {
+    static thread_local NearScratch scratch;
+    return scratch;
+}
+}  // namespace
+
 void LinkBudget::computeNeighbourhood(Slot s) {
     Neighbourhood& near = near_[s];
     near.at = stations_.refreshedAt;
@@ -229,13 +242,44 @@ void LinkBudget::computeNeighbourhood(Slot s) {
     const FixedStations& fixed = fixed_;
     const auto fixedSelf = index ? std::nullopt : fixed.indexOf(stations_.ids[s]);
     // With the far tier only stations in cells not wholly beyond the far range have their own links.
-    const double radius =
-        far_ && cells_.usable() ? std::min(cutoff_, farRange_ + cells_.size() * std::sqrt(2.0)) : cutoff_;
+    const bool far = far_ && cells_.usable();
+    const double radius = far ? std::min(cutoff_, farRange_ + cells_.size() * std::sqrt(2.0)) : cutoff_;
+    // The far cells' vehicles (~40 % of the radius's) are dropped as the grid meets them, by
+    // index (read in the grid's order), before they cost a candidate and a read by slot;
+    // classify() would drop exactly these.
+    const double fromX = stations_.x[s];
+    const double fromY = stations_.y[s];
+    // Written without a branch on the answer (near and far vehicles come mixed, by index): each
+    // visited vehicle is stored and the end moves on only for a kept one.
+    NearScratch& scratch = nearScratch();
+    std::vector<Slot>& kept = scratch.kept;
+    if (far) cells_.fillBeyond(fromX, fromY, radius, farRange_, scratch.table);
+    const FarCells::BeyondTable& table = scratch.table;
+    kept.resize(static_cast<std::size_t>(snapshot_.size()) + 1);
+    Slot* const keptData = kept.data();
+    std::size_t nKept = 0;
+    const Slot* const slotOfIndex = stations_.slotOfIndex.data();
+    const auto takeNear = [&](traffic::VehicleSnapshot::Index j) {
+        const Slot r = slotOfIndex[j];
+        keptData[nKept] = r;
+        nKept += static_cast<std::size_t>(static_cast<int>(r >= 0) & static_cast<int>(r != s) &
+                                          static_cast<int>(!cells_.beyondIndex(static_cast<std::size_t>(j), table)));
+    };
     if (index) {
-        grid_.forEachWithin(*index, radius, take);
+        if (far) {
+            grid_.forEachWithin(*index, radius, takeNear);
+        } else {
+            grid_.forEachWithin(*index, radius, take);
+        }
     } else if (fixedSelf) {
-        grid_.forEachAround(stations_.x[s], stations_.y[s], radius, take);
+        if (far) {
+            grid_.forEachAround(fromX, fromY, radius, takeNear);
+        } else {
+            grid_.forEachAround(fromX, fromY, radius, take);
+        }
     }
+    if (far) candidates.assign(keptData, keptData + nKept);
+    near.farTested = far ? candidates.size() : 0;
     if ((index || fixedSelf) && !fixed.empty()) {
         fixed.forEachWithin({stations_.x[s], stations_.y[s]}, cutoff_, fixedSelf, [&](FixedStations::Index k, double) {
             const auto it = stations_.slotOf.find(fixed.ids()[k]);
@@ -296,8 +340,8 @@ void LinkBudget::applyObstacles(Slot s, kernel::ParallelFor& pool) {
 namespace {
 /// classify()'s per-link columns, one set per thread (a neighbourhood is classified on one).
 struct ClassifyScratch {
-    std::vector<std::uint32_t> candidate;  // index into the candidates
-    std::vector<double> distance, lossDb;
+    StepLinks::Column<std::uint32_t> candidate;  // index into the candidates
+    StepLinks::Column<double> distance, lossDb;
     struct FarCell {
         FarCells::Cell cell;
         std::uint32_t occupants;
@@ -346,7 +390,8 @@ void LinkBudget::classify(Slot s) {
     std::size_t n = 0;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
         const Slot r = candidates[c];
-        if (far && cells_.beyond(r, fromX, fromY, farRange_)) continue;  // in a far cell below
+        // In a far cell (below); the grid's candidates were tested as it met them.
+        if (far && c >= near.farTested && cells_.beyond(r, fromX, fromY, farRange_)) continue;
         const double dx = x[r] - fromX;
         const double dy = y[r] - fromY;
         keptCandidate[n] = static_cast<std::uint32_t>(c);

@@ -71,6 +71,7 @@ private:
     struct Neighbourhood {
         std::optional<kernel::SimTime> at;   // the snapshot they were computed for
         std::vector<Slot> candidates;        // the grid's answer, until classify()
+        std::size_t farTested = 0;           // the leading candidates already not in a far cell
         bool obstaclesPending = false;       // candidates found, the buildings' loss not yet walked
         std::vector<double> obstacleDb;      // per candidate, the buildings' loss
         std::shared_ptr<StepLinks> links;    // shared with the frames on the air

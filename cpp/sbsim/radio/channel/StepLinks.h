@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "sbsim/radio/channel/ChannelStations.h"
+#include "sbsim/radio/channel/DefaultInitAllocator.h"
 
 namespace sbsim::radio {
 
@@ -17,16 +18,20 @@ struct StepLinks {
     using Slot = ChannelStations::Slot;
     __extension__ typedef unsigned __int128 Units;  // Reception's: 2^-64 mW
 
-    std::vector<Slot> receivers;
-    std::vector<std::uint32_t> bin;  // distance / Medium::kDistanceBin
-    std::vector<double> distance;
+    /// The individual links' columns, resized for every candidate and written whole (resizeLinks).
+    template <typename T>
+    using Column = std::vector<T, DefaultInitAllocator<T>>;
+
+    Column<Slot> receivers;
+    Column<std::uint32_t> bin;  // distance / Medium::kDistanceBin
+    Column<double> distance;
     enum Tier : std::uint8_t {
         kBelowFloor = 0,    // interference only, below the floor: no part of what its receiver hears
         kInterference = 1,  // interference only: adds `units` to what its receiver hears
         kDrawn = 2,         // drawn per frame
     };
-    std::vector<std::uint8_t> tier;
-    std::vector<Units> units;  // an interference-only link's power (0 for a drawn one)
+    Column<std::uint8_t> tier;
+    Column<Units> units;  // an interference-only link's power (0 for a drawn one)
 
     /// The far tier (ChannelSettings::farCellM): whole cells beyond the far range, each one figure
     /// for all its receivers — the mean power at the cell's centre (0: below the floor), its

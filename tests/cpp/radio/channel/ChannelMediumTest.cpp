@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -16,6 +17,7 @@
 #include "sbsim/radio/Receiver.h"
 #include "sbsim/radio/channel/ChannelMedium.h"
 #include "sbsim/radio/channel/FarCells.h"
+#include "sbsim/radio/channel/StepLinks.h"
 
 namespace sbsim::radio {
 namespace {
@@ -404,6 +406,62 @@ TEST(FarCells, AStationAtNoPlaceHasNoCellAndLeavesTheOthersTheirs) {
                           });
     const std::vector<std::pair<FarCells::Cell, std::uint32_t>> expected{{cells.cellOf(0), 1}, {cells.cellOf(1), 2}};
     EXPECT_EQ(seen, expected);
+}
+
+TEST(FarCells, ByIndexItAnswersAsByTheStationsSlot) {
+    // Slots in the order stations appeared, snapshot indices in another: the grid's visit asks by
+    // index, classify() asked by slot, and both must drop the same vehicles.
+    ChannelStations stations;
+    const std::vector<std::tuple<const char*, double, double>> placed{
+        {"a", 10, 10}, {"b", 250, 30}, {"c", 640, 90}, {"d", 930, 720}, {"e", -480, 350}, {"lost", -1073741824.0, 0}};
+    for (const auto& [id, x, y] : placed) {
+        const auto s = stations.add(id, 0);
+        stations.x[s] = x;
+        stations.y[s] = y;
+        stations.present[s] = 1;
+    }
+    // Index j is slot order[j]; index 3 is a vehicle without a station.
+    const std::vector<ChannelStations::Slot> order{4, 2, 5, -1, 0, 3, 1};
+    stations.slotOfIndex = order;
+    FarCells cells(100);
+    cells.newStep(stations);
+    ASSERT_TRUE(cells.usable());
+    int beyond = 0, near = 0;
+    FarCells::BeyondTable table;
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {600.0, 80.0}, {-300.0, 500.0}}) {
+        for (const double range : {150.0, 400.0, 700.0}) {
+            // The square around (x, y) holding every station, and one holding few (the others
+            // answered outside the table).
+            for (const double radius : {2000.0, 120.0}) {
+                cells.fillBeyond(x, y, radius, range, table);
+                for (std::size_t j = 0; j < order.size(); ++j) {
+                    const bool expected = order[j] >= 0 && cells.beyond(order[j], x, y, range);
+                    EXPECT_EQ(cells.beyondIndex(j, table), expected)
+                        << "index " << j << " range " << range << " radius " << radius;
+                    (expected ? beyond : near) += 1;
+                }
+            }
+        }
+    }
+    EXPECT_GT(beyond, 20);  // the cases do test both answers
+    EXPECT_GT(near, 20);
+}
+
+TEST(StepLinks, ItsColumnsKeepEveryValueGivenThem) {
+    // The columns skip only the zero-fill of a resize: values given by a constructor, an
+    // insertion or a copy are kept, and what was written before a resize stays.
+    StepLinks::Column<double> column(3, 2.5);
+    EXPECT_EQ(column, (StepLinks::Column<double>{2.5, 2.5, 2.5}));
+    column.push_back(-1);
+    column.insert(column.begin(), 4, 7.0);
+    EXPECT_EQ(column, (StepLinks::Column<double>{7, 7, 7, 7, 2.5, 2.5, 2.5, -1}));
+    for (std::size_t k = 0; k < column.size(); ++k) column[k] = static_cast<double>(k);
+    column.resize(1000);  // grows (a new block): the values written move with it
+    for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(column[k], static_cast<double>(k));
+    const StepLinks::Column<double> copy = column;
+    EXPECT_TRUE(std::equal(copy.begin(), copy.begin() + 8, column.begin()));
+    StepLinks::Column<StepLinks::Units> units(2, StepLinks::Units{1} << 100);
+    EXPECT_EQ(units[1] >> 100, 1u);
 }
 
 TEST(ChannelMedium, BusyRatioAndDccFollowTheLoad) {
