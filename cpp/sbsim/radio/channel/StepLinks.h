@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "sbsim/kernel/DefaultInitAllocator.h"
 #include "sbsim/radio/channel/ChannelStations.h"
-#include "sbsim/radio/channel/DefaultInitAllocator.h"
 
 namespace sbsim::radio {
 
@@ -20,7 +20,7 @@ struct StepLinks {
 
     /// The individual links' columns, resized for every candidate and written whole (resizeLinks).
     template <typename T>
-    using Column = std::vector<T, DefaultInitAllocator<T>>;
+    using Column = std::vector<T, kernel::DefaultInitAllocator<T>>;
 
     Column<Slot> receivers;
     Column<std::uint32_t> bin;  // distance / Medium::kDistanceBin

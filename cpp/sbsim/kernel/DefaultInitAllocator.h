@@ -5,12 +5,12 @@
 #include <type_traits>
 #include <utility>
 
-namespace sbsim::radio {
+namespace sbsim::kernel {
 
 /// std::allocator whose value-initialisation is default-initialisation: a vector of trivial
-/// values resized up is not zero-filled first. For columns sized for every candidate and written
-/// whole right after (LinkBudget::classify's); a memset per sender and step was ~1 % of the
-/// channel model's time on bench5k.
+/// values resized up is not zero-filled first. For columns written whole right after a resize
+/// (the channel model's StepLinks and LinkBudget::classify's scratch), where a memset per sender
+/// and step was ~1 % of the channel model's time on bench5k.
 template <typename T>
 class DefaultInitAllocator : public std::allocator<T> {
 public:
@@ -32,4 +32,4 @@ public:
     }
 };
 
-}  // namespace sbsim::radio
+}  // namespace sbsim::kernel
