@@ -13,11 +13,13 @@ std::optional<DenmPhase> DenmMemory::received(const DenmContent& denm, kernel::S
     }
     if (denm.expiry() < now) return std::nullopt;
     if (it == entries_.end()) {
+        earliest_ = std::min(earliest_, denm.expiry());
         entries_.emplace(denm.action, Entry{denm, now, now, now});
         return DenmPhase::New;
     }
     if (!(denm.referenceTime < it->second.denm.referenceTime)) it->second.lastHeardAt = now;
     if (!(it->second.denm.referenceTime < denm.referenceTime)) return std::nullopt;
+    earliest_ = std::min(earliest_, denm.expiry());  // a new version may end sooner
     it->second.denm = denm;
     it->second.receivedAt = now;
     return DenmPhase::Update;
@@ -25,11 +27,14 @@ std::optional<DenmPhase> DenmMemory::received(const DenmContent& denm, kernel::S
 
 std::vector<DenmMemory::Entry> DenmMemory::dropExpired(kernel::SimTime now) {
     std::vector<Entry> dropped;
+    if (!(earliest_ < now)) return dropped;  // none due: no walk
+    earliest_ = kernel::SimTime::max();
     for (auto it = entries_.begin(); it != entries_.end();) {
         if (it->second.denm.expiry() < now) {
             dropped.push_back(std::move(it->second));
             it = entries_.erase(it);
         } else {
+            earliest_ = std::min(earliest_, it->second.denm.expiry());
             ++it;
         }
     }

@@ -30,8 +30,12 @@ public:
     /// Terminate), or nothing for a repetition, an older version, an already expired DENM or the
     /// termination of an event not kept.
     std::optional<DenmPhase> received(const DenmContent& denm, kernel::SimTime now);
-    /// Drops the events whose expiry is before `now`; returns them.
+    /// Drops the events whose expiry is before `now`; returns them. Walks the events only when
+    /// one can be due (earliestExpiry() before `now`): a trigger with nothing due costs a comparison.
     std::vector<Entry> dropExpired(kernel::SimTime now);
+    /// At or before every kept event's expiry (SimTime::max() while none was kept since the last
+    /// walk): a termination or an update to a later expiry leaves it early, which only costs a walk.
+    kernel::SimTime earliestExpiry() const { return earliest_; }
 
     const std::map<ActionId, Entry>& entries() const { return entries_; }
     const Entry* find(const ActionId& action) const;
@@ -41,6 +45,7 @@ public:
 
 private:
     std::map<ActionId, Entry> entries_;
+    kernel::SimTime earliest_ = kernel::SimTime::max();
 };
 
 }  // namespace sbsim::facilities

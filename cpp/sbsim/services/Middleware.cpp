@@ -9,6 +9,7 @@
 #include "sbsim/radio/CounterRandom.h"
 #include "sbsim/services/IndicatedTypes.h"
 #include "sbsim/services/ServiceManager.h"
+#include "sbsim/services/TriggerFree.h"
 
 namespace sbsim::services {
 
@@ -29,6 +30,7 @@ void Middleware::host(Service& service, const ServiceSpec& spec) {
     vehicles_.push_back(std::make_unique<ServiceVehicle>(vehicle_, manager_.registry()));
     const auto* declared = dynamic_cast<const IndicatedTypes*>(&service);
     taken_.push_back(declared ? std::optional(declared->indicatedTypes()) : std::nullopt);
+    if (dynamic_cast<const TriggerFree*>(&service) == nullptr) triggered_ = true;
     if (manager_.hasMedium()) manager_.medium().setTypesTaken(vehicleId_, indicatedTypes());
 }
 
@@ -81,7 +83,10 @@ kernel::SimTime Middleware::clockPhase(std::uint64_t seed, std::string_view stat
 
 void Middleware::initialize() {
     (void)manager_.stations().of(station_);  // the station's facilities, empty, from its departure on
-    scheduleAfter(clockPhase(simulation().seed(), vehicleId_, manager_.interval()), triggerTimer_);
+    // The first trigger is scheduled whatever the services (they are hosted after this); a station
+    // whose services turn out TriggerFree stops its clock there if it heard nothing.
+    firstTrigger_ = simTime() + clockPhase(simulation().seed(), vehicleId_, manager_.interval());
+    scheduleAt(firstTrigger_, triggerTimer_);
 }
 
 facilities::StationFacilities& Middleware::facilities() const { return manager_.stations().of(station_); }
@@ -131,6 +136,15 @@ void Middleware::broadcast(std::unique_ptr<radio::V2xMessage> message) {
     medium.broadcastFrom(*radioIndex_, vehicleId_, std::move(message));
 }
 
+void Middleware::wake() {
+    if (facilities().empty()) return;  // nothing was kept (a CAM or DENM already past its time)
+    const kernel::SimTime now = simTime();
+    const kernel::SimTime interval = manager_.interval();
+    kernel::SimTime next = firstTrigger_;
+    if (next <= now) next += interval * ((now - firstTrigger_).raw() / interval.raw() + 1);
+    scheduleAt(next, triggerTimer_);
+}
+
 void Middleware::scheduleForwarding() {
     const std::optional<kernel::SimTime> due = router_.nextTimeout();
     if (forwardTimer_.isScheduled() && (!due || forwardTimer_.arrivalTime() != *due)) cancelEvent(forwardTimer_);
@@ -139,8 +153,13 @@ void Middleware::scheduleForwarding() {
 
 void Middleware::handleMessage(kernel::Message& msg) {
     if (&msg == &triggerTimer_) {
+        // Scheduled before the services run, as always: the next trigger's place among the events of
+        // one instant does not change.
         scheduleAfter(manager_.interval(), triggerTimer_);
-        return trigger();
+        trigger();
+        // Nothing can expire before something is stored (wake()); the services do nothing on a trigger.
+        if (!triggered_ && triggerTimer_.isScheduled() && facilities().empty()) cancelEvent(triggerTimer_);
+        return;
     }
     if (&msg != &forwardTimer_) return kernel::Module::handleMessage(msg);
     for (auto& packet : router_.takeExpired(simTime(), position())) broadcast(std::move(packet));
@@ -161,6 +180,7 @@ void Middleware::receive(const radio::V2xMessage& message) {
     if (its != nullptr) {
         if (!its->reaches(position())) return;
         its->store(manager_.stations(), station_, simTime());
+        if (!triggerTimer_.isScheduled()) wake();
     }
     for (std::size_t k = 0; k < services_.size(); ++k) {
         if (!takes(k, message.typeName())) continue;

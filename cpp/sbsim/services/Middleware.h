@@ -37,7 +37,9 @@ class ServiceManager;
 /// vehicle arrives. It is the station's network and facilities layers too: a geo-broadcast message
 /// whose destination area does not hold the station goes no further, and CAMs and DENMs go into the
 /// station's LDM and DENM memory before its services see them; expired entries are dropped before
-/// every trigger. Its GeoNetworking router (radio::geonet::Router) forwards geo-broadcasts: the
+/// every trigger. A station all of whose services are TriggerFree needs its clock only for that
+/// expiry: its clock stops while its facilities hold nothing and starts again, on the same grid,
+/// when something is stored (see wake()). Its GeoNetworking router (radio::geonet::Router) forwards geo-broadcasts: the
 /// contention timers are this module's self-messages, the neighbours for greedy forwarding those
 /// of its LDM.
 class SBSIM_API Middleware : public kernel::Module, public radio::Receiver {
@@ -99,6 +101,10 @@ private:
     void scheduleForwarding();
     /// Hands `message` to the medium as this station's (its index looked up at the first send).
     void broadcast(std::unique_ptr<radio::V2xMessage> message);
+    /// The clock of a station whose services are all TriggerFree, stopped while its facilities were
+    /// empty: started at the next instant of its grid after now. The triggers it skipped would have
+    /// dropped nothing (there was nothing) and what was just stored expires after now.
+    void wake();
 
     ServiceManager& manager_;
     std::string vehicleId_;
@@ -114,6 +120,8 @@ private:
     std::vector<std::optional<std::vector<std::string>>> taken_;  // per service: the types indicate() takes; none: all
     const std::type_info* itsType_ = nullptr;                     // the last type found to be ITS
     const std::type_info* otherType_ = nullptr;                   // the last type found not to be
+    bool triggered_ = false;        // some service is not TriggerFree: the clock never stops
+    kernel::SimTime firstTrigger_;  // the clock's grid: firstTrigger_ + k * interval
     kernel::Message triggerTimer_{"middleware trigger"};
     std::optional<Eigen::Vector2d> fixedPosition_;
     radio::geonet::Router router_;

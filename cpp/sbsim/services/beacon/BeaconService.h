@@ -4,16 +4,17 @@
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/services/IndicatedTypes.h"
 #include "sbsim/services/Service.h"
+#include "sbsim/services/TriggerFree.h"
 
 namespace sbsim::services {
 
 /// Broadcasts a BeaconMessage of `bytes` bytes (default 190) every `interval` seconds (default
 /// 0.1), as the fixed-rate beacons of Sepulcre et al.'s 802.11p evaluation. The first one goes at
 /// a random phase in [0, interval) after the vehicle departs, drawn per vehicle from the seed, so
-/// vehicles departing together do not send in lockstep.
+/// vehicles departing together do not send in lockstep. Its trigger() does nothing (TriggerFree).
 ///
 ///     <service type="Beacon" interval="0.1" bytes="190"/>
-class BeaconService : public Service, public IndicatedTypes {
+class BeaconService : public Service, public IndicatedTypes, public TriggerFree {
 public:
     void initialize() override;
     /// None: it only sends (others' beacons need not visit the station).
