@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "ThrownMessage.h"
 #include "sbsim/storyboard/geometry/Footprint.h"
@@ -54,6 +56,60 @@ TEST(Polygon, BoundaryIsOutside) {
     EXPECT_FALSE(t.contains(V(1.5, 0.5)));
     EXPECT_TRUE(t.contains(V(1.5, 0.6)));
     EXPECT_FALSE(t.contains(V(1.5, 0.4)));
+}
+
+TEST(Polygon, ABoxRingIsAnsweredByItsBoxExactlyAsTheGeneralRule) {
+    // A box ring (any start, either direction, closed or not) takes the box shortcut; the same box
+    // with an extra vertex on an edge takes the general rule. Both must agree everywhere: inside,
+    // outside, on edges and corners, NaN.
+    const double x0 = 312.25, x1 = 1200.0, y0 = -7.5, y1 = 400.125;
+    const std::vector<V> corners{V(x0, y0), V(x1, y0), V(x1, y1), V(x0, y1)};
+    std::vector<V> points;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> ux(x0 - 50, x1 + 50);
+    std::uniform_real_distribution<double> uy(y0 - 50, y1 + 50);
+    for (int k = 0; k < 2000; ++k) points.emplace_back(ux(rng), uy(rng));
+    for (int k = 0; k < 200; ++k) {
+        points.emplace_back(x0, uy(rng));  // on the edges and beyond their ends
+        points.emplace_back(x1, uy(rng));
+        points.emplace_back(ux(rng), y0);
+        points.emplace_back(ux(rng), y1);
+    }
+    for (const V& c : corners) points.push_back(c);
+    points.emplace_back(std::nextafter(x0, 1e9), std::nextafter(y0, 1e9));
+    points.emplace_back(std::nextafter(x1, 0.0), std::nextafter(y1, 0.0));
+    points.emplace_back(NAN, 100);
+    points.emplace_back(500, NAN);
+    const Polygon general({V(x0, y0), V(700, y0), V(x1, y0), V(x1, y1), V(x0, y1)});
+    EXPECT_FALSE(general.isBox());
+    std::size_t inside = 0;
+    for (const bool reverse : {false, true}) {
+        for (std::size_t start = 0; start < 4; ++start) {
+            for (const bool closed : {false, true}) {
+                std::vector<V> ring;
+                for (std::size_t k = 0; k < 4; ++k) ring.push_back(corners[(reverse ? start + 4 - k : start + k) % 4]);
+                if (closed) ring.push_back(ring.front());
+                const Polygon box(ring);
+                ASSERT_TRUE(box.isBox()) << reverse << start << closed;
+                for (const V& p : points) {
+                    ASSERT_EQ(box.contains(p), general.contains(p)) << p.transpose();
+                    inside += box.contains(p);
+                }
+            }
+        }
+    }
+    EXPECT_GT(inside, 1000u);
+    // Not boxes: crossing itself, going round twice, a corner missing, a box too thin.
+    EXPECT_FALSE(Polygon({corners[0], corners[2], corners[1], corners[3]}).isBox());
+    EXPECT_FALSE(
+        Polygon({corners[0], corners[1], corners[2], corners[3], corners[0], corners[1], corners[2], corners[3]})
+            .isBox());
+    EXPECT_FALSE(Polygon({corners[0], corners[1], corners[2], corners[1]}).isBox());
+    EXPECT_FALSE(Polygon({V(0, 0), V(1e-200, 0), V(1e-200, 1), V(0, 1)}).isBox());
+    // The bow tie's own rule differs from its box's: the shortcut would have been wrong.
+    const Polygon bowTie({corners[0], corners[1], corners[3], corners[2]});
+    EXPECT_FALSE(bowTie.isBox());
+    EXPECT_FALSE(bowTie.contains(V(x0 + 1, 0.5 * (y0 + y1))));
 }
 
 TEST(Polygon, OrientationDoesNotMatter) {
