@@ -225,6 +225,33 @@ TEST(Footprint, TurnsAlongTheCircle) {
     EXPECT_EQ(straight.at(3).centre(), f.movedFor(10, 3).centre());
 }
 
+TEST(Footprint, TheCentreAloneIsTheTurnedFootprintsCentreBitForBit) {
+    // The TTC bend test compares centres first with turnedCentre()/centreAt(); they must be the
+    // very doubles turned()/at() give, or a pair at the holding circles' edge could change answer.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coordinate(-5000, 5000);
+    std::uniform_real_distribution<double> angle(0, 360);
+    std::uniform_real_distribution<double> curvature(-0.2, 0.2);
+    std::uniform_real_distribution<double> speed(-5, 40);
+    std::uniform_real_distribution<double> seconds(0, 30);
+    for (int k = 0; k < 20000; ++k) {
+        const Footprint f = Footprint::fromSumo(V(coordinate(rng), coordinate(rng)), angle(rng), 5, 1.8);
+        const double c = k % 7 == 0 ? 1e-9 : curvature(rng);
+        const double v = speed(rng);
+        const double t = seconds(rng);
+        const V centre = f.turned(v * t, c).centre();
+        const V alone = f.turnedCentre(v * t, c);
+        ASSERT_EQ(alone.x(), centre.x()) << k;
+        ASSERT_EQ(alone.y(), centre.y()) << k;
+        for (const double bend : {0.0, c}) {
+            const MovingFootprint m(f, v, bend);
+            const V at = m.at(t).centre();
+            ASSERT_EQ(m.centreAt(t).x(), at.x()) << k;
+            ASSERT_EQ(m.centreAt(t).y(), at.y()) << k;
+        }
+    }
+}
+
 TEST(PathCurvature, HeadingChangeWrapsIntoMinusPiToPi) {
     constexpr double kDeg = std::numbers::pi / 180;
     // SUMO angles run clockwise: 350° -> 10° turns right (negative), 10° -> 350° left.
