@@ -23,20 +23,6 @@ namespace {
 constexpr std::int64_t kEdgeSamples = 64;
 /// How often a long sampling loop looks whether the run was asked to stop.
 constexpr std::int64_t kStopCheckEvery = 4096;
-
-/// TtcCondition::mayConflict, inlined into the pair sweep: it is called for every pair within the
-/// distance (most pairs end here), where a call's own cost is a fifth of the test's.
-[[gnu::always_inline]] inline bool circlesMayConflict(const MovingCircle& a, const MovingCircle& b, double ttc) {
-    // Beyond the last sample time, ceil(ttc/dt)·dt < ttc + dt: the circles must meet before that.
-    const double dt = std::min(a.sampleStep, b.sampleStep);
-    if (!(dt > 0 && std::isfinite(dt)) || !(ttc > 0)) return false;  // both standing, or zero length
-    const double horizon = (ttc + dt) * (1 + 1e-12);
-    if (a.curvature == 0 && b.curvature == 0) return mayMeet(a, b, horizon);
-    // On a bend a centre still stays within speed·t of where it starts (an arc is no shorter
-    // than its chord).
-    const double reach = a.radius + b.radius + 1e-4 + (a.velocity.norm() + b.velocity.norm()) * horizon;
-    return !((b.centre - a.centre).squaredNorm() > reach * reach);
-}
 }  // namespace
 
 TtcCondition::TtcCondition(double ttc, double distance) : ttc_(ttc), distance_(distance) {
@@ -181,7 +167,7 @@ bool TtcCondition::conflicts(VehicleIndex a, VehicleIndex b) const {
     // The compact circles first: the full footprints are read for the few pairs that may meet.
     const auto i = static_cast<std::size_t>(a);
     const auto j = static_cast<std::size_t>(b);
-    return circlesMayConflict(circles_[i], circles_[j], ttc_) && sampledConflict(movers_[i], movers_[j], ttc_);
+    return mayConflict(circles_[i], circles_[j], ttc_) && sampledConflict(movers_[i], movers_[j], ttc_);
 }
 
 bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& b, double speedB, double ttc) {
@@ -189,7 +175,15 @@ bool TtcCondition::conflict(const Footprint& a, double speedA, const Footprint& 
 }
 
 bool TtcCondition::mayConflict(const MovingCircle& a, const MovingCircle& b, double ttc) {
-    return circlesMayConflict(a, b, ttc);
+    // Beyond the last sample time, ceil(ttc/dt)·dt < ttc + dt: the circles must meet before that.
+    const double dt = std::min(a.sampleStep, b.sampleStep);
+    if (!(dt > 0 && std::isfinite(dt)) || !(ttc > 0)) return false;  // both standing, or zero length
+    const double horizon = (ttc + dt) * (1 + 1e-12);
+    if (a.curvature == 0 && b.curvature == 0) return mayMeet(a, b, horizon);
+    // On a bend a centre still stays within speed·t of where it starts (an arc is no shorter
+    // than its chord).
+    const double reach = a.radius + b.radius + 1e-4 + (a.velocity.norm() + b.velocity.norm()) * horizon;
+    return !((b.centre - a.centre).squaredNorm() > reach * reach);
 }
 
 bool TtcCondition::conflict(const MovingFootprint& ma, const MovingFootprint& mb, double ttc) {
