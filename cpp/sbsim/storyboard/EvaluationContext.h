@@ -7,6 +7,7 @@
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/ParallelFor.h"
 #include "sbsim/kernel/SimTime.h"
+#include "sbsim/storyboard/StepNeighbours.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/Penetration.h"
 #include "sbsim/traffic/TrafficQueries.h"
@@ -25,7 +26,18 @@ public:
                       const facilities::StationRegistry* stations = nullptr,
                       const traffic::Penetration* penetration = nullptr)
         : snapshot_(snapshot),
-          neighbours_(neighbours),
+          neighbours_(&neighbours),
+          queries_(queries),
+          parallel_(parallel),
+          stations_(stations),
+          penetration_(penetration) {}
+    /// The same with the step's grid built only if a condition asks for it (the storyboard's pass).
+    EvaluationContext(const traffic::VehicleSnapshot& snapshot, const StepNeighbours& lazyNeighbours,
+                      traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr,
+                      const facilities::StationRegistry* stations = nullptr,
+                      const traffic::Penetration* penetration = nullptr)
+        : snapshot_(snapshot),
+          lazyNeighbours_(&lazyNeighbours),
           queries_(queries),
           parallel_(parallel),
           stations_(stations),
@@ -35,7 +47,10 @@ public:
     kernel::SimTime now() const { return snapshot_.time(); }
     /// Built over this snapshot with a cell size at least the largest radius any registered
     /// condition asked for (Condition::neighbourRadius()).
-    const traffic::NeighbourGrid& neighbours() const { return neighbours_; }
+    /// Thread-safe; with a StepNeighbours, the first call of the step builds the grid.
+    const traffic::NeighbourGrid& neighbours() const {
+        return lazyNeighbours_ != nullptr ? lazyNeighbours_->get() : *neighbours_;
+    }
     /// Throws std::logic_error if this context has none (a snapshot evaluated without SUMO).
     traffic::TrafficQueries& queries() const {
         if (queries_ == nullptr) throw std::logic_error("this evaluation has no traffic to query");
@@ -57,7 +72,8 @@ public:
 
 private:
     const traffic::VehicleSnapshot& snapshot_;
-    const traffic::NeighbourGrid& neighbours_;
+    const traffic::NeighbourGrid* neighbours_ = nullptr;  // given built, or
+    const StepNeighbours* lazyNeighbours_ = nullptr;      // built on first use
     traffic::TrafficQueries* queries_;
     kernel::ParallelFor* parallel_;
     const facilities::StationRegistry* stations_;

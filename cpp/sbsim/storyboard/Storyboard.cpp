@@ -110,7 +110,8 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
         for (Condition* c : conditions_) c->forget(id);
     }
 
-    if (neighbourRadius_) grid_.build(snapshot, std::max(*neighbourRadius_, 5.0));
+    // Built on first use: a condition that answers from its own sweep ahead never asks.
+    grid_.reset(snapshot, std::max(neighbourRadius_.value_or(0.0), 5.0));
     const EvaluationContext ctx(snapshot, grid_, queries_.get(), &simulation().parallel(), stations_.get(),
                                 &penetration_);
     for (Condition* c : conditions_) c->prepare(ctx);

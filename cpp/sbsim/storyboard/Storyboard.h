@@ -19,6 +19,7 @@
 #include "sbsim/storyboard/Criterion.h"
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/NetworkStack.h"
+#include "sbsim/storyboard/StepNeighbours.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/storyboard/VehiclePass.h"
 #include "sbsim/storyboard/WorldPass.h"
@@ -117,7 +118,7 @@ private:
     /// story made registering n stories quadratic (100,000 stories took 80x the time of 10,000).
     traffic::SnapshotColumns conditionColumns_;
     std::optional<double> neighbourRadius_;
-    traffic::NeighbourGrid grid_;
+    StepNeighbours grid_;  // built only in steps where a condition searches neighbours
     std::unique_ptr<traffic::TrafficQueries> queries_;
     std::shared_ptr<const facilities::StationRegistry> stations_;
     traffic::Penetration penetration_;

@@ -247,7 +247,7 @@ void VehiclePass::activate(VehicleState& state, std::size_t s, const std::string
 void VehiclePass::applyEffect(Scope& scope, const Story& story, std::vector<AppliedEffect>& applied, Effect& effect) {
     const traffic::EffectStack::Token token = registry_.newToken();
     scope.setToken(token);
-    storyCommand(story, effect.typeName(), now_, [&] { effect.apply(scope); });
+    storyCommand(story, effect, now_, [&] { effect.apply(scope); });
     applied.push_back({&effect, token});
 }
 

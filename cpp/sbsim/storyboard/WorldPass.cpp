@@ -74,7 +74,7 @@ void WorldPass::activate(Entry& entry) {
     for (const WorldEffectPtr& effect : story.worldEffects()) {
         const NetworkStack::Token token = registry_.newToken();
         scope.setToken(token);
-        storyCommand(story, effect->typeName(), now_, [&] { effect->apply(scope); });
+        storyCommand(story, *effect, now_, [&] { effect->apply(scope); });
         entry.applied.emplace_back(effect.get(), token);
     }
 }
@@ -87,7 +87,7 @@ void WorldPass::deactivate(Entry& entry) {
     Scope scope(*this, story);
     for (auto it = entry.applied.rbegin(); it != entry.applied.rend(); ++it) {
         scope.setToken(it->second);
-        storyCommand(story, it->first->typeName(), now_, [&] { it->first->remove(scope); });
+        storyCommand(story, *it->first, now_, [&] { it->first->remove(scope); });
     }
     entry.applied.clear();
 }

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "ThrownMessage.h"
 #include "sbsim/storyboard/geometry/Footprint.h"
@@ -54,6 +56,60 @@ TEST(Polygon, BoundaryIsOutside) {
     EXPECT_FALSE(t.contains(V(1.5, 0.5)));
     EXPECT_TRUE(t.contains(V(1.5, 0.6)));
     EXPECT_FALSE(t.contains(V(1.5, 0.4)));
+}
+
+TEST(Polygon, ABoxRingIsAnsweredByItsBoxExactlyAsTheGeneralRule) {
+    // A box ring (any start, either direction, closed or not) takes the box shortcut; the same box
+    // with an extra vertex on an edge takes the general rule. Both must agree everywhere: inside,
+    // outside, on edges and corners, NaN.
+    const double x0 = 312.25, x1 = 1200.0, y0 = -7.5, y1 = 400.125;
+    const std::vector<V> corners{V(x0, y0), V(x1, y0), V(x1, y1), V(x0, y1)};
+    std::vector<V> points;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> ux(x0 - 50, x1 + 50);
+    std::uniform_real_distribution<double> uy(y0 - 50, y1 + 50);
+    for (int k = 0; k < 2000; ++k) points.emplace_back(ux(rng), uy(rng));
+    for (int k = 0; k < 200; ++k) {
+        points.emplace_back(x0, uy(rng));  // on the edges and beyond their ends
+        points.emplace_back(x1, uy(rng));
+        points.emplace_back(ux(rng), y0);
+        points.emplace_back(ux(rng), y1);
+    }
+    for (const V& c : corners) points.push_back(c);
+    points.emplace_back(std::nextafter(x0, 1e9), std::nextafter(y0, 1e9));
+    points.emplace_back(std::nextafter(x1, 0.0), std::nextafter(y1, 0.0));
+    points.emplace_back(NAN, 100);
+    points.emplace_back(500, NAN);
+    const Polygon general({V(x0, y0), V(700, y0), V(x1, y0), V(x1, y1), V(x0, y1)});
+    EXPECT_FALSE(general.isBox());
+    std::size_t inside = 0;
+    for (const bool reverse : {false, true}) {
+        for (std::size_t start = 0; start < 4; ++start) {
+            for (const bool closed : {false, true}) {
+                std::vector<V> ring;
+                for (std::size_t k = 0; k < 4; ++k) ring.push_back(corners[(reverse ? start + 4 - k : start + k) % 4]);
+                if (closed) ring.push_back(ring.front());
+                const Polygon box(ring);
+                ASSERT_TRUE(box.isBox()) << reverse << start << closed;
+                for (const V& p : points) {
+                    ASSERT_EQ(box.contains(p), general.contains(p)) << p.transpose();
+                    inside += box.contains(p);
+                }
+            }
+        }
+    }
+    EXPECT_GT(inside, 1000u);
+    // Not boxes: crossing itself, going round twice, a corner missing, a box too thin.
+    EXPECT_FALSE(Polygon({corners[0], corners[2], corners[1], corners[3]}).isBox());
+    EXPECT_FALSE(
+        Polygon({corners[0], corners[1], corners[2], corners[3], corners[0], corners[1], corners[2], corners[3]})
+            .isBox());
+    EXPECT_FALSE(Polygon({corners[0], corners[1], corners[2], corners[1]}).isBox());
+    EXPECT_FALSE(Polygon({V(0, 0), V(1e-200, 0), V(1e-200, 1), V(0, 1)}).isBox());
+    // The bow tie's own rule differs from its box's: the shortcut would have been wrong.
+    const Polygon bowTie({corners[0], corners[1], corners[3], corners[2]});
+    EXPECT_FALSE(bowTie.isBox());
+    EXPECT_FALSE(bowTie.contains(V(x0 + 1, 0.5 * (y0 + y1))));
 }
 
 TEST(Polygon, OrientationDoesNotMatter) {
@@ -167,6 +223,33 @@ TEST(Footprint, TurnsAlongTheCircle) {
     EXPECT_NEAR((onBend.at(2.5 * kPi).centre() - V(0, 50)).norm(), 0, kEps);
     const MovingFootprint straight(f, 10);
     EXPECT_EQ(straight.at(3).centre(), f.movedFor(10, 3).centre());
+}
+
+TEST(Footprint, TheCentreAloneIsTheTurnedFootprintsCentreBitForBit) {
+    // The TTC bend test compares centres first with turnedCentre()/centreAt(); they must be the
+    // very doubles turned()/at() give, or a pair at the holding circles' edge could change answer.
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> coordinate(-5000, 5000);
+    std::uniform_real_distribution<double> angle(0, 360);
+    std::uniform_real_distribution<double> curvature(-0.2, 0.2);
+    std::uniform_real_distribution<double> speed(-5, 40);
+    std::uniform_real_distribution<double> seconds(0, 30);
+    for (int k = 0; k < 20000; ++k) {
+        const Footprint f = Footprint::fromSumo(V(coordinate(rng), coordinate(rng)), angle(rng), 5, 1.8);
+        const double c = k % 7 == 0 ? 1e-9 : curvature(rng);
+        const double v = speed(rng);
+        const double t = seconds(rng);
+        const V centre = f.turned(v * t, c).centre();
+        const V alone = f.turnedCentre(v * t, c);
+        ASSERT_EQ(alone.x(), centre.x()) << k;
+        ASSERT_EQ(alone.y(), centre.y()) << k;
+        for (const double bend : {0.0, c}) {
+            const MovingFootprint m(f, v, bend);
+            const V at = m.at(t).centre();
+            ASSERT_EQ(m.centreAt(t).x(), at.x()) << k;
+            ASSERT_EQ(m.centreAt(t).y(), at.y()) << k;
+        }
+    }
 }
 
 TEST(PathCurvature, HeadingChangeWrapsIntoMinusPiToPi) {

@@ -68,6 +68,43 @@ TEST(CarSetCondition, MatchesTheListedIds) {
     EXPECT_FALSE(scene.test(none, "b"));
 }
 
+TEST(CarSetCondition, FlagsMadeOncePerIdListAndOnlyForIt) {
+    // prepare() looks the ids up once per id list; test() reads the flags only for that list.
+    CarSetCondition c({"b", "d"});
+    traffic::VehicleSnapshot first;
+    first.assign({car("a", 0, 0), car("b", 1, 0), car("c", 2, 0)}, SimTime::fromSeconds(1));
+    traffic::NeighbourGrid grid;
+    grid.build(first, 100);
+    const EvaluationContext ctx(first, grid);
+    EXPECT_FALSE(c.flagsFor(first));
+    c.prepare(ctx);
+    EXPECT_TRUE(c.flagsFor(first));
+    EXPECT_EQ(c.test(ctx, 0).isTrue(), false);
+    EXPECT_EQ(c.test(ctx, 1).isTrue(), true);
+    EXPECT_EQ(c.test(ctx, 2).isTrue(), false);
+
+    // The same vehicles a step later (the snapshot refilled, its id list kept) keep their flags.
+    first.assign({car("c", 5, 0), car("b", 6, 0), car("a", 7, 0)}, SimTime::fromSeconds(2));
+    EXPECT_TRUE(c.flagsFor(first));
+    EXPECT_EQ(c.test(ctx, 1).isTrue(), true);
+
+    // Another list of the same length, unprepared: answered by its own ids, not the old flags.
+    traffic::VehicleSnapshot other;
+    other.assign({car("b", 0, 0), car("c", 1, 0), car("d", 2, 0)}, SimTime::fromSeconds(2));
+    traffic::NeighbourGrid otherGrid;
+    otherGrid.build(other, 100);
+    const EvaluationContext otherCtx(other, otherGrid);
+    EXPECT_FALSE(c.flagsFor(other));
+    EXPECT_EQ(c.test(otherCtx, 0).isTrue(), true);
+    EXPECT_EQ(c.test(otherCtx, 1).isTrue(), false);
+    EXPECT_EQ(c.test(otherCtx, 2).isTrue(), true);
+    c.prepare(otherCtx);
+    EXPECT_TRUE(c.flagsFor(other));
+    EXPECT_EQ(c.test(otherCtx, 0).isTrue(), true);
+    EXPECT_EQ(c.test(otherCtx, 1).isTrue(), false);
+    EXPECT_EQ(c.test(otherCtx, 2).isTrue(), true);
+}
+
 TEST(PolygonCondition, UsesTheFrontBumperAndExcludesTheBoundary) {
     PolygonCondition c({V(0, 0), V(100, 0), V(100, 50), V(0, 50)});
     Scene scene({

@@ -25,14 +25,23 @@ Footprint Footprint::fromSumo(const Eigen::Vector2d& frontBumper, double sumoAng
 Footprint Footprint::turned(double distance, double curvature) const {
     const double angle = curvature * distance;  // radians turned, counter-clockwise
     const double sin = std::sin(angle);
+    Footprint f = *this;
+    f.centre_ = centreOnArc(angle, sin, curvature);
+    f.heading_ = std::cos(angle) * heading_ + sin * -right();  // turned left by `angle`
+    return f;
+}
+
+Eigen::Vector2d Footprint::turnedCentre(double distance, double curvature) const {
+    const double angle = curvature * distance;
+    return centreOnArc(angle, std::sin(angle), curvature);
+}
+
+Eigen::Vector2d Footprint::centreOnArc(double angle, double sin, double curvature) const {
     const double halfSin = std::sin(0.5 * angle);
     const Eigen::Vector2d left = -right();
-    Footprint f = *this;
     // The exact circle: sin(κs)/κ along the heading, (1 - cos κs)/κ = 2 sin²(κs/2)/κ to the left
     // (the half-angle form keeps precision on gentle curves, where 1 - cos κs cancels).
-    f.centre_ += (sin / curvature) * heading_ + (2 * halfSin * halfSin / curvature) * left;
-    f.heading_ = std::cos(angle) * heading_ + sin * left;
-    return f;
+    return centre_ + ((sin / curvature) * heading_ + (2 * halfSin * halfSin / curvature) * left);
 }
 
 std::array<Eigen::Vector2d, 4> Footprint::corners() const {

@@ -43,12 +43,17 @@ public:
     /// (1/m, positive turning left, i.e. counter-clockwise; not 0) that starts at its centre
     /// along its heading; the heading turns with the arc.
     Footprint turned(double distance, double curvature) const;
+    /// turned(distance, curvature).centre(), without working out the heading (no cosine).
+    Eigen::Vector2d turnedCentre(double distance, double curvature) const;
     /// The footprint after `seconds` at constant `speed` (m/s) along that arc.
     Footprint turnedFor(double speed, double curvature, double seconds) const {
         return turned(speed * seconds, curvature);
     }
 
 private:
+    /// The centre after turning `angle` radians (sin: its sine) on the arc of `curvature`.
+    Eigen::Vector2d centreOnArc(double angle, double sin, double curvature) const;
+
     Eigen::Vector2d centre_;
     Eigen::Vector2d heading_;
     double halfLength_;

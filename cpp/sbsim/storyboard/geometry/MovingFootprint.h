@@ -52,6 +52,12 @@ struct MovingFootprint {
         return curvature == 0 ? footprint.movedFor(speed, seconds) : footprint.turnedFor(speed, curvature, seconds);
     }
 
+    /// at(seconds).centre(), without the heading.
+    Eigen::Vector2d centreAt(double seconds) const {
+        return curvature == 0 ? footprint.movedFor(speed, seconds).centre()
+                              : footprint.turnedCentre(speed * seconds, curvature);
+    }
+
     Footprint footprint;
     double speed;      ///< m/s along the heading (negative: backwards)
     double curvature;  ///< 1/m, positive turning left; 0: straight

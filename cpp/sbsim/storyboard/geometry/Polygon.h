@@ -15,10 +15,14 @@ public:
 
     const std::vector<Eigen::Vector2d>& vertices() const { return vertices_; }
     bool contains(const Eigen::Vector2d& p) const;
+    /// Whether the ring is its own bounding box (four corners, edges along the axes): then a point
+    /// is inside exactly when it is strictly inside the box, which contains() answers at once.
+    bool isBox() const { return box_; }
 
 private:
     std::vector<Eigen::Vector2d> vertices_;
     Eigen::Vector2d min_, max_;  // bounding box, for a quick rejection
+    bool box_ = false;
 };
 
 }  // namespace sbsim::storyboard::geometry
