@@ -188,6 +188,36 @@ TEST(DiscMedium, MessageToAVehicleThatLeftBeforeDeliveryIsDropped) {
     EXPECT_EQ(b->callsAfterFinish + c->callsAfterFinish, 0);
 }
 
+// At 0.1 s steps a sender's neighbours come from lists kept across steps and its receivers stay
+// one list while they are the same: each frame still reaches exactly the stations in range at its
+// step, when one drives in and out of range, one jumps from far away (past the lists' skin), one
+// joins the run, and the receivers are unchanged for several steps in between.
+TEST(DiscMedium, KeptNeighbourhoodsAndListsFollowEachStep) {
+    Harness h(kAllButBare, disc(100));
+    const double in[] = {150, 150, 50, 50, 50, 150, 150, 50, 50, 50};  // c: in range at steps 3-5 and 8-10
+    for (int k = 1; k <= 10; ++k) {
+        std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("a", 50, 0), vehicle("c", in[k - 1], 0),
+                                                          vehicle("e", k < 6 ? 3000 : 60, 0), vehicle("s")};
+        if (k >= 7) vehicles.push_back(vehicle("d", -40, 0));  // joins at step 7
+        for (int b = 0; b < 30; ++b) vehicles.push_back(vehicle("bare" + std::to_string(b), 30.0 * b, 500 + 90.0 * b));
+        const SimTime t = secs(1 + 0.1 * k);
+        h.step(t, std::move(vehicles));
+        sendAt(h, t, "s", "Ping", k);
+    }
+    h.sim.run(secs(3));
+    const auto heard = [&](const std::string& id) {
+        std::vector<int> seqs;
+        if (const ProbeRecord* r = h.log.find(id))
+            for (const Indication& i : r->indications) seqs.push_back(i.seq);
+        return seqs;
+    };
+    EXPECT_EQ(heard("a"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+    EXPECT_EQ(heard("c"), (std::vector<int>{3, 4, 5, 8, 9, 10}));
+    EXPECT_EQ(heard("e"), (std::vector<int>{6, 7, 8, 9, 10})) << "a jump from 3 km into range";
+    EXPECT_EQ(heard("d"), (std::vector<int>{7, 8, 9, 10})) << "a vehicle that joined";
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {10, 25}}}));
+}
+
 // Without packet errors or a trace a frame takes its sender's receivers of the step (taken once
 // per step and module change) instead of visiting each link: the same stations hear the same
 // frames in the same order, with the same counts per distance bin, as with a trace (which visits
