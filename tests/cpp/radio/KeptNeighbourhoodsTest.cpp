@@ -6,8 +6,8 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -100,7 +100,16 @@ TEST(KeptNeighbourhoods, AVehicleThatMovesPastTheSkinIsFound) {
     kept.within(0, got);
     EXPECT_EQ(got, (std::vector<Index>{1}));
     expectAllMatch(kept, p, 1);
-    EXPECT_EQ(kept.epochs(), 2u) << "a move past the skin starts the lists again";
+    EXPECT_EQ(kept.epochs(), 1u) << "one jump: a new reference for it, not new lists for all";
+    // It jumps back (its old place and its first new one both stale): found there, not twice.
+    fleet.xs[1] = 400;
+    fleet.xs[2] = 420;
+    p = fleet.positions();
+    kept.update(p, fleet.keys, false);
+    got.clear();
+    kept.within(2, got);
+    EXPECT_EQ(got, (std::vector<Index>{1}));
+    expectAllMatch(kept, p, 2);
 
     // Two vehicles that each move a little less than half the skin towards each other: kept lists
     // (no new epoch) and still found.

@@ -22,6 +22,7 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
         if (keyToCurrent_.size() <= top) {
             keyToCurrent_.resize(top + 1, -1);
             hasReference_.resize(top + 1, 0);
+            moved_.resize(top + 1, 0);
             referenceX_.resize(top + 1);
             referenceY_.resize(top + 1);
         }
@@ -37,26 +38,35 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
                 newcomers_.push_back(k);
             }
         }
-        for (std::size_t e = 0; e < epochKeys_.size(); ++e) epochToCurrent_[e] = keyToCurrent_[epochKeys_[e]];
+        for (std::size_t e = 0; e < epochKeys_.size(); ++e) {
+            const Key k = epochKeys_[e];
+            epochToCurrent_[e] = moved_[k] ? -1 : keyToCurrent_[k];
+        }
     }
     if (epochs_ == 0) return startEpoch();
-    // A pair (i, j) missing from i's list was more than radius + skin apart at the references: it is
-    // within the radius now only if |moved i| + |moved j| > skin. The two largest moves bound every pair.
-    double first = 0, second = 0;
+    // A pair (i, j) is within the radius only if its references are within radius + skin while
+    // neither moved more than half the skin from its reference. One that did (a fast vehicle, a
+    // jump: SUMO's teleports) takes its position as its new reference, as a newcomer: found by the
+    // others through the newcomers, its own list made again, no longer found by its old place.
+    const double half = skin_ / 2 * (1 - 1e-9) - 1e-9 * reach_;  // a margin far above the rounding
     for (Index i = 0; i < n; ++i) {
         const Key k = keys[static_cast<std::size_t>(i)];
         const double dx = positions(0, i) - referenceX_[k];
         const double dy = positions(1, i) - referenceY_[k];
-        const double moved = std::sqrt(dx * dx + dy * dy);
-        if (!(moved <= first)) {  // NaN too: then the sum below fails and the epoch restarts
-            second = first;
-            first = moved;
-        } else if (moved > second) {
-            second = moved;
+        if (dx * dx + dy * dy <= half * half) continue;  // NaN: moved
+        referenceX_[k] = positions(0, i);
+        referenceY_[k] = positions(1, i);
+        newcomers_.push_back(k);
+        if (k < lists_.size()) lists_[k].epoch = 0;
+        if (!moved_[k]) {
+            moved_[k] = 1;
+            const auto e = std::lower_bound(epochKeysSorted_.begin(), epochKeysSorted_.end(), std::pair{k, Index{0}},
+                                            [](const auto& a, const auto& b) { return a.first < b.first; });
+            if (e != epochKeysSorted_.end() && e->first == k) epochToCurrent_[static_cast<std::size_t>(e->second)] = -1;
         }
     }
-    // A margin far above the rounding of the distances above and of the grid's test.
-    if (!(first + second <= skin_ * (1 - 1e-9) - 1e-9 * reach_)) startEpoch();
+    // Many newcomers make every list's scan of them long: all lists start again.
+    if (newcomers_.size() > 64 + static_cast<std::size_t>(n) / 8) startEpoch();
 }
 
 void KeptNeighbourhoods::startEpoch() {
@@ -70,17 +80,21 @@ void KeptNeighbourhoods::startEpoch() {
         if (keyToCurrent_[k] < 0 && k < lists_.size()) lists_[k] = List{};
     }
     std::fill(hasReference_.begin(), hasReference_.end(), 0);
+    std::fill(moved_.begin(), moved_.end(), 0);
     newcomers_.clear();
     epochPositions_ = positions;
     epochKeys_.assign(keys_.begin(), keys_.end());
     epochToCurrent_.resize(epochKeys_.size());
+    epochKeysSorted_.resize(epochKeys_.size());
     for (std::size_t i = 0; i < epochKeys_.size(); ++i) {
         const Key k = epochKeys_[i];
         epochToCurrent_[i] = static_cast<Index>(i);
+        epochKeysSorted_[i] = {k, static_cast<Index>(i)};
         hasReference_[k] = 1;
         referenceX_[k] = positions(0, static_cast<Index>(i));
         referenceY_[k] = positions(1, static_cast<Index>(i));
     }
+    std::sort(epochKeysSorted_.begin(), epochKeysSorted_.end());
     // Cells of a quarter of the reach, as the disc model's grid.
     epochGrid_.build(epochPositions_, reach_ > 0 ? reach_ / 4 : 1.0);
 }
@@ -118,15 +132,17 @@ void KeptNeighbourhoods::within(Index i, std::vector<Index>& out) {
         return dx * dx + dy * dy <= r2;
     };
     const std::size_t start = out.size();
-    bool ascending = true;
-    Index last = -1;
+    // Branch-free: every candidate written, the cursor advanced for those kept (a candidate gone
+    // or moved maps to -1, read as i itself, which is never kept).
+    out.resize(start + list.epochOthers.size());
+    Index* w = out.data() + start;
     for (const Index e : list.epochOthers) {
-        const Index j = epochToCurrent_[static_cast<std::size_t>(e)];
-        if (j < 0 || j == i || !near(j)) continue;
-        ascending = ascending && j > last;
-        last = j;
-        out.push_back(j);
+        Index j = epochToCurrent_[static_cast<std::size_t>(e)];
+        j = j < 0 ? i : j;
+        *w = j;
+        w += static_cast<int>(j != i) & static_cast<int>(near(j));
     }
+    out.resize(static_cast<std::size_t>(w - out.data()));
     const std::size_t middle = out.size();
     for (const Key k : list.newcomers) {
         const Index j = keyToCurrent_[k];
@@ -134,12 +150,16 @@ void KeptNeighbourhoods::within(Index i, std::vector<Index>& out) {
     }
     const auto first = out.begin() + static_cast<std::ptrdiff_t>(start);
     const auto mid = out.begin() + static_cast<std::ptrdiff_t>(middle);
-    if (!ascending) {
+    if (mid != out.end()) {
+        // A vehicle may be a newcomer twice (it moved again): once in the answer.
+        std::sort(mid, out.end());
+        out.erase(std::unique(mid, out.end()), out.end());
+    }
+    if (!std::is_sorted(first, mid)) {
         // Keys whose order is not the positions' order from step to step: correct, only slower.
         std::sort(first, out.end());
-    } else if (mid != out.end()) {
-        std::sort(mid, out.end());
-        std::inplace_merge(first, mid, out.end());
+    } else {
+        std::inplace_merge(first, out.begin() + static_cast<std::ptrdiff_t>(middle), out.end());
     }
 }
 

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "sbsim/kernel/Export.h"
@@ -11,9 +12,9 @@
 namespace sbsim::radio {
 
 /// Each vehicle's neighbours within a radius, from lists kept across steps (molecular dynamics'
-/// Verlet lists): a vehicle's list holds the vehicles within radius + skin of it at the list's
-/// reference positions, and stays complete while no two vehicles together moved more than the
-/// skin since theirs. Then a step only filters the kept lists by the exact distance, instead of a
+/// Verlet lists): a vehicle's list holds the vehicles within radius + skin of it at their
+/// reference positions, and stays complete while no vehicle is more than half the skin from its
+/// reference. Then a step only filters the kept lists by the exact distance, instead of a
 /// grid query, a sort and the distances per sender: at 0.1 s steps a vehicle moves a few metres a
 /// step, so a list lasts many steps.
 ///
@@ -21,9 +22,10 @@ namespace sbsim::radio {
 /// (NeighbourGrid's test), ascending, whatever the lists hold.
 ///
 /// Vehicles are known across steps by a key (any stable, dense number per vehicle id: the medium's
-/// station index). All lists start again (an epoch) when the two largest displacements since the
-/// reference positions add up to more than the skin. A vehicle that comes during an epoch takes its
-/// first position as its reference, and is found by the lists through a short list of newcomers.
+/// station index). A vehicle that comes during an epoch takes its first position as its
+/// reference, and one that moved more than half the skin from its reference takes its position as
+/// its new one: the lists find both through a short list of newcomers. All lists start again (an
+/// epoch) when that list grows long.
 class SBSIM_API KeptNeighbourhoods {
 public:
     using Index = traffic::NeighbourGrid::Index;
@@ -68,6 +70,8 @@ private:
     // Per key: its reference position (set: hasReference_), and its current index (or -1).
     std::vector<double> referenceX_, referenceY_;
     std::vector<unsigned char> hasReference_;
+    std::vector<unsigned char> moved_;  // took a new reference during the epoch (then among the newcomers)
+    std::vector<std::pair<Key, Index>> epochKeysSorted_;  // (key, reference index), by key
     std::vector<Index> keyToCurrent_;
     std::vector<Key> newcomers_;  // keys that came during the epoch, in order of arrival
     std::vector<List> lists_;     // by key
