@@ -260,6 +260,34 @@ TEST(DiscMedium, AFrameReachesTheSameStationsTracedOrNot) {
     EXPECT_GT(std::get<3>(plain), 100u);
 }
 
+// A frame that takes its sender's receivers counts them per 50 m bin without a division per link:
+// at and around the bins' edges (one ulp either side) the counts are those of the traced run, which
+// counts each link as Medium::countLink does.
+TEST(DiscMedium, DistanceBinsAtTheirEdgesCountAsPerLink) {
+    struct Quiet : radio::MessageTrace {
+        void record(const radio::TraceLine&, SimTime) override {}
+    } quiet;
+    const auto run = [&](bool traced) {
+        Harness h(kAllButBare, disc(400));
+        std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("s")};
+        int n = 0;
+        for (const double edge : {50.0, 100.0, 150.0, 200.0, 250.0, 300.0, 350.0, 400.0}) {
+            for (const double x : {std::nextafter(edge, 0.0), edge, std::nextafter(edge, 1000.0)})
+                vehicles.push_back(vehicle("r" + std::to_string(n++), x, 0));
+            vehicles.push_back(vehicle("r" + std::to_string(n++), edge * 0.6, edge * 0.8));  // 3-4-5: exact
+        }
+        if (traced) h.medium.setTrace(&quiet);
+        h.step(secs(1), vehicles);
+        sendAt(h, secs(1), "s", "Ping", 1);
+        h.sim.run(secs(2));
+        const auto& c = h.medium.counts().at("Ping");
+        return std::make_pair(c.linkStations, c.linkReceptions);
+    };
+    const auto plain = run(false);
+    EXPECT_EQ(plain, run(true));
+    EXPECT_EQ(plain.first, (std::vector<std::uint64_t>{1, 4, 4, 4, 4, 4, 4, 4, 2}));
+}
+
 // --- packet errors ---------------------------------------------------------------------------
 
 TEST(DiscSettings, InvalidSettingsAreRejected) {

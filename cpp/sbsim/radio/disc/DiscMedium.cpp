@@ -1,6 +1,7 @@
 #include "sbsim/radio/disc/DiscMedium.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -206,8 +207,13 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
 void DiscMedium::takeReceivers(Neighbourhood& near) {
     std::vector<Receiver*>& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
-    receivers.clear();
-    stations.clear();
+    receivers.resize(near.others.size());
+    stations.resize(near.others.size());
+    std::size_t taken = 0;
+    // Counted per bin in a small array while the range has few bins (no growth check per link).
+    constexpr std::size_t kFewBins = 64;
+    std::array<std::uint64_t, kFewBins> few{};
+    const bool fewBins = settings_.range / kDistanceBin < kFewBins - 1;
     near.perBin.clear();
     for (std::size_t k = 0; k < near.others.size(); ++k) {
         const auto other = near.others[k];
@@ -218,12 +224,30 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
             receiverKnown_[other] = 1;
         }
         if (receivers_[other] == nullptr) continue;  // a vehicle without services
-        receivers.push_back(receivers_[other]);
-        stations.push_back(stationIndices_[other]);
+        receivers[taken] = receivers_[other];
+        stations[taken] = stationIndices_[other];
+        ++taken;
         if (!(distance >= 0)) continue;  // as Medium::countLink
-        const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
+        // distance / kDistanceBin, as Medium::countLink, without a division per link: a product
+        // lands in the same bin unless it is within a hair of a bin's edge (then divided).
+        const double scaled = distance * (1 / kDistanceBin);
+        auto bin = static_cast<std::size_t>(scaled);
+        const double within = scaled - static_cast<double>(bin);
+        if (within < 1e-9 || within > 1 - 1e-9) bin = static_cast<std::size_t>(distance / kDistanceBin);
+        if (fewBins && bin < kFewBins) {
+            ++few[bin];
+            continue;
+        }
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
+    }
+    receivers.resize(taken);
+    stations.resize(taken);
+    if (fewBins) {
+        std::size_t bins = kFewBins;
+        while (bins > 0 && few[bins - 1] == 0) --bins;
+        if (near.perBin.size() < bins) near.perBin.resize(bins);
+        for (std::size_t b = 0; b < bins; ++b) near.perBin[b] += few[b];
     }
     near.receiversKnown = true;
     near.receiversChanges = receiversChanges_;
