@@ -178,6 +178,40 @@ TEST(KeptNeighbourhoods, KeysOutOfThePositionsOrderStillAnswerAscending) {
     }
 }
 
+TEST(KeptNeighbourhoods, ListsThatRestartAtEveryStepDoNotLast) {
+    // 100 vehicles that all move 50 m (past half the 20 m skin) each update: the newcomers
+    // overflow, epochs last a step or two, and the lists say they do not pay; answers stay exact.
+    Fleet fleet;
+    for (Key k = 0; k < 100; ++k) {
+        fleet.keys.push_back(k);
+        fleet.xs.push_back(25.0 * k);
+        fleet.ys.push_back(0);
+    }
+    KeptNeighbourhoods kept(100, 20);
+    EXPECT_TRUE(kept.lasting(4)) << "until an epoch finished";
+    for (int s = 0; s < 6; ++s) {
+        for (double& x : fleet.xs) x += 50;
+        const Eigen::Matrix2Xd p = fleet.positions();
+        kept.update(p, fleet.keys, s == 0);
+        expectAllMatch(kept, p, s);
+    }
+    EXPECT_FALSE(kept.lasting(4));
+    // Then still: epochs last again.
+    for (int s = 0; s < 12; ++s) {
+        const Eigen::Matrix2Xd p = fleet.positions();
+        kept.update(p, fleet.keys, false);
+        expectAllMatch(kept, p, 100 + s);
+    }
+    EXPECT_FALSE(kept.lasting(4)) << "the still epoch has not finished yet";
+    fleet.xs[0] += 500;
+    for (double& x : fleet.xs) x += 500;
+    const Eigen::Matrix2Xd p = fleet.positions();
+    kept.update(p, fleet.keys, false);
+    kept.update(p, fleet.keys, false);
+    expectAllMatch(kept, p, 200);
+    EXPECT_TRUE(kept.lasting(4));
+}
+
 TEST(KeptNeighbourhoods, RejectsABadSkin) {
     EXPECT_THROW(KeptNeighbourhoods(100, 0), std::invalid_argument);
     EXPECT_THROW(KeptNeighbourhoods(100, std::numeric_limits<double>::infinity()), std::invalid_argument);

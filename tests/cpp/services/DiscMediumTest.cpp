@@ -260,6 +260,33 @@ TEST(DiscMedium, AFrameReachesTheSameStationsTracedOrNot) {
     EXPECT_GT(std::get<3>(plain), 100u);
 }
 
+// Vehicles that all move far each step (the kept lists restart at nearly every step, and the
+// medium then takes each step's grid instead): each frame still reaches exactly the stations in range.
+TEST(DiscMedium, NeighboursFollowVehiclesThatAllMoveFarEachStep) {
+    Harness h(kAllButBare, disc(100));
+    for (int k = 1; k <= 12; ++k) {
+        const double spacing = k % 2 == 0 ? 30 : 45;  // v1..v3 in range, or v1..v2
+        std::vector<VehicleSnapshot::Vehicle> vehicles;
+        for (int i = 0; i < 80; ++i)
+            vehicles.push_back(vehicle("v" + std::to_string(100 + i), 1000.0 * k + spacing * i, 0));
+        const SimTime t = secs(1 + 0.1 * k);
+        h.step(t, std::move(vehicles));
+        sendAt(h, t, "v100", "Ping", k);
+    }
+    h.sim.run(secs(3));
+    const auto heard = [&](const std::string& id) {
+        std::vector<int> seqs;
+        if (const ProbeRecord* r = h.log.find(id))
+            for (const Indication& i : r->indications) seqs.push_back(i.seq);
+        return seqs;
+    };
+    EXPECT_EQ(heard("v101"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+    EXPECT_EQ(heard("v102"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+    EXPECT_EQ(heard("v103"), (std::vector<int>{2, 4, 6, 8, 10, 12}));
+    EXPECT_TRUE(heard("v104").empty());
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {12, 30}}}));
+}
+
 // A frame that takes its sender's receivers counts them per 50 m bin without a division per link:
 // at and around the bins' edges (one ulp either side) the counts are those of the traced run, which
 // counts each link as Medium::countLink does.

@@ -17,6 +17,9 @@ constexpr unsigned kMediumStream = 0x7632'7800;
 /// The kept neighbourhoods' skin, as a share of their radius: lists of 1.1² the disc's stations,
 /// rebuilt when two vehicles together moved a tenth of the range (50 m of the default 500 m).
 constexpr double kSkinShare = 0.1;
+/// Kept lists serve while their epochs last this many steps (0.1 s steps: tens); else (1 s steps:
+/// one or two) each sender's neighbours come from the step's grid.
+constexpr std::uint64_t kLastingUpdates = 4;
 }  // namespace
 
 DiscMedium::DiscMedium(DiscSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory)
@@ -153,7 +156,12 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
                 keptIdsVersion_ = idsVersion_;
             }
             near.others.clear();
-            kept_->within(*self, near.others);
+            if (kept_->lasting(kLastingUpdates)) {
+                kept_->within(*self, near.others);
+            } else {
+                buildGrid();
+                near.others = grid_.within(*self, radius);
+            }
             near.distance.resize(near.others.size());
             for (std::size_t k = 0; k < near.others.size(); ++k)
                 near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
@@ -181,12 +189,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
     } else {
         // A roadside unit sends about once a second: its neighbours are looked up afresh.
-        if (!gridBuilt_) {
-            // Cells of a quarter of the range: a neighbourhood scans about 1.6 times its disc, where
-            // cells of the range scan nearly three times it.
-            grid_.build(snapshot_, settings_.range / 4);
-            gridBuilt_ = true;
-        }
+        buildGrid();
         for (const auto other : grid_.around(from.x(), from.y(), radius)) {
             consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other],
                      (positions.col(other) - from).norm());
@@ -202,6 +205,14 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         stations.insert(stations.begin(), shareable->stations.begin(), shareable->stations.end());
     }
     deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
+}
+
+void DiscMedium::buildGrid() {
+    if (gridBuilt_) return;
+    // Cells of a quarter of the range: a neighbourhood scans about 1.6 times its disc, where cells
+    // of the range scan nearly three times it.
+    grid_.build(snapshot_, settings_.range / 4);
+    gridBuilt_ = true;
 }
 
 void DiscMedium::takeReceivers(Neighbourhood& near) {

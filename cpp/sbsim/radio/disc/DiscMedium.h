@@ -33,7 +33,8 @@ public:
 private:
     DiscSettings settings_;
     const traffic::VehicleSnapshot& snapshot_;
-    /// The step's grid, for a roadside unit's neighbours (built when one sends).
+    /// The step's grid, for a roadside unit's neighbours, and a vehicle's while kept lists do not
+    /// pay (built when first needed in a step).
     traffic::NeighbourGrid grid_;
     bool gridBuilt_ = false;
     std::optional<kernel::SimTime> gridTime_;  // the snapshot time of step_
@@ -76,6 +77,8 @@ private:
         std::shared_ptr<Recipients> recipients;
         std::vector<std::uint64_t> perBin;
     };
+    /// The step's grid_, once per step.
+    void buildGrid();
     /// `near`'s receivers in range, as of the current modules.
     void takeReceivers(Neighbourhood& near);
     std::vector<Neighbourhood> near_;

@@ -16,6 +16,7 @@ KeptNeighbourhoods::KeptNeighbourhoods(double radius, double skin)
 void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<const Key> keys, bool idsChanged) {
     positions_ = &positions;
     keys_ = keys;
+    ++epochUpdates_;
     const auto n = static_cast<Index>(keys.size());
     if (idsChanged || epochs_ == 0) {
         const Key top = keys.empty() ? 0 : *std::max_element(keys.begin(), keys.end());
@@ -70,6 +71,8 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
 }
 
 void KeptNeighbourhoods::startEpoch() {
+    if (epochs_ > 0) lastEpochUpdates_ = epochUpdates_;
+    epochUpdates_ = 0;
     ++epochs_;
     const Eigen::Matrix2Xd& positions = *positions_;
     // Lists of vehicles gone for good are freed; the others are rebuilt when next asked for.

@@ -46,6 +46,10 @@ public:
 
     /// Epochs started so far (for tests and figures).
     std::uint64_t epochs() const { return epochs_; }
+    /// Whether the lists pay: the last finished epoch lasted at least `updates` updates (vehicles
+    /// that move far each step, as at 1 s steps, restart them at nearly every step: a grid query
+    /// per sender is then cheaper). True until an epoch has finished.
+    bool lasting(std::uint64_t updates) const { return lastEpochUpdates_ == 0 || lastEpochUpdates_ >= updates; }
 
 private:
     struct List {
@@ -62,6 +66,8 @@ private:
     const Eigen::Matrix2Xd* positions_ = nullptr;
     std::span<const Key> keys_;
     std::uint64_t epochs_ = 0;
+    std::uint64_t epochUpdates_ = 0;      // updates in the current epoch
+    std::uint64_t lastEpochUpdates_ = 0;  // in the last finished one
     // The epoch's reference: the positions and keys of the vehicles at its start, indexed by a grid.
     Eigen::Matrix2Xd epochPositions_;
     std::vector<Key> epochKeys_;
