@@ -11,17 +11,16 @@
 
 namespace sbsim::traffic {
 
-void NeighbourGrid::build(const VehicleSnapshot& snapshot, double cellSize) {
+void NeighbourGrid::build(const Eigen::Matrix2Xd& positions, double cellSize) {
     if (!(cellSize > 0) || !std::isfinite(cellSize)) {
         throw std::invalid_argument(
             fmt::format("neighbour grid: cell size must be finite and > 0, not {:f}", cellSize));
     }
-    snapshot_ = &snapshot;
+    positions_ = &positions;
     cellSize_ = cellSize;
     inverseCellSize_ = 1 / cellSize;
 
-    const Index n = snapshot.size();
-    const Eigen::Matrix2Xd& positions = snapshot.positions();
+    const auto n = static_cast<Index>(positions.cols());
     const auto cellOf = [&](Index i) {
         return std::pair{cellCoordinate(positions(0, i), inverseCellSize_),
                          cellCoordinate(positions(1, i), inverseCellSize_)};

@@ -20,7 +20,10 @@ public:
 
     /// Indexes `snapshot` (kept by reference until the next build) with square cells of `cellSize` m.
     /// Throws std::invalid_argument unless cellSize is finite and > 0.
-    void build(const VehicleSnapshot& snapshot, double cellSize);
+    void build(const VehicleSnapshot& snapshot, double cellSize) { build(snapshot.positions(), cellSize); }
+    /// The same over bare positions (column i: point i's x, y), kept by reference until the next
+    /// build: a grid of positions that are no snapshot's (a medium's neighbourhoods kept across steps).
+    void build(const Eigen::Matrix2Xd& positions, double cellSize);
     double cellSize() const { return cellSize_; }
 
     /// Calls `visit(j)` for every vehicle j != i whose position is within `radius` of vehicle i's
@@ -36,7 +39,7 @@ public:
     /// the neighbours of a place rather than of a vehicle (a roadside unit's). Order unspecified.
     template <typename Visit>
     void forEachAround(double x, double y, double radius, Visit&& visit) const {
-        if (snapshot_ != nullptr) visitNear(x, y, radius, kNoVehicle, visit);
+        if (positions_ != nullptr) visitNear(x, y, radius, kNoVehicle, visit);
     }
     /// The indices of forEachAround, in ascending order.
     std::vector<Index> around(double x, double y, double radius) const;
@@ -78,7 +81,7 @@ private:
         return static_cast<std::size_t>(h >> shift_);
     }
 
-    const VehicleSnapshot* snapshot_ = nullptr;
+    const Eigen::Matrix2Xd* positions_ = nullptr;
     double cellSize_ = 0;
     double inverseCellSize_ = 0;
     unsigned shift_ = 63;                       // hashed: 64 - log2(bucket count)
@@ -93,15 +96,15 @@ private:
 
 template <typename Visit>
 void NeighbourGrid::forEachWithin(Index i, double radius, Visit&& visit) const {
-    if (snapshot_ == nullptr) return;
-    const Eigen::Matrix2Xd& positions = snapshot_->positions();
+    if (positions_ == nullptr) return;
+    const Eigen::Matrix2Xd& positions = *positions_;
     visitNear(positions(0, i), positions(1, i), radius, i, visit);
 }
 
 template <typename Visit>
 void NeighbourGrid::visitNear(double x, double y, double radius, Index i, Visit& visit) const {
     if (!(radius >= 0)) return;
-    const Eigen::Matrix2Xd& positions = snapshot_->positions();
+    const Eigen::Matrix2Xd& positions = *positions_;
     const double r2 = radius * radius;
     const auto near = [&](double px, double py) {
         const double dx = px - x;

@@ -188,6 +188,36 @@ TEST(DiscMedium, MessageToAVehicleThatLeftBeforeDeliveryIsDropped) {
     EXPECT_EQ(b->callsAfterFinish + c->callsAfterFinish, 0);
 }
 
+// At 0.1 s steps a sender's neighbours come from lists kept across steps and its receivers stay
+// one list while they are the same: each frame still reaches exactly the stations in range at its
+// step, when one drives in and out of range, one jumps from far away (past the lists' skin), one
+// joins the run, and the receivers are unchanged for several steps in between.
+TEST(DiscMedium, KeptNeighbourhoodsAndListsFollowEachStep) {
+    Harness h(kAllButBare, disc(100));
+    const double in[] = {150, 150, 50, 50, 50, 150, 150, 50, 50, 50};  // c: in range at steps 3-5 and 8-10
+    for (int k = 1; k <= 10; ++k) {
+        std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("a", 50, 0), vehicle("c", in[k - 1], 0),
+                                                          vehicle("e", k < 6 ? 3000 : 60, 0), vehicle("s")};
+        if (k >= 7) vehicles.push_back(vehicle("d", -40, 0));  // joins at step 7
+        for (int b = 0; b < 30; ++b) vehicles.push_back(vehicle("bare" + std::to_string(b), 30.0 * b, 500 + 90.0 * b));
+        const SimTime t = secs(1 + 0.1 * k);
+        h.step(t, std::move(vehicles));
+        sendAt(h, t, "s", "Ping", k);
+    }
+    h.sim.run(secs(3));
+    const auto heard = [&](const std::string& id) {
+        std::vector<int> seqs;
+        if (const ProbeRecord* r = h.log.find(id))
+            for (const Indication& i : r->indications) seqs.push_back(i.seq);
+        return seqs;
+    };
+    EXPECT_EQ(heard("a"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+    EXPECT_EQ(heard("c"), (std::vector<int>{3, 4, 5, 8, 9, 10}));
+    EXPECT_EQ(heard("e"), (std::vector<int>{6, 7, 8, 9, 10})) << "a jump from 3 km into range";
+    EXPECT_EQ(heard("d"), (std::vector<int>{7, 8, 9, 10})) << "a vehicle that joined";
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {10, 25}}}));
+}
+
 // Without packet errors or a trace a frame takes its sender's receivers of the step (taken once
 // per step and module change) instead of visiting each link: the same stations hear the same
 // frames in the same order, with the same counts per distance bin, as with a trace (which visits
@@ -228,6 +258,61 @@ TEST(DiscMedium, AFrameReachesTheSameStationsTracedOrNot) {
     EXPECT_EQ(plain, run(true));
     EXPECT_FALSE(std::get<0>(plain).at("late").empty());
     EXPECT_GT(std::get<3>(plain), 100u);
+}
+
+// Vehicles that all move far each step (the kept lists restart at nearly every step, and the
+// medium then takes each step's grid instead): each frame still reaches exactly the stations in range.
+TEST(DiscMedium, NeighboursFollowVehiclesThatAllMoveFarEachStep) {
+    Harness h(kAllButBare, disc(100));
+    for (int k = 1; k <= 12; ++k) {
+        const double spacing = k % 2 == 0 ? 30 : 45;  // v1..v3 in range, or v1..v2
+        std::vector<VehicleSnapshot::Vehicle> vehicles;
+        for (int i = 0; i < 80; ++i)
+            vehicles.push_back(vehicle("v" + std::to_string(100 + i), 1000.0 * k + spacing * i, 0));
+        const SimTime t = secs(1 + 0.1 * k);
+        h.step(t, std::move(vehicles));
+        sendAt(h, t, "v100", "Ping", k);
+    }
+    h.sim.run(secs(3));
+    const auto heard = [&](const std::string& id) {
+        std::vector<int> seqs;
+        if (const ProbeRecord* r = h.log.find(id))
+            for (const Indication& i : r->indications) seqs.push_back(i.seq);
+        return seqs;
+    };
+    EXPECT_EQ(heard("v101"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+    EXPECT_EQ(heard("v102"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+    EXPECT_EQ(heard("v103"), (std::vector<int>{2, 4, 6, 8, 10, 12}));
+    EXPECT_TRUE(heard("v104").empty());
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {12, 30}}}));
+}
+
+// A frame that takes its sender's receivers counts them per 50 m bin without a division per link:
+// at and around the bins' edges (one ulp either side) the counts are those of the traced run, which
+// counts each link as Medium::countLink does.
+TEST(DiscMedium, DistanceBinsAtTheirEdgesCountAsPerLink) {
+    struct Quiet : radio::MessageTrace {
+        void record(const radio::TraceLine&, SimTime) override {}
+    } quiet;
+    const auto run = [&](bool traced) {
+        Harness h(kAllButBare, disc(400));
+        std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("s")};
+        int n = 0;
+        for (const double edge : {50.0, 100.0, 150.0, 200.0, 250.0, 300.0, 350.0, 400.0}) {
+            for (const double x : {std::nextafter(edge, 0.0), edge, std::nextafter(edge, 1000.0)})
+                vehicles.push_back(vehicle("r" + std::to_string(n++), x, 0));
+            vehicles.push_back(vehicle("r" + std::to_string(n++), edge * 0.6, edge * 0.8));  // 3-4-5: exact
+        }
+        if (traced) h.medium.setTrace(&quiet);
+        h.step(secs(1), vehicles);
+        sendAt(h, secs(1), "s", "Ping", 1);
+        h.sim.run(secs(2));
+        const auto& c = h.medium.counts().at("Ping");
+        return std::make_pair(c.linkStations, c.linkReceptions);
+    };
+    const auto plain = run(false);
+    EXPECT_EQ(plain, run(true));
+    EXPECT_EQ(plain.first, (std::vector<std::uint64_t>{1, 4, 4, 4, 4, 4, 4, 4, 2}));
 }
 
 // --- packet errors ---------------------------------------------------------------------------

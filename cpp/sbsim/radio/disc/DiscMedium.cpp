@@ -1,6 +1,7 @@
 #include "sbsim/radio/disc/DiscMedium.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,12 @@ namespace sbsim::radio {
 namespace {
 /// A stream of its own, so radio losses never shift the storyboard's random draws.
 constexpr unsigned kMediumStream = 0x7632'7800;
+/// The kept neighbourhoods' skin, as a share of their radius: lists of 1.1² the disc's stations,
+/// rebuilt when two vehicles together moved a tenth of the range (50 m of the default 500 m).
+constexpr double kSkinShare = 0.1;
+/// Kept lists serve while their epochs last this many steps (0.1 s steps: tens); else (1 s steps:
+/// one or two) each sender's neighbours come from the step's grid.
+constexpr std::uint64_t kLastingUpdates = 4;
 }  // namespace
 
 DiscMedium::DiscMedium(DiscSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory)
@@ -44,6 +51,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         // frame finds its sender by the index stamp() looked up, not by a search among the names.
         idsVersion_ = snapshot_.idsVersion();
         const auto& ids = snapshot_.ids();
+        previousIndices_.swap(stationIndices_);
         stationIndices_.resize(ids.size());
         for (std::size_t i = 0; i < ids.size(); ++i) stationIndices_[i] = stationIndex(ids[i]);
         snapshotIndices_.assign(
@@ -51,6 +59,11 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             kNotInSnapshot);
         for (std::size_t i = 0; i < ids.size(); ++i)
             snapshotIndices_[stationIndices_[i]] = static_cast<traffic::VehicleSnapshot::Index>(i);
+        // The neighbourhoods of vehicles gone (for now) are freed: memory follows the vehicles alive.
+        for (const StationIndex gone : previousIndices_) {
+            if (gone < near_.size() && (gone >= snapshotIndices_.size() || snapshotIndices_[gone] == kNotInSnapshot))
+                near_[gone] = Neighbourhood{};
+        }
     }
     const StationIndex senderIndex = Medium::senderIndex(*message);
     const auto self = senderIndex < snapshotIndices_.size() && snapshotIndices_[senderIndex] != kNotInSnapshot
@@ -59,13 +72,10 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     const auto fixedSelf = self ? std::nullopt : fixed.indexOf(sender);
     if (!self && !fixedSelf) return;  // not on the road (yet): nobody hears it
     if (gridTime_ != snapshot_.time()) {
-        // Cells of a quarter of the range: a neighbourhood scans about 1.6 times its disc, where
-        // cells of the range scan nearly three times it.
-        grid_.build(snapshot_, settings_.range / 4);
         gridTime_ = snapshot_.time();
+        ++step_;
+        gridBuilt_ = false;
         receiverKnown_.clear();
-        for (Neighbourhood& n : near_) n.known = n.receiversKnown = false;
-        near_.resize(snapshot_.ids().size());
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
         fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));
@@ -136,13 +146,26 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     };
     // Vehicles first, ascending, then the stationary stations in the order they were added.
     if (self) {
-        Neighbourhood& near = near_[*self];
-        if (!near.known || near.radius != radius) {
-            near.others = grid_.within(*self, radius);
+        if (near_.size() <= senderIndex) near_.resize(senderIndex + 1);
+        Neighbourhood& near = near_[senderIndex];
+        if (near.step != step_ || near.radius != radius) {
+            if (!kept_ || kept_->radius() != radius) kept_.emplace(radius, radius * kSkinShare);
+            if (keptStep_ != step_ || kept_->epochs() == 0) {
+                kept_->update(positions, stationIndices_, keptIdsVersion_ != idsVersion_);
+                keptStep_ = step_;
+                keptIdsVersion_ = idsVersion_;
+            }
+            near.others.clear();
+            if (kept_->lasting(kLastingUpdates)) {
+                kept_->within(*self, near.others);
+            } else {
+                buildGrid();
+                near.others = grid_.within(*self, radius);
+            }
             near.distance.resize(near.others.size());
             for (std::size_t k = 0; k < near.others.size(); ++k)
                 near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
-            near.known = true;
+            near.step = step_;
             near.radius = radius;
             near.receiversKnown = false;
         }
@@ -166,6 +189,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
     } else {
         // A roadside unit sends about once a second: its neighbours are looked up afresh.
+        buildGrid();
         for (const auto other : grid_.around(from.x(), from.y(), radius)) {
             consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other],
                      (positions.col(other) - from).norm());
@@ -183,16 +207,24 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     deliverLater(shared, std::move(receivers), std::move(stations), settings_.latency);
 }
 
+void DiscMedium::buildGrid() {
+    if (gridBuilt_) return;
+    // Cells of a quarter of the range: a neighbourhood scans about 1.6 times its disc, where cells
+    // of the range scan nearly three times it.
+    grid_.build(snapshot_, settings_.range / 4);
+    gridBuilt_ = true;
+}
+
 void DiscMedium::takeReceivers(Neighbourhood& near) {
-    // Refilled in place unless a frame on the air or the certificate policy (the sender's last
-    // list) still holds them.
-    if (near.recipients == nullptr || near.recipients.use_count() > 1) near.recipients = std::make_shared<Recipients>();
-    std::vector<Receiver*>& receivers = near.recipients->receivers;
-    std::vector<StationIndex>& stations = near.recipients->stations;
-    receivers.clear();
-    stations.clear();
-    receivers.reserve(near.others.size());
-    stations.reserve(near.others.size());
+    std::vector<Receiver*>& receivers = scratch_.receivers;
+    std::vector<StationIndex>& stations = scratch_.stations;
+    receivers.resize(near.others.size());
+    stations.resize(near.others.size());
+    std::size_t taken = 0;
+    // Counted per bin in a small array while the range has few bins (no growth check per link).
+    constexpr std::size_t kFewBins = 64;
+    std::array<std::uint64_t, kFewBins> few{};
+    const bool fewBins = settings_.range / kDistanceBin < kFewBins - 1;
     near.perBin.clear();
     for (std::size_t k = 0; k < near.others.size(); ++k) {
         const auto other = near.others[k];
@@ -203,15 +235,45 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
             receiverKnown_[other] = 1;
         }
         if (receivers_[other] == nullptr) continue;  // a vehicle without services
-        receivers.push_back(receivers_[other]);
-        stations.push_back(stationIndices_[other]);
+        receivers[taken] = receivers_[other];
+        stations[taken] = stationIndices_[other];
+        ++taken;
         if (!(distance >= 0)) continue;  // as Medium::countLink
-        const auto bin = static_cast<std::size_t>(distance / kDistanceBin);
+        // distance / kDistanceBin, as Medium::countLink, without a division per link: a product
+        // lands in the same bin unless it is within a hair of a bin's edge (then divided).
+        const double scaled = distance * (1 / kDistanceBin);
+        auto bin = static_cast<std::size_t>(scaled);
+        const double within = scaled - static_cast<double>(bin);
+        if (within < 1e-9 || within > 1 - 1e-9) bin = static_cast<std::size_t>(distance / kDistanceBin);
+        if (fewBins && bin < kFewBins) {
+            ++few[bin];
+            continue;
+        }
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
     }
+    receivers.resize(taken);
+    stations.resize(taken);
+    if (fewBins) {
+        std::size_t bins = kFewBins;
+        while (bins > 0 && few[bins - 1] == 0) --bins;
+        if (near.perBin.size() < bins) near.perBin.resize(bins);
+        for (std::size_t b = 0; b < bins; ++b) near.perBin[b] += few[b];
+    }
     near.receiversKnown = true;
     near.receiversChanges = receiversChanges_;
+    // The same receivers as the sender's last list: that list again (the certificate policy then
+    // walks nothing). Else a new one, unless nobody else holds the last (frames on the air, the
+    // policy) and it can be refilled in place.
+    if (near.recipients != nullptr && near.recipients->stations == stations && near.recipients->receivers == receivers)
+        return;
+    if (near.recipients == nullptr || near.recipients.use_count() > 1) {
+        near.recipients = std::make_shared<Recipients>();
+        near.recipients->receivers.reserve(receivers.size());
+        near.recipients->stations.reserve(stations.size());
+    }
+    near.recipients->receivers.swap(receivers);
+    near.recipients->stations.swap(stations);
 }
 
 }  // namespace sbsim::radio

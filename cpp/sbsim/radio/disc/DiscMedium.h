@@ -10,6 +10,7 @@
 #include "sbsim/kernel/RandomStream.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/disc/DiscSettings.h"
+#include "sbsim/radio/disc/KeptNeighbourhoods.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -32,8 +33,17 @@ public:
 private:
     DiscSettings settings_;
     const traffic::VehicleSnapshot& snapshot_;
+    /// The step's grid, for a roadside unit's neighbours, and a vehicle's while kept lists do not
+    /// pay (built when first needed in a step).
     traffic::NeighbourGrid grid_;
-    std::optional<kernel::SimTime> gridTime_;
+    bool gridBuilt_ = false;
+    std::optional<kernel::SimTime> gridTime_;  // the snapshot time of step_
+    std::uint64_t step_ = 0;                   // counts the snapshot's steps seen
+    /// A vehicle's neighbours, from lists kept across steps (for one radius: the range, or the
+    /// trace range with a trace), updated at a step's first frame.
+    std::optional<KeptNeighbourhoods> kept_;
+    std::uint64_t keptStep_ = 0;
+    std::uint64_t keptIdsVersion_ = 0;
     /// Per snapshot index, the station's receiving side, looked up once per step (while no
     /// module joins or leaves): null while unknown or not a station.
     std::vector<Receiver*> receivers_;
@@ -42,16 +52,17 @@ private:
     /// step's grid is built (so a frame's receivers come in ascending indices, as the certificate
     /// policy's tables are sorted); per stationary station, the same.
     std::vector<StationIndex> stationIndices_;
-    std::uint64_t idsVersion_ = 0;  // the snapshot's idsVersion() that stationIndices_ follow
+    std::vector<StationIndex> previousIndices_;  // stationIndices_ before the ids last changed
+    std::uint64_t idsVersion_ = 0;               // the snapshot's idsVersion() that stationIndices_ follow
     /// Per stationIndex(), its vehicle's snapshot index, or kNotInSnapshot.
     std::vector<traffic::VehicleSnapshot::Index> snapshotIndices_;
     static constexpr auto kNotInSnapshot = static_cast<traffic::VehicleSnapshot::Index>(-1);
     std::vector<StationIndex> fixedIndices_;
     std::uint64_t receiversChanges_ = 0;
-    /// Per snapshot index, the stations within the visit radius and their distances, computed at
-    /// the sender's first frame of a step and reused by its others (a beacon sends several).
+    /// Per sender's stationIndex(), the stations within the visit radius and their distances,
+    /// computed at the sender's first frame of a step and reused by its others (a beacon sends several).
     struct Neighbourhood {
-        bool known = false;
+        std::uint64_t step = 0;  // step_ of `others`; 0: none
         double radius = 0;
         std::vector<traffic::NeighbourGrid::Index> others;
         std::vector<double> distance;
@@ -60,12 +71,18 @@ private:
         /// taken once per step and module change, so a frame copies them instead of visiting each link.
         bool receiversKnown = false;
         std::uint64_t receiversChanges = 0;
-        std::shared_ptr<Recipients> recipients;  // shared with the frames on the air
+        /// Shared with the frames on the air and held by the certificate policy as the sender's
+        /// last list: kept from step to step while the receivers stay the same, so the policy
+        /// finds the list it holds and walks nothing.
+        std::shared_ptr<Recipients> recipients;
         std::vector<std::uint64_t> perBin;
     };
+    /// The step's grid_, once per step.
+    void buildGrid();
     /// `near`'s receivers in range, as of the current modules.
     void takeReceivers(Neighbourhood& near);
     std::vector<Neighbourhood> near_;
+    Recipients scratch_;                            // takeReceivers' new list, compared with the last
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
 };
 

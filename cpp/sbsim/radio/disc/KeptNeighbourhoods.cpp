@@ -1,0 +1,169 @@
+#include "sbsim/radio/disc/KeptNeighbourhoods.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbsim::radio {
+
+KeptNeighbourhoods::KeptNeighbourhoods(double radius, double skin)
+    : radius_(radius), skin_(skin), reach_(radius + skin) {
+    if (!(radius >= 0) || !std::isfinite(radius))
+        throw std::invalid_argument("kept neighbourhoods: radius must be >= 0");
+    if (!(skin > 0) || !std::isfinite(skin)) throw std::invalid_argument("kept neighbourhoods: skin must be > 0");
+}
+
+void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<const Key> keys, bool idsChanged) {
+    positions_ = &positions;
+    keys_ = keys;
+    ++epochUpdates_;
+    const auto n = static_cast<Index>(keys.size());
+    if (idsChanged || epochs_ == 0) {
+        const Key top = keys.empty() ? 0 : *std::max_element(keys.begin(), keys.end());
+        if (keyToCurrent_.size() <= top) {
+            keyToCurrent_.resize(top + 1, -1);
+            hasReference_.resize(top + 1, 0);
+            moved_.resize(top + 1, 0);
+            referenceX_.resize(top + 1);
+            referenceY_.resize(top + 1);
+        }
+        std::fill(keyToCurrent_.begin(), keyToCurrent_.end(), -1);
+        for (Index i = 0; i < n; ++i) {
+            const Key k = keys[static_cast<std::size_t>(i)];
+            keyToCurrent_[k] = i;
+            if (!hasReference_[k]) {
+                // A newcomer: its first position is its reference for the rest of the epoch.
+                hasReference_[k] = 1;
+                referenceX_[k] = positions(0, i);
+                referenceY_[k] = positions(1, i);
+                newcomers_.push_back(k);
+            }
+        }
+        for (std::size_t e = 0; e < epochKeys_.size(); ++e) {
+            const Key k = epochKeys_[e];
+            epochToCurrent_[e] = moved_[k] ? -1 : keyToCurrent_[k];
+        }
+    }
+    if (epochs_ == 0) return startEpoch();
+    // A pair (i, j) is within the radius only if its references are within radius + skin while
+    // neither moved more than half the skin from its reference. One that did (a fast vehicle, a
+    // jump: SUMO's teleports) takes its position as its new reference, as a newcomer: found by the
+    // others through the newcomers, its own list made again, no longer found by its old place.
+    const double half = skin_ / 2 * (1 - 1e-9) - 1e-9 * reach_;  // a margin far above the rounding
+    for (Index i = 0; i < n; ++i) {
+        const Key k = keys[static_cast<std::size_t>(i)];
+        const double dx = positions(0, i) - referenceX_[k];
+        const double dy = positions(1, i) - referenceY_[k];
+        if (dx * dx + dy * dy <= half * half) continue;  // NaN: moved
+        referenceX_[k] = positions(0, i);
+        referenceY_[k] = positions(1, i);
+        newcomers_.push_back(k);
+        if (k < lists_.size()) lists_[k].epoch = 0;
+        if (!moved_[k]) {
+            moved_[k] = 1;
+            const auto e = std::lower_bound(epochKeysSorted_.begin(), epochKeysSorted_.end(), std::pair{k, Index{0}},
+                                            [](const auto& a, const auto& b) { return a.first < b.first; });
+            if (e != epochKeysSorted_.end() && e->first == k) epochToCurrent_[static_cast<std::size_t>(e->second)] = -1;
+        }
+    }
+    // Many newcomers make every list's scan of them long: all lists start again.
+    if (newcomers_.size() > 64 + static_cast<std::size_t>(n) / 8) startEpoch();
+}
+
+void KeptNeighbourhoods::startEpoch() {
+    if (epochs_ > 0) lastEpochUpdates_ = epochUpdates_;
+    epochUpdates_ = 0;
+    ++epochs_;
+    const Eigen::Matrix2Xd& positions = *positions_;
+    // Lists of vehicles gone for good are freed; the others are rebuilt when next asked for.
+    for (const Key k : epochKeys_) {
+        if (keyToCurrent_[k] < 0 && k < lists_.size()) lists_[k] = List{};
+    }
+    for (const Key k : newcomers_) {
+        if (keyToCurrent_[k] < 0 && k < lists_.size()) lists_[k] = List{};
+    }
+    std::fill(hasReference_.begin(), hasReference_.end(), 0);
+    std::fill(moved_.begin(), moved_.end(), 0);
+    newcomers_.clear();
+    epochPositions_ = positions;
+    epochKeys_.assign(keys_.begin(), keys_.end());
+    epochToCurrent_.resize(epochKeys_.size());
+    epochKeysSorted_.resize(epochKeys_.size());
+    for (std::size_t i = 0; i < epochKeys_.size(); ++i) {
+        const Key k = epochKeys_[i];
+        epochToCurrent_[i] = static_cast<Index>(i);
+        epochKeysSorted_[i] = {k, static_cast<Index>(i)};
+        hasReference_[k] = 1;
+        referenceX_[k] = positions(0, static_cast<Index>(i));
+        referenceY_[k] = positions(1, static_cast<Index>(i));
+    }
+    std::sort(epochKeysSorted_.begin(), epochKeysSorted_.end());
+    // Cells of a quarter of the reach, as the disc model's grid.
+    epochGrid_.build(epochPositions_, reach_ > 0 ? reach_ / 4 : 1.0);
+}
+
+bool KeptNeighbourhoods::reachable(Key a, Key b) const {
+    const double dx = referenceX_[a] - referenceX_[b];
+    const double dy = referenceY_[a] - referenceY_[b];
+    return dx * dx + dy * dy <= reach_ * reach_;
+}
+
+void KeptNeighbourhoods::within(Index i, std::vector<Index>& out) {
+    const Key self = keys_[static_cast<std::size_t>(i)];
+    if (lists_.size() <= self) lists_.resize(self + 1);
+    List& list = lists_[self];
+    if (list.epoch != epochs_) {
+        list.epoch = epochs_;
+        list.newcomers.clear();
+        list.newcomersSeen = 0;
+        // Its reference: its place at the epoch's start, or where a newcomer was first seen.
+        list.epochOthers = epochGrid_.around(referenceX_[self], referenceY_[self], reach_);
+    }
+    for (; list.newcomersSeen < newcomers_.size(); ++list.newcomersSeen) {
+        const Key k = newcomers_[list.newcomersSeen];
+        if (k != self && reachable(self, k)) list.newcomers.push_back(k);
+    }
+
+    // NeighbourGrid's test, on the current positions.
+    const Eigen::Matrix2Xd& positions = *positions_;
+    const double x = positions(0, i);
+    const double y = positions(1, i);
+    const double r2 = radius_ * radius_;
+    const auto near = [&](Index j) {
+        const double dx = positions(0, j) - x;
+        const double dy = positions(1, j) - y;
+        return dx * dx + dy * dy <= r2;
+    };
+    const std::size_t start = out.size();
+    // Branch-free: every candidate written, the cursor advanced for those kept (a candidate gone
+    // or moved maps to -1, read as i itself, which is never kept).
+    out.resize(start + list.epochOthers.size());
+    Index* w = out.data() + start;
+    for (const Index e : list.epochOthers) {
+        Index j = epochToCurrent_[static_cast<std::size_t>(e)];
+        j = j < 0 ? i : j;
+        *w = j;
+        w += static_cast<int>(j != i) & static_cast<int>(near(j));
+    }
+    out.resize(static_cast<std::size_t>(w - out.data()));
+    const std::size_t middle = out.size();
+    for (const Key k : list.newcomers) {
+        const Index j = keyToCurrent_[k];
+        if (j >= 0 && j != i && near(j)) out.push_back(j);
+    }
+    const auto first = out.begin() + static_cast<std::ptrdiff_t>(start);
+    const auto mid = out.begin() + static_cast<std::ptrdiff_t>(middle);
+    if (mid != out.end()) {
+        // A vehicle may be a newcomer twice (it moved again): once in the answer.
+        std::sort(mid, out.end());
+        out.erase(std::unique(mid, out.end()), out.end());
+    }
+    if (!std::is_sorted(first, mid)) {
+        // Keys whose order is not the positions' order from step to step: correct, only slower.
+        std::sort(first, out.end());
+    } else {
+        std::inplace_merge(first, out.begin() + static_cast<std::ptrdiff_t>(middle), out.end());
+    }
+}
+
+}  // namespace sbsim::radio
