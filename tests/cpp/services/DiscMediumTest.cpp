@@ -44,6 +44,19 @@ std::size_t received(const Harness& h, const std::string& vehicle) {
     return r == nullptr ? 0 : r->indications.size();
 }
 
+/// The sequence numbers `vehicle` heard, in the order it heard them.
+std::vector<int> heardSeqs(const Harness& h, const std::string& vehicle) {
+    std::vector<int> seqs;
+    if (const ProbeRecord* r = h.log.find(vehicle))
+        for (const Indication& i : r->indications) seqs.push_back(i.seq);
+    return seqs;
+}
+
+/// A trace that keeps nothing: its presence alone makes the medium visit each link.
+struct QuietTrace : radio::MessageTrace {
+    void record(const radio::TraceLine&, SimTime) override {}
+};
+
 using Counts = std::map<std::string, std::pair<std::uint64_t, std::uint64_t>>;
 Counts countsOf(const radio::DiscMedium& m) {
     Counts out;
@@ -205,12 +218,7 @@ TEST(DiscMedium, KeptNeighbourhoodsAndListsFollowEachStep) {
         sendAt(h, t, "s", "Ping", k);
     }
     h.sim.run(secs(3));
-    const auto heard = [&](const std::string& id) {
-        std::vector<int> seqs;
-        if (const ProbeRecord* r = h.log.find(id))
-            for (const Indication& i : r->indications) seqs.push_back(i.seq);
-        return seqs;
-    };
+    const auto heard = [&](const std::string& id) { return heardSeqs(h, id); };
     EXPECT_EQ(heard("a"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
     EXPECT_EQ(heard("c"), (std::vector<int>{3, 4, 5, 8, 9, 10}));
     EXPECT_EQ(heard("e"), (std::vector<int>{6, 7, 8, 9, 10})) << "a jump from 3 km into range";
@@ -223,9 +231,7 @@ TEST(DiscMedium, KeptNeighbourhoodsAndListsFollowEachStep) {
 // frames in the same order, with the same counts per distance bin, as with a trace (which visits
 // each link), with several frames a step and a station departing at the next.
 TEST(DiscMedium, AFrameReachesTheSameStationsTracedOrNot) {
-    struct Quiet : radio::MessageTrace {
-        void record(const radio::TraceLine&, SimTime) override {}
-    } quiet;
+    QuietTrace quiet;
     const auto run = [&](bool traced) {
         Harness h(kAllButBare, disc(300));
         if (traced) h.medium.setTrace(&quiet);
@@ -274,12 +280,7 @@ TEST(DiscMedium, NeighboursFollowVehiclesThatAllMoveFarEachStep) {
         sendAt(h, t, "v100", "Ping", k);
     }
     h.sim.run(secs(3));
-    const auto heard = [&](const std::string& id) {
-        std::vector<int> seqs;
-        if (const ProbeRecord* r = h.log.find(id))
-            for (const Indication& i : r->indications) seqs.push_back(i.seq);
-        return seqs;
-    };
+    const auto heard = [&](const std::string& id) { return heardSeqs(h, id); };
     EXPECT_EQ(heard("v101"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
     EXPECT_EQ(heard("v102"), (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
     EXPECT_EQ(heard("v103"), (std::vector<int>{2, 4, 6, 8, 10, 12}));
@@ -291,9 +292,7 @@ TEST(DiscMedium, NeighboursFollowVehiclesThatAllMoveFarEachStep) {
 // at and around the bins' edges (one ulp either side) the counts are those of the traced run, which
 // counts each link as Medium::countLink does.
 TEST(DiscMedium, DistanceBinsAtTheirEdgesCountAsPerLink) {
-    struct Quiet : radio::MessageTrace {
-        void record(const radio::TraceLine&, SimTime) override {}
-    } quiet;
+    QuietTrace quiet;
     const auto run = [&](bool traced) {
         Harness h(kAllButBare, disc(400));
         std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("s")};
