@@ -53,24 +53,89 @@ void LastHeard::hearList(List stations, kernel::SimTime now, kernel::SimTime sin
         pendingDirty_ = true;
         return;
     }
+    if (pending_ != nullptr && since.raw() <= pendingNs_ && differ(*stations)) {
+        // Kept stations are known and note `now` with the new list; gone ones get the held
+        // list's time first, so a station matched as gone and come reads it as a walk would.
+        if (pendingDirty_) write(gone_, pendingNs_);
+        walk(come_, now, since, unknown);
+        ++differences_;
+        pending_ = std::move(stations);
+        pendingNs_ = now.raw();
+        pendingDirty_ = true;
+        return;
+    }
     flush();
     walk(*stations, now, since, unknown);
     pending_ = std::move(stations);
     pendingNs_ = now.raw();
 }
 
+bool LastHeard::differ(std::span<const Index> stations) {
+    // Both lists come in a medium's order, which keeps the relative order of the stations that
+    // stay: matched in step, a mismatch resolved by a short look ahead on either side. Any
+    // matching is correct (a station matched only as gone and come is walked); a poor one costs.
+    constexpr std::size_t kAhead = 8;
+    const std::span<const Index> held(*pending_);
+    const std::size_t limit = stations.size() / 4 + 16;
+    gone_.clear();
+    come_.clear();
+    std::size_t i = 0;
+    std::size_t j = 0;
+    while (i < held.size() && j < stations.size()) {
+        if (held[i] == stations[j]) {
+            ++i;
+            ++j;
+            continue;
+        }
+        std::size_t goneRun = 0;  // held[i, i + goneRun) gone, then held matches stations[j]
+        for (std::size_t d = 1; d <= kAhead && i + d < held.size(); ++d) {
+            if (held[i + d] == stations[j]) {
+                goneRun = d;
+                break;
+            }
+        }
+        std::size_t comeRun = 0;  // stations[j, j + comeRun) come, then stations matches held[i]
+        for (std::size_t d = 1; d <= kAhead && j + d < stations.size(); ++d) {
+            if (stations[j + d] == held[i]) {
+                comeRun = d;
+                break;
+            }
+        }
+        if (goneRun != 0 && (comeRun == 0 || goneRun <= comeRun)) {
+            gone_.insert(gone_.end(), held.begin() + static_cast<std::ptrdiff_t>(i),
+                         held.begin() + static_cast<std::ptrdiff_t>(i + goneRun));
+            i += goneRun;
+        } else if (comeRun != 0) {
+            come_.insert(come_.end(), stations.begin() + static_cast<std::ptrdiff_t>(j),
+                         stations.begin() + static_cast<std::ptrdiff_t>(j + comeRun));
+            j += comeRun;
+        } else {
+            gone_.push_back(held[i++]);
+            come_.push_back(stations[j++]);
+        }
+        if (gone_.size() + come_.size() > limit) return false;
+    }
+    gone_.insert(gone_.end(), held.begin() + static_cast<std::ptrdiff_t>(i), held.end());
+    come_.insert(come_.end(), stations.begin() + static_cast<std::ptrdiff_t>(j), stations.end());
+    return gone_.size() + come_.size() <= limit;
+}
+
+void LastHeard::write(std::span<const Index> stations, kernel::SimTime::rep ns) {
+    std::size_t at = 0;
+    Index last = 0;
+    for (const Index station : stations) {
+        if (station < last) at = 0;
+        last = station;
+        at = seek(at, station);
+        if (at < stations_.size() && stations_[at] == station) heardNs_[at++] = ns;
+    }
+}
+
 void LastHeard::flush() {
     if (!pendingDirty_) return;
     pendingDirty_ = false;
     // The list's stations are all in the arrays (its first walk added them): a walk that writes.
-    std::size_t at = 0;
-    Index last = 0;
-    for (const Index station : *pending_) {
-        if (station < last) at = 0;
-        last = station;
-        at = seek(at, station);
-        if (at < stations_.size() && stations_[at] == station) heardNs_[at++] = pendingNs_;
-    }
+    write(*pending_, pendingNs_);
 }
 
 void LastHeard::settle() {
@@ -138,6 +203,8 @@ void LastHeard::forgetBefore(kernel::SimTime before) {
         stations_.shrink_to_fit();
         heardNs_.shrink_to_fit();
         std::vector<Index>().swap(newcomers_);
+        std::vector<Index>().swap(gone_);
+        std::vector<Index>().swap(come_);
     }
 }
 

@@ -21,7 +21,10 @@ namespace sbsim::radio {
 /// A list that comes again (hearList: a medium's receivers of a step, shared by the sender's
 /// frames of that step) is walked once: its repeats, which can find no station unknown, only note
 /// their time, written out when another list comes, and before hear(), hearAll() or
-/// forgetBefore() read the times. Answers are those of a walk per frame.
+/// forgetBefore() read the times. Another list that differs from the one held by a few stations
+/// (the sender's receivers of the next step) walks only the difference: its stations kept were
+/// heard at the held list's time, so they are known and only note the new one (as a repeat);
+/// those gone write the held time, those come are walked. Answers are those of a walk per frame.
 class SBSIM_API LastHeard {
 public:
     using Index = std::uint32_t;
@@ -42,6 +45,8 @@ public:
     void forgetBefore(kernel::SimTime before);
     /// Repeats of a list noted and not yet written (for tests).
     bool pending() const { return pendingDirty_; }
+    /// Lists taken by their difference from the one held (for tests).
+    std::size_t differences() const { return differences_; }
     std::size_t size() const { return stations_.size(); }
 
 private:
@@ -53,15 +58,22 @@ private:
     void flush();
     /// flush(), and the list dropped: the arrays are about to change otherwise.
     void settle();
+    /// Splits `stations` against `pending_` into gone_ (held only) and come_ (new only, in their
+    /// order), the rest matched in order; false when they differ by too many for this to pay.
+    bool differ(std::span<const Index> stations);
+    /// Writes `ns` as the time of each of `stations`, all in the arrays.
+    void write(std::span<const Index> stations, kernel::SimTime::rep ns);
     /// hearAll()'s walk, on arrays that hold every reception.
     void walk(std::span<const Index> stations, kernel::SimTime now, kernel::SimTime since, std::vector<Index>& unknown);
 
     std::vector<Index> stations_;                // ascending
     std::vector<kernel::SimTime::rep> heardNs_;  // as stations_
     std::vector<Index> newcomers_;               // scratch of hearAll
+    std::vector<Index> gone_, come_;             // scratch of hearList's difference
     List pending_;                               // the last list walked or noted (hearList)
     kernel::SimTime::rep pendingNs_ = 0;         // when it was heard last: every station of it at or after
     bool pendingDirty_ = false;                  // its stations' times in the arrays are older
+    std::size_t differences_ = 0;
 };
 
 }  // namespace sbsim::radio

@@ -135,6 +135,96 @@ TEST(LastHeard, RepeatsOfAListAnswerAsAWalkPerFrame) {
     for (const auto& [s, t] : reference) EXPECT_EQ(heard.hear(s, now + SimTime::fromSeconds(10)), t) << s;
 }
 
+// A sender's list of the next step: the last with a few stations gone and a few come (at random
+// places), now and then two neighbours swapped, a list reshuffled, a long pause, a frame of its
+// own, a single reception or forgetting between. The difference's path answers as a full walk per
+// frame (a LastHeard told by hearAll) and as a std::map, and leaves the same history.
+TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
+    for (const unsigned seed : {1u, 2u, 3u}) {
+        std::mt19937 random(seed);
+        LastHeard heard, walked;
+        std::map<Index, SimTime> reference;
+        const SimTime window = SimTime::fromMilliseconds(500);
+        std::vector<Index> current;
+        for (Index s = 0; s < 400; ++s) {
+            if (random() % 2 == 0) current.push_back(s);
+        }
+        SimTime now = SimTime::zero();
+        std::size_t lists = 0;
+        for (int step = 0; step < 600; ++step) {
+            const unsigned pick = random() % 40;
+            if (pick == 0) {
+                std::shuffle(current.begin(), current.end(), random);
+            } else if (pick == 1) {
+                current.clear();  // another neighbourhood entirely
+                for (Index s = 0; s < 400; ++s) {
+                    if (random() % 2 == 0) current.push_back(s);
+                }
+            } else {
+                // A few gone, a few come (stations not in the list, some heard before, some never).
+                for (unsigned gone = random() % 6; gone > 0 && !current.empty(); --gone)
+                    current.erase(current.begin() + static_cast<std::ptrdiff_t>(random() % current.size()));
+                for (unsigned come = random() % 6; come > 0; --come) {
+                    const Index s = static_cast<Index>(random() % 500);
+                    if (std::find(current.begin(), current.end(), s) != current.end()) continue;
+                    current.insert(current.begin() + static_cast<std::ptrdiff_t>(random() % (current.size() + 1)), s);
+                }
+                if (current.size() > 2 && random() % 4 == 0) {
+                    const std::size_t k = random() % (current.size() - 1);
+                    std::swap(current[k], current[k + 1]);
+                }
+            }
+            const auto list = std::make_shared<const std::vector<Index>>(current);
+            ++lists;
+            // Steps of 100 ms, frames 10 ms apart; a pause longer than the window now and then.
+            now = now + SimTime::fromMilliseconds(random() % 30 == 0 ? 650 : 100);
+            for (unsigned frame = 0, frames = 1 + random() % 10; frame < frames; ++frame) {
+                const SimTime at = now + SimTime::fromMilliseconds(10 * frame);
+                std::vector<Index> unknown, full;
+                heard.hearList(list, at, at - window, unknown);
+                walked.hearAll(*list, at, at - window, full);
+                ASSERT_EQ(unknown, full) << "seed " << seed << " step " << step << " frame " << frame;
+                std::vector<Index> expected;
+                for (const Index s : *list) {
+                    const auto it = reference.find(s);
+                    if (it == reference.end() || it->second < at - window) expected.push_back(s);
+                    reference[s] = at;
+                }
+                ASSERT_EQ(unknown, expected) << "seed " << seed << " step " << step << " frame " << frame;
+            }
+            const unsigned between = random() % 25;
+            const SimTime later = now + SimTime::fromMilliseconds(95);
+            if (between == 0) {
+                std::vector<Index> own{static_cast<Index>(random() % 500), 450, 460};
+                std::vector<Index> unknown, full;
+                heard.hearAll(own, later, later - window, unknown);
+                walked.hearAll(own, later, later - window, full);
+                ASSERT_EQ(unknown, full) << "seed " << seed << " step " << step << " (own frame)";
+                for (const Index s : own) reference[s] = later;
+            } else if (between == 1) {
+                const Index s = static_cast<Index>(random() % 500);
+                ASSERT_EQ(heard.hear(s, later), walked.hear(s, later)) << "seed " << seed << " station " << s;
+                reference[s] = later;
+            } else if (between == 2) {
+                const SimTime before = now - SimTime::fromMilliseconds(random() % 2 == 0 ? 300 : 5);
+                heard.forgetBefore(before);
+                walked.forgetBefore(before);
+                std::erase_if(reference, [&](const auto& entry) { return entry.second < before; });
+            }
+            ASSERT_EQ(heard.size(), walked.size()) << "seed " << seed << " step " << step;
+        }
+        // Most lists took the difference's path, and the history it left is the full walks'.
+        EXPECT_GT(heard.differences(), lists / 2) << "seed " << seed;
+        const SimTime end = now + SimTime::fromSeconds(10);
+        heard.forgetBefore(SimTime::zero());
+        ASSERT_EQ(heard.size(), reference.size());
+        for (const auto& [s, t] : reference) {
+            EXPECT_EQ(heard.hear(s, end), t) << "seed " << seed << " station " << s;
+            EXPECT_EQ(walked.hear(s, end), t) << "seed " << seed << " station " << s;
+        }
+    }
+}
+
 TEST(LastHeard, ARepeatAfterTheWindowFindsItsStationsUnknown) {
     LastHeard heard;
     const auto list = std::make_shared<const std::vector<Index>>(std::vector<Index>{2, 5, 9});
