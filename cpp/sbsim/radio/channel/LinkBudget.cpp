@@ -265,18 +265,17 @@ void LinkBudget::computeNeighbourhood(Slot s) {
         nKept += static_cast<std::size_t>(static_cast<int>(r >= 0) & static_cast<int>(r != s) &
                                           static_cast<int>(!cells_.beyondIndex(static_cast<std::size_t>(j), table)));
     };
-    if (index) {
-        if (far) {
-            grid_.forEachWithin(*index, radius, takeNear);
-        } else {
-            grid_.forEachWithin(*index, radius, take);
+    const auto visitGrid = [&](const auto& visit) {
+        if (index) {
+            grid_.forEachWithin(*index, radius, visit);
+        } else if (fixedSelf) {
+            grid_.forEachAround(fromX, fromY, radius, visit);
         }
-    } else if (fixedSelf) {
-        if (far) {
-            grid_.forEachAround(fromX, fromY, radius, takeNear);
-        } else {
-            grid_.forEachAround(fromX, fromY, radius, take);
-        }
+    };
+    if (far) {
+        visitGrid(takeNear);
+    } else {
+        visitGrid(take);
     }
     if (far) candidates.assign(keptData, keptData + nKept);
     near.farTested = far ? candidates.size() : 0;
