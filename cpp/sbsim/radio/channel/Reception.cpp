@@ -32,17 +32,8 @@ void Reception::growField(std::int32_t cell) {
     log_.resize(n * kLog, 0);
 }
 
-void Reception::prefetchMembers(const StepLinks& step, std::size_t k) const {
-    // A cell holds ~8 stations: fetching ahead within it would miss its first ones.
-    if (cells_ == nullptr || k >= step.farCell.size() || step.farUnits[k] == 0) return;
-    const auto [begin, end] = cells_->members(step.farCell[k]);
-    for (const Slot* r = begin; r != end; ++r) prefetch(*r);
-}
-
 void Reception::farStarts(const StepLinks& step) {
-    for (std::size_t k = 0; k < kCellsAhead; ++k) prefetchMembers(step, k);
     for (std::size_t k = 0; k < step.farCell.size(); ++k) {
-        prefetchMembers(step, k + kCellsAhead);
         const Units units = step.farUnits[k];
         if (units == 0) continue;
         const std::int32_t c = step.farCell[k];
@@ -59,6 +50,7 @@ void Reception::senseCell(std::int32_t cell) {
     if (cells_ == nullptr) return;
     const auto [begin, end] = cells_->members(cell);
     for (const Slot* r = begin; r != end; ++r) {
+        if (end - r > static_cast<std::ptrdiff_t>(kPrefetchAhead)) prefetch(r[kPrefetchAhead]);
         if (st_[*r].cell != cell) continue;  // not moved in yet (moveStations)
         const Units total = st_[*r].heard + field_[cell];
         // Units first (no conversion); setSensedPower decides in mW as everywhere else.
@@ -79,9 +71,7 @@ void Reception::moveStations(const FarCells& cells) {
 
 void Reception::farEnds(const StepLinks& step) {
     // A fall never raises a decoding station's largest interference: no log.
-    for (std::size_t k = 0; k < kCellsAhead; ++k) prefetchMembers(step, k);
     for (std::size_t k = 0; k < step.farCell.size(); ++k) {
-        prefetchMembers(step, k + kCellsAhead);
         if (step.farUnits[k] == 0) continue;
         field_[step.farCell[k]] -= step.farUnits[k];
         senseCell(step.farCell[k]);

@@ -47,7 +47,7 @@ public:
     void addStation();
     bool sensesBusy(Slot s) const { return st_[s].sensedBusy != 0; }
     bool sending(Slot s) const { return st_[s].sending != 0; }
-    /// How many receivers ahead a walk over a frame's receivers fetches
+    /// How many receivers ahead a walk over a frame's receivers (or a cell's members) fetches
     /// their records: each is a cache miss of its own, by slot.
     static constexpr std::size_t kPrefetchAhead = 8;
     /// Hints that station `s`'s record is read soon.
@@ -144,9 +144,6 @@ private:
     }
     /// Carrier sense of `cell`'s stations after its field changed.
     void senseCell(std::int32_t cell);
-    /// The far tier's cells of a frame are walked fetching the members of the one kCellsAhead on.
-    static constexpr std::size_t kCellsAhead = 2;
-    void prefetchMembers(const StepLinks& step, std::size_t k) const;
 
     Listener& listener_;
     FrameErrorTable fer_;
