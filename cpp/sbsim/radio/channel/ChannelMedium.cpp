@@ -258,9 +258,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
         }
     }
     std::size_t drawn = 0;
-    const std::size_t n = step.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        if (k + Reception::kPrefetchAhead < n) reception_.prefetch(step.receivers[k + Reception::kPrefetchAhead]);
+    for (std::size_t k = 0; k < step.size(); ++k) {
         if (step.tier[k] != StepLinks::kDrawn) {
             // Interference only: it leaves the power its receiver hears, and is lost below the
             // sensing threshold (or to half-duplex).

@@ -50,7 +50,6 @@ void Reception::senseCell(std::int32_t cell) {
     if (cells_ == nullptr) return;
     const auto [begin, end] = cells_->members(cell);
     for (const Slot* r = begin; r != end; ++r) {
-        if (end - r > static_cast<std::ptrdiff_t>(kPrefetchAhead)) prefetch(r[kPrefetchAhead]);
         if (st_[*r].cell != cell) continue;  // not moved in yet (moveStations)
         const Units total = st_[*r].heard + field_[cell];
         // Units first (no conversion); setSensedPower decides in mW as everywhere else.
@@ -112,9 +111,7 @@ void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>
     // Receivers one by one, in the step's order: carrier sense changes schedule events, so this
     // stays sequential.
     std::size_t j = 0;
-    const std::size_t n = step.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        if (k + kPrefetchAhead < n) prefetch(step.receivers[k + kPrefetchAhead]);
+    for (std::size_t k = 0; k < step.size(); ++k) {
         if (step.tier[k] == StepLinks::kDrawn) {
             linkStarts(id, drawn[j++]);
             continue;

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -47,11 +46,6 @@ public:
     void addStation();
     bool sensesBusy(Slot s) const { return st_[s].sensedBusy != 0; }
     bool sending(Slot s) const { return st_[s].sending != 0; }
-    /// How many receivers ahead a walk over a frame's receivers (or a cell's members) fetches
-    /// their records: each is a cache miss of its own, by slot.
-    static constexpr std::size_t kPrefetchAhead = 8;
-    /// Hints that station `s`'s record is read soon.
-    void prefetch(Slot s) const { __builtin_prefetch(&st_[s], 1); }
 
     /// Station `s` starts sending frame `id` at `now`: whatever it was receiving is lost
     /// (half-duplex; frameEnds() tells the frames that overlapped the sending).
