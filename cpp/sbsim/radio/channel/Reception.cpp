@@ -22,7 +22,20 @@ Reception::Reception(const ChannelSettings& settings, Listener& listener)
 
 double Reception::mwOf(Units units) { return static_cast<double>(units) / kUnitsPerMw; }
 
-void Reception::addStation() { st_.emplace_back(); }
+void Reception::addStation() {
+    heard_.push_back(0);
+    sensedBusy_.push_back(0);
+    sending_.push_back(0);
+    locked_.push_back(0);
+    lockedLink_.push_back(nullptr);
+    sendStart_.push_back(kernel::SimTime::fromNanoseconds(-1));
+    lockCell_.push_back(-1);
+    lockOwn_.push_back(0);
+    segmentNearMw_.push_back(0);
+    lockedMaxMw_.push_back(0);
+    cell_.push_back(-1);
+    segmentFrom_.push_back(0);
+}
 
 void Reception::growField(std::int32_t cell) {
     const auto n = static_cast<std::size_t>(cell) + 1;
@@ -50,21 +63,21 @@ void Reception::senseCell(std::int32_t cell) {
     if (cells_ == nullptr) return;
     const auto [begin, end] = cells_->members(cell);
     for (const Slot* r = begin; r != end; ++r) {
-        if (st_[*r].cell != cell) continue;  // not moved in yet (moveStations)
-        const Units total = st_[*r].heard + field_[cell];
+        if (cell_[*r] != cell) continue;  // not moved in yet (moveStations)
+        const Units total = heard_[*r] + field_[cell];
         // Units first (no conversion); setSensedPower decides in mW as everywhere else.
-        if ((total >= sensingUnits_) != static_cast<bool>(st_[*r].sensedBusy)) setSensedPower(*r, mwOf(total));
+        if ((total >= sensingUnits_) != static_cast<bool>(sensedBusy_[*r])) setSensedPower(*r, mwOf(total));
     }
 }
 
 void Reception::moveStations(const FarCells& cells) {
     cells_ = &cells;
-    for (Slot r = 0; r < static_cast<Slot>(st_.size()); ++r) {
+    for (Slot r = 0; r < static_cast<Slot>(cell_.size()); ++r) {
         const std::int32_t c = cells.cellOf(r);
-        if (c == st_[r].cell) continue;
+        if (c == cell_[r]) continue;
         if (c >= 0) growField(c);
-        st_[r].cell = c;
-        setSensedPower(r, mwOf(st_[r].heard + fieldAt(r)));
+        cell_[r] = c;
+        setSensedPower(r, mwOf(heard_[r] + fieldAt(r)));
     }
 }
 
@@ -78,17 +91,17 @@ void Reception::farEnds(const StepLinks& step) {
 }
 
 void Reception::openSegment(Slot r) {
-    const std::int32_t c = st_[r].lockCell;
-    const Units near = st_[r].heard - st_[r].lockOwn;
-    st_[r].segmentNearMw = roughMwOf(near);
-    st_[r].segmentFrom = logged_[c];
-    st_[r].lockedMaxMw = std::max(st_[r].lockedMaxMw, roughMwOf(near + field_[c]));
+    const std::int32_t c = lockCell_[r];
+    const Units near = heard_[r] - lockOwn_[r];
+    segmentNearMw_[r] = roughMwOf(near);
+    segmentFrom_[r] = logged_[c];
+    lockedMaxMw_[r] = std::max(lockedMaxMw_[r], roughMwOf(near + field_[c]));
 }
 
 void Reception::closeSegment(Slot r) {
-    const std::int32_t c = st_[r].lockCell;
+    const std::int32_t c = lockCell_[r];
     const std::uint64_t end = logged_[c];
-    std::uint64_t from = st_[r].segmentFrom;
+    std::uint64_t from = segmentFrom_[r];
     if (from == end) return;  // the field did not rise: the segment's largest was taken at its opening
     if (end - from > kLog) {
         ++logOverflows_;
@@ -97,13 +110,13 @@ void Reception::closeSegment(Slot r) {
     double largest = 0;
     const double* ring = &log_[static_cast<std::size_t>(c) * kLog];
     for (std::uint64_t k = from; k < end; ++k) largest = std::max(largest, ring[k % kLog]);
-    st_[r].lockedMaxMw = std::max(st_[r].lockedMaxMw, st_[r].segmentNearMw + largest);
+    lockedMaxMw_[r] = std::max(lockedMaxMw_[r], segmentNearMw_[r] + largest);
 }
 
 void Reception::startSending(Slot s, FrameId id, kernel::SimTime now) {
-    st_[s].locked = 0;
-    st_[s].sending = id;
-    st_[s].sendStart = now;
+    locked_[s] = 0;
+    sending_[s] = id;
+    sendStart_[s] = now;
 }
 
 void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>& drawn,
@@ -118,7 +131,7 @@ void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>
         }
         // Interference only: below the sensing threshold, never detected, never decoded.
         const Slot r = step.receivers[k];
-        if (halfAtStart != nullptr && st_[r].sending != 0) halfAtStart->push_back(static_cast<std::uint32_t>(k));
+        if (halfAtStart != nullptr && sending_[r] != 0) halfAtStart->push_back(static_cast<std::uint32_t>(k));
         if (step.tier[k] == StepLinks::kBelowFloor) continue;
         setSensedPower(r, mwOf(hear(r, step.units[k]) + fieldAt(r)));
     }
@@ -126,16 +139,16 @@ void Reception::frameStarts(FrameId id, const StepLinks& step, std::vector<Link>
 }
 
 Reception::Units Reception::hear(Slot r, Units units) {
-    const Units total = st_[r].heard + units;
-    if (st_[r].locked != 0 && st_[r].lockCell >= 0) {
-        if (logged_[st_[r].lockCell] != st_[r].segmentFrom) closeSegment(r);
-        st_[r].heard = total;
+    const Units total = heard_[r] + units;
+    if (locked_[r] != 0 && lockCell_[r] >= 0) {
+        if (logged_[lockCell_[r]] != segmentFrom_[r]) closeSegment(r);
+        heard_[r] = total;
         openSegment(r);
         return total;
     }
-    st_[r].heard = total;
-    if (st_[r].locked != 0) {
-        Link& decoding = *st_[r].lockedLink;
+    heard_[r] = total;
+    if (locked_[r] != 0) {
+        Link& decoding = *lockedLink_[r];
         decoding.maxInterferenceMw = std::max(decoding.maxInterferenceMw, mwOf(total - unitsOf(decoding.powerMw)));
     }
     return total;
@@ -143,22 +156,22 @@ Reception::Units Reception::hear(Slot r, Units units) {
 
 void Reception::linkStarts(FrameId id, Link& link) {
     const Slot r = link.receiver;
-    if (st_[r].sending != 0) link.halfDuplex = true;
+    if (sending_[r] != 0) link.halfDuplex = true;
     if (link.powerMw < floorMw_) return;
     link.counted = true;
-    const Units others = st_[r].heard;
-    const bool decoding = st_[r].locked != 0;
+    const Units others = heard_[r];
+    const bool decoding = locked_[r] != 0;
     const Units total = hear(r, unitsOf(link.powerMw));
-    if (!decoding && st_[r].sending == 0 && link.powerMw >= sensingMw_) {
-        st_[r].locked = id;
-        st_[r].lockedLink = &link;
+    if (!decoding && sending_[r] == 0 && link.powerMw >= sensingMw_) {
+        locked_[r] = id;
+        lockedLink_[r] = &link;
         link.locked = true;
         link.maxInterferenceMw = mwOf(others);
-        st_[r].lockCell = link.cell;
+        lockCell_[r] = link.cell;
         if (link.cell >= 0) {
             growField(link.cell);
-            st_[r].lockedMaxMw = link.maxInterferenceMw;
-            st_[r].lockOwn = total - others;
+            lockedMaxMw_[r] = link.maxInterferenceMw;
+            lockOwn_[r] = total - others;
             openSegment(r);
         }
     }
@@ -167,12 +180,12 @@ void Reception::linkStarts(FrameId id, Link& link) {
 
 double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {
     const Slot r = link.receiver;
-    if (st_[r].locked == id) {
-        if (st_[r].lockCell >= 0) {
+    if (locked_[r] == id) {
+        if (lockCell_[r] >= 0) {
             closeSegment(r);
-            link.maxInterferenceMw = st_[r].lockedMaxMw;
+            link.maxInterferenceMw = lockedMaxMw_[r];
         }
-        st_[r].locked = 0;
+        locked_[r] = 0;
     }
     if (!link.counted) return 0;
     if (sentSince(r, start)) link.halfDuplex = true;
@@ -181,8 +194,8 @@ double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {
 
 void Reception::setSensedPower(Slot s, double mw) {
     const bool busy = mw >= sensingMw_;
-    if (busy == static_cast<bool>(st_[s].sensedBusy)) return;
-    st_[s].sensedBusy = busy;
+    if (busy == static_cast<bool>(sensedBusy_[s])) return;
+    sensedBusy_[s] = busy;
     listener_.channelSensed(s, busy);
 }
 std::optional<LossReason> Reception::decode(const Link& link, std::uint64_t frameKey, std::uint64_t receiverKey,

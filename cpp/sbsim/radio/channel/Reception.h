@@ -14,7 +14,7 @@
 
 namespace sbsim::radio {
 
-/// 802.11p reception at every station, one record by slot: the frames it hears and their
+/// 802.11p reception at every station, struct-of-arrays by slot: the frames it hears and their
 /// power, the power it senses (carrier sense: busy at or above the sensing threshold), the frame
 /// it locked onto (the first it detects while not sending), whether it sends (half-duplex); at a
 /// frame's end, whether it decoded it: probability 1 − FER(SINR), the interference being the
@@ -44,13 +44,13 @@ public:
 
     /// A new station, slot size().
     void addStation();
-    bool sensesBusy(Slot s) const { return st_[s].sensedBusy != 0; }
-    bool sending(Slot s) const { return st_[s].sending != 0; }
+    bool sensesBusy(Slot s) const { return sensedBusy_[s] != 0; }
+    bool sending(Slot s) const { return sending_[s] != 0; }
 
     /// Station `s` starts sending frame `id` at `now`: whatever it was receiving is lost
     /// (half-duplex; frameEnds() tells the frames that overlapped the sending).
     void startSending(Slot s, FrameId id, kernel::SimTime now);
-    void stopSending(Slot s) { st_[s].sending = 0; }
+    void stopSending(Slot s) { sending_[s] = 0; }
     /// Frame `id` reaches the receivers of `step` (which stay where they are until it ends), its
     /// drawn links in `drawn`: each link above the floor adds to its receiver's power and to the
     /// interference of the frame it decodes, and a drawn one may lock it (only a locked link's
@@ -60,20 +60,20 @@ public:
                      std::vector<std::uint32_t>* halfAtStart = nullptr);
     /// A counted link of `units` left station `r`: the power it hears without it.
     double leave(Slot r, StepLinks::Units units) {
-        if (st_[r].locked != 0 && st_[r].lockCell >= 0) {
+        if (locked_[r] != 0 && lockCell_[r] >= 0) {
             // A fall opens a segment only if the field rose during the last (else the last's
             // largest, taken at its opening, stands).
-            const std::int32_t c = st_[r].lockCell;
-            if (logged_[c] != st_[r].segmentFrom) {
+            const std::int32_t c = lockCell_[r];
+            if (logged_[c] != segmentFrom_[r]) {
                 closeSegment(r);
-                st_[r].segmentFrom = logged_[c];
+                segmentFrom_[r] = logged_[c];
             }
-            st_[r].heard -= units;
-            st_[r].segmentNearMw = roughMwOf(st_[r].heard - st_[r].lockOwn);
+            heard_[r] -= units;
+            segmentNearMw_[r] = roughMwOf(heard_[r] - lockOwn_[r]);
         } else {
-            st_[r].heard -= units;
+            heard_[r] -= units;
         }
-        return mwOf(st_[r].heard + fieldAt(r));
+        return mwOf(heard_[r] + fieldAt(r));
     }
     /// The stations' far cells changed with a SUMO step (`cells`, kept until the next call): each
     /// senses its links and its new cell's field.
@@ -89,7 +89,7 @@ public:
     /// Times a decoding receiver's segment outlived its cell's log (the largest far field may then be missed).
     std::uint64_t logOverflows() const { return logOverflows_; }
     /// Whether station `r` began sending at or after `start`.
-    bool sentSince(Slot r, kernel::SimTime start) const { return st_[r].sendStart >= start; }
+    bool sentSince(Slot r, kernel::SimTime start) const { return sendStart_[r] >= start; }
     /// Whether `mw` would change station `r`'s carrier sense.
     bool changesSense(Slot r, double mw) const { return (mw >= sensingMw_) != sensesBusy(r); }
     void setSensedPower(Slot r, double mw);
@@ -124,7 +124,7 @@ private:
     void linkStarts(FrameId id, Link& link);
     /// Adds `units` to what station `r` hears, and to the interference of the frame it decodes; the new sum.
     Units hear(Slot r, Units units);
-    /// A decoding station's interference with a far field (its lockCell >= 0) is the largest of
+    /// A decoding station's interference with a far field (lockCell_ >= 0) is the largest of
     /// (its other links' sum + its cell's field) over the frame. Its other links change only at
     /// its own links' events: between two, a segment, whose largest is that sum plus the largest
     /// field its cell's log holds since the segment opened.
@@ -133,7 +133,7 @@ private:
     void growField(std::int32_t cell);
     /// The far field station `r` hears in its cell this step (0 without one).
     Units fieldAt(Slot r) const {
-        const std::int32_t c = st_[r].cell;
+        const std::int32_t c = cell_[r];
         return c >= 0 && static_cast<std::size_t>(c) < field_.size() ? field_[c] : Units{0};
     }
     /// Carrier sense of `cell`'s stations after its field changed.
@@ -144,36 +144,28 @@ private:
     double sensingMw_, noiseMw_, floorMw_;
     double ratioDb_;  // Eb/N0 − SINR: bandwidth over bit rate, in dB
 
-    /// A station's state, one record by slot: a link's start or end reads and writes its receiver's
-    /// power, sending, decoding and cell state together, and a far cell's change reads its members'
-    /// power, cell and sense. As separate arrays by slot each of those was a cache miss of its own
-    /// (the pair table's stream evicts them between two frames); here the first line holds all of
-    /// them, the second the decoding station's segment (the far tier's maxima).
-    struct alignas(64) Station {
-        Units heard = 0;                                                   // the power it hears, 2^-64 mW
-        FrameId sending = 0;                                               // 0 = not sending
-        FrameId locked = 0;                                                // the frame being decoded, 0 = none
-        Link* lockedLink = nullptr;                                        // its link (while locked names it)
-        kernel::SimTime sendStart = kernel::SimTime::fromNanoseconds(-1);  // when it last began sending
-        std::int32_t cell = -1;      // its far-tier cell this step (carrier sense with the far field)
-        std::int32_t lockCell = -1;  // the decoding station's segment's cell (-1: no far field)
-        std::uint8_t sensedBusy = 0;
-        // A decoding station's segment: its own link's units, the others' sum and the log's count at its
-        // opening, and its largest interference so far (into its Link when the frame ends: a Link is a
-        // cache miss).
-        alignas(64) Units lockOwn = 0;
-        double segmentNearMw = 0;
-        std::uint64_t segmentFrom = 0;
-        double lockedMaxMw = 0;
-    };
-    static_assert(sizeof(Station) == 128, "a station's state is two cache lines, the hot fields in the first");
-    std::vector<Station> st_;
+    std::vector<Units> heard_;  // the power each station hears, in units of 2^-64 mW
+    std::vector<std::uint8_t> sensedBusy_;
+    std::vector<FrameId> sending_;            // 0 = not sending
+    std::vector<FrameId> locked_;             // the frame being decoded, 0 = none
+    std::vector<Link*> lockedLink_;           // its link (valid while locked_ names it)
+    std::vector<kernel::SimTime> sendStart_;  // when each station last began sending
     // The far tier, by cell: the field (units), and a ring of its values after each rise with their count.
     static constexpr std::size_t kLog = 32;
     std::vector<Units> field_;
     std::vector<double> log_;  // kLog a cell, mW (roughMwOf): a decoding station's maximum needs no exact sum
     std::vector<std::uint64_t> logged_;
     std::uint64_t logOverflows_ = 0;
+    // A decoding station's segment: its cell (-1: no far field), own link's units, others' sum and the log's count at
+    // its opening.
+    std::vector<std::int32_t> lockCell_;
+    std::vector<Units> lockOwn_;
+    std::vector<double> segmentNearMw_;
+    std::vector<std::uint64_t> segmentFrom_;
+    // Its largest interference so far, into its Link when the frame ends (a Link is a cache miss).
+    std::vector<double> lockedMaxMw_;
+    // Carrier sense with the far field: each station's cell this step and the cells' members.
+    std::vector<std::int32_t> cell_;
     const FarCells* cells_ = nullptr;
     Units sensingUnits_ = 0;
 };
