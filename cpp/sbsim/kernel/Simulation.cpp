@@ -97,7 +97,7 @@ Simulation::StopReason Simulation::run(SimTime limit) {
             return StopReason::Requested;
         }
         if (fes_.empty()) return StopReason::NoMoreEvents;
-        if (fes_.peek().arrivalTime() > limit) return StopReason::TimeLimit;
+        if (fes_.peekTime() > limit) return StopReason::TimeLimit;
         std::unique_ptr<Message> owned;
         Message& msg = fes_.pop(owned);
         now_ = msg.arrivalTime();

@@ -8,23 +8,19 @@
 
 namespace sbsim::radio {
 
-namespace {
-/// One frame's receptions at one time.
-struct FrameDelivery : kernel::Message {
+struct Medium::FrameDelivery : kernel::Message {
     static constexpr int kKind = 0x7632'7801;
-    FrameDelivery(std::shared_ptr<const V2xMessage> m, std::shared_ptr<const Medium::Recipients> r, bool kept,
-                  std::uint64_t changes)
-        : kernel::Message("v2x frame", kKind),
-          message(std::move(m)),
-          recipients(std::move(r)),
-          keptByMedium(kept),
-          moduleChanges(changes) {}
+    FrameDelivery() : kernel::Message("v2x frame", kKind) {}
     std::shared_ptr<const V2xMessage> message;
     std::shared_ptr<const Medium::Recipients> recipients;  // its stations, to find them should one leave meanwhile
-    bool keptByMedium;            // the list may come again, unchanged, for the sender's next frames
-    std::uint64_t moduleChanges;  // the simulation's when the receivers were taken
+    bool keptByMedium = false;        // the list may come again, unchanged, for the sender's next frames
+    std::uint64_t moduleChanges = 0;  // the simulation's when the receivers were taken
 };
-}  // namespace
+
+Medium::Medium(Directory directory) : kernel::Module("medium"), directory_(std::move(directory)) {}
+
+// The frames on the air leave the event set as they go (a scheduled message removes itself).
+Medium::~Medium() = default;
 
 Receiver* Medium::receivingSide(const std::string& stationId) {
     kernel::Module* module = receiverOf(stationId);
@@ -55,14 +51,34 @@ void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::shared
 void Medium::queue(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
                    bool keptByMedium, kernel::SimTime delay) {
     if (recipients == nullptr || recipients->receivers.empty()) return;
-    const std::uint64_t changes = simulation().moduleChanges();
-    sendDirect(std::make_unique<FrameDelivery>(std::move(message), std::move(recipients), keptByMedium, changes), delay,
-               *this);
+    if (delay < kernel::SimTime::zero()) throw std::invalid_argument("negative delay for a V2X frame");
+    if (spareFrames_.empty()) {
+        frames_.push_back(std::make_unique<FrameDelivery>());
+        spareFrames_.push_back(frames_.back().get());
+    }
+    FrameDelivery& frame = *spareFrames_.back();
+    spareFrames_.pop_back();
+    frame.message = std::move(message);
+    frame.recipients = std::move(recipients);
+    frame.keptByMedium = keptByMedium;
+    frame.moduleChanges = simulation().moduleChanges();
+    // Scheduled as sendDirect() would hand it over: the same time and place among the events.
+    scheduleAt(simTime() + delay, frame);
 }
 
 void Medium::handleMessage(kernel::Message& msg) {
     if (msg.kind() != FrameDelivery::kKind) return kernel::Module::handleMessage(msg);
-    const auto& frame = static_cast<const FrameDelivery&>(msg);
+    auto& frame = static_cast<FrameDelivery&>(msg);
+    // Spare again once handled, however that ends; what it held is let go of then.
+    struct Spare {
+        Medium& medium;
+        FrameDelivery& frame;
+        ~Spare() {
+            frame.recipients.reset();  // in the order a freed event let go of them
+            frame.message.reset();
+            medium.spareFrames_.push_back(&frame);
+        }
+    } spare{*this, frame};
     const V2xMessage& message = *frame.message;
     const Recipients* recipients = frame.recipients.get();
     Recipients found;

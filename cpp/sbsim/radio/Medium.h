@@ -70,7 +70,8 @@ public:
     /// vehicle that is not a station.
     using Directory = std::function<kernel::Module*(const std::string& stationId)>;
 
-    explicit Medium(Directory directory) : kernel::Module("medium"), directory_(std::move(directory)) {}
+    explicit Medium(Directory directory);
+    ~Medium() override;
 
     /// Sends `message` from `sender` (stamped with the sender and the current time).
     virtual void broadcast(const std::string& sender, std::unique_ptr<V2xMessage> message) = 0;
@@ -152,7 +153,13 @@ protected:
                       kernel::SimTime delay);
 
 private:
+    /// One frame's receptions at one time: a kernel event the medium keeps and reuses.
+    struct FrameDelivery;
     Directory directory_;
+    // Every frame delivery made so far, and those not on the air: a frame takes a spare one
+    // rather than allocating an event (and its name) and freeing it after delivery.
+    std::vector<std::unique_ptr<FrameDelivery>> frames_;
+    std::vector<FrameDelivery*> spareFrames_;
     std::map<std::string, Counts, std::less<>> counts_;
     std::vector<std::uint64_t> sequences_;  // next per sender, by station index
     MessageTrace* trace_ = nullptr;

@@ -352,6 +352,130 @@ TEST_F(FutureEventSetTest, DeepHeapDeliversInKeyOrder) {
     }
 }
 
+// A city's events: per station a periodic timer (one period, so a lane) and frames a fixed latency
+// later (another), stations joining at random phases (the heap), a few timers of another priority
+// and of drifting periods, cancels from a lane's middle and head, stations leaving (removeAllFor)
+// and timers destroyed while scheduled: delivered in the reference order, and the lanes do serve.
+TEST_F(FutureEventSetTest, LanesKeepTheOrderOfARunsTimersAndFrames) {
+    struct Key {
+        SimTime at;
+        int priority;
+        std::uint64_t order;
+        Message* msg;
+        auto operator<=>(const Key&) const = default;
+    };
+    std::mt19937_64 rng(28);
+    const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+    const SimTime period = ms(100), latency = SimTime::fromNanoseconds(2'000);
+
+    FutureEventSet fes;
+    std::set<Key> reference;
+    std::uint64_t order = 0;
+    std::vector<std::unique_ptr<Module>> stations;
+    std::vector<std::unique_ptr<Message>> timers;  // per station
+    int frames = 0, framesDestroyed = 0;
+    SimTime now = SimTime::fromSeconds(110);  // a run from a saved state: the first delays are long
+    const auto schedule = [&](Message& m, SimTime at, Module& target) {
+        reference.insert({at, m.priority(), order++, &m});
+        fes.insert(m, at, &target);
+    };
+    const auto join = [&] {
+        stations.push_back(std::make_unique<Module>("s" + std::to_string(stations.size())));
+        timers.push_back(std::make_unique<Message>(std::to_string(timers.size())));
+        if (pick(0, 9) == 0) timers.back()->setPriority(1);  // another priority: a lane of its own
+        schedule(*timers.back(), now + SimTime::fromNanoseconds(pick(1, 99'999'999)), *stations.back());
+    };
+    const auto forget = [&](Message* m) {
+        for (auto it = reference.begin(); it != reference.end(); ++it) {
+            if (it->msg == m) {
+                reference.erase(it);
+                return;
+            }
+        }
+    };
+    for (int i = 0; i < 300; ++i) join();
+
+    std::size_t mostInLanes = 0;
+    int pops = 0;
+    for (int step = 0; step < 60'000; ++step) {
+        const int op = pick(0, 999);
+        if (op < 3) {
+            join();
+        } else if (op < 5 && !reference.empty()) {  // a station leaves: its timer and the frames to it go
+            const std::size_t s = static_cast<std::size_t>(pick(0, static_cast<int>(stations.size()) - 1));
+            for (auto it = reference.begin(); it != reference.end();) {
+                it = it->msg->arrivalModule() == stations[s].get() ? reference.erase(it) : std::next(it);
+            }
+            fes.removeAllFor(*stations[s]);
+        } else if (op < 15 && !reference.empty()) {  // a cancel anywhere (a lane's middle, often)
+            auto it = std::next(reference.begin(), pick(0, static_cast<int>(reference.size()) - 1));
+            Message* m = it->msg;
+            reference.erase(it);
+            fes.remove(*m);
+        } else if (op < 17 && !reference.empty()) {  // the very next one cancelled (a lane's head)
+            Message* m = reference.begin()->msg;
+            reference.erase(reference.begin());
+            fes.remove(*m);
+        } else if (op < 19) {  // a timer destroyed while scheduled, replaced
+            const std::size_t s = static_cast<std::size_t>(pick(0, static_cast<int>(timers.size()) - 1));
+            if (!timers[s]->isScheduled()) continue;
+            forget(timers[s].get());
+            timers[s] = std::make_unique<Message>(std::to_string(s));
+            schedule(*timers[s], now + period, *stations[s]);
+        } else {  // the next event: a timer sends a frame and comes back a period later
+            ASSERT_EQ(fes.empty(), reference.empty());
+            if (reference.empty()) continue;
+            const Key expected = *reference.begin();
+            reference.erase(reference.begin());
+            ASSERT_EQ(fes.peekTime(), expected.at) << "step " << step;
+            std::unique_ptr<Message> owned;
+            Message& got = fes.pop(owned);
+            ASSERT_EQ(&got, expected.msg) << "step " << step;
+            ASSERT_FALSE(got.isScheduled());
+            now = expected.at;
+            ++pops;
+            if (owned != nullptr) continue;  // a frame, delivered
+            const std::size_t s = std::stoul(got.name());
+            // Now and then a period that drifts (a story's timer): the heap.
+            schedule(got, now + (pick(0, 49) == 0 ? ms(pick(1, 300)) : period), *stations[s]);
+            auto frame = std::make_unique<CountedMessage>("frame", framesDestroyed);
+            ++frames;
+            reference.insert({now + latency, 0, order++, frame.get()});
+            fes.insert(std::move(frame), now + latency, stations[pick(0, static_cast<int>(stations.size()) - 1)].get());
+        }
+        ASSERT_EQ(fes.size(), reference.size()) << "step " << step;
+        mostInLanes = std::max(mostInLanes, fes.inLanes());
+    }
+    EXPECT_GT(pops, 40'000);
+    EXPECT_GT(mostInLanes, 250u);  // the periodic timers were in a lane, which grew past its first ring
+    for (const Key& k : reference) {
+        std::unique_ptr<Message> owned;
+        ASSERT_EQ(&fes.pop(owned), k.msg);
+    }
+    EXPECT_TRUE(fes.empty());
+    EXPECT_EQ(framesDestroyed, frames);
+}
+
+TEST_F(FutureEventSetTest, ClearEmptiesTheLanesToo) {
+    int destroyed = 0;
+    FutureEventSet fes;
+    std::vector<std::unique_ptr<Message>> timers;
+    for (int i = 0; i < 100; ++i) {
+        timers.push_back(std::make_unique<Message>(std::to_string(i)));
+        fes.insert(*timers.back(), ms(10), &a_);  // one delay, recurring: a lane
+        fes.insert(std::make_unique<CountedMessage>("x", destroyed), ms(5), &b_);
+    }
+    ASSERT_GT(fes.inLanes(), 150u);
+    fes.clear();
+    EXPECT_TRUE(fes.empty());
+    EXPECT_EQ(fes.inLanes(), 0u);
+    EXPECT_EQ(destroyed, 100);
+    for (const auto& t : timers) EXPECT_FALSE(t->isScheduled());
+    fes.insert(*timers[3], ms(4), &a_);  // usable again
+    fes.insert(*timers[4], ms(4), &a_);
+    EXPECT_EQ(drain(fes), (std::vector<std::string>{"3", "4"}));
+}
+
 TEST_F(FutureEventSetTest, ClearFreesOwnedAndUnschedulesTheRest) {
     int destroyed = 0;
     FutureEventSet fes;

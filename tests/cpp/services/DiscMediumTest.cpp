@@ -127,6 +127,31 @@ TEST(DiscMedium, LatenciesBelowAMillisecondAndZeroAreExact) {
     }
 }
 
+// The medium keeps its delivery events and reuses them: several frames on the air at once each
+// reach their receivers with their own message, in the order sent, and a later wave (on the events
+// the first one freed) delivers its own messages, not the first wave's.
+TEST(DiscMedium, FramesOnTheAirAtOnceAndLaterOnesDeliverTheirOwnMessages) {
+    Harness h(kAllButBare, disc(500, SimTime::fromMilliseconds(10)));
+    h.step(secs(1), {vehicle("a", 0, 0), vehicle("b", 100, 0), vehicle("c", 200, 0)});
+    for (int wave = 0; wave < 3; ++wave) {
+        for (int k = 0; k < 4; ++k) {
+            const SimTime t = secs(1) + SimTime::fromMilliseconds(100 * wave + 2 * k);  // 4 frames within 10 ms
+            sendAt(h, t, k % 2 == 0 ? "a" : "b", "Ping", 10 * wave + k);
+        }
+    }
+    h.sim.run(secs(2));
+    EXPECT_EQ(heardSeqs(h, "c"), (std::vector<int>{0, 1, 2, 3, 10, 11, 12, 13, 20, 21, 22, 23}));
+    EXPECT_EQ(heardSeqs(h, "a"), (std::vector<int>{1, 3, 11, 13, 21, 23}));
+    EXPECT_EQ(heardSeqs(h, "b"), (std::vector<int>{0, 2, 10, 12, 20, 22}));
+    const ProbeRecord* c = h.log.find("c");
+    ASSERT_NE(c, nullptr);
+    for (const Indication& i : c->indications) {
+        const int wave = i.seq / 10, k = i.seq % 10;
+        EXPECT_EQ(i.at, secs(1) + SimTime::fromMilliseconds(100 * wave + 2 * k + 10)) << "seq " << i.seq;
+        EXPECT_EQ(i.sender, k % 2 == 0 ? "a" : "b") << "seq " << i.seq;
+    }
+}
+
 TEST(DiscMedium, CountsSentAndDeliveredPerType) {
     Harness h(kAllButBare, disc(100));
     h.step(secs(1),
