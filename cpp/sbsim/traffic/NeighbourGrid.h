@@ -35,6 +35,11 @@ public:
     /// The indices of forEachWithin, in ascending order.
     std::vector<Index> within(Index i, double radius) const;
 
+    /// Sets bit j of `marks` (bit j % 64 of word j / 64; at least one bit per vehicle) for every
+    /// vehicle j > i that forEachWithin(i, radius) visits: one half of each pair, for a sweep that
+    /// takes every pair once (a set bit stays set; read them in ascending order).
+    void markWithinAbove(Index i, double radius, std::uint64_t* marks) const;
+
     /// Calls `visit(j)` for every vehicle j whose position is within `radius` of the point (x, y):
     /// the neighbours of a place rather than of a vehicle (a roadside unit's). Order unspecified.
     template <typename Visit>

@@ -20,6 +20,8 @@ constexpr double kSkinShare = 0.1;
 /// Kept lists serve while their epochs last this many steps (0.1 s steps: tens); else (1 s steps:
 /// one or two) each sender's neighbours come from the step's grid.
 constexpr std::uint64_t kLastingUpdates = 4;
+/// Below this many vehicles a sweep of all pairs saves too little to matter.
+constexpr std::size_t kSweepVehicles = 64;
 }  // namespace
 
 DiscMedium::DiscMedium(DiscSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory)
@@ -75,6 +77,8 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         gridTime_ = snapshot_.time();
         ++step_;
         gridBuilt_ = false;
+        lastStepSenders_ = stepSenders_;
+        stepSenders_ = 0;
         receiverKnown_.clear();
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
@@ -148,23 +152,49 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     if (self) {
         if (near_.size() <= senderIndex) near_.resize(senderIndex + 1);
         Neighbourhood& near = near_[senderIndex];
-        if (near.step != step_ || near.radius != radius) {
-            if (!kept_ || kept_->radius() != radius) kept_.emplace(radius, radius * kSkinShare);
-            if (keptStep_ != step_ || kept_->epochs() == 0) {
-                kept_->update(positions, stationIndices_, keptIdsVersion_ != idsVersion_);
-                keptStep_ = step_;
-                keptIdsVersion_ = idsVersion_;
+        if (near.step != step_ || near.radius != radius || (near.sweep != 0 && near.sweep != sweeps_)) {
+            if (near.step != step_) ++stepSenders_;
+            const auto n = static_cast<std::size_t>(positions.cols());
+            if (sweepStep_ != step_ || sweepRadius_ != radius) {
+                // Most vehicles sent in the last step: all of this step's neighbourhoods in one sweep.
+                if (n >= kSweepVehicles && 2 * lastStepSenders_ >= n) {
+                    buildGrid();
+                    sweep_.build(grid_, positions, radius);
+                    kept_.reset();  // its lists, unused while sweeps serve, freed
+                    ++sweeps_;
+                    sweepStep_ = step_;
+                    sweepRadius_ = radius;
+                }
             }
-            near.others.clear();
-            if (kept_->lasting(kLastingUpdates)) {
-                kept_->within(*self, near.others);
+            if (sweepStep_ == step_ && sweepRadius_ == radius) {
+                near.others = sweep_.others(*self);
+                near.distance = sweep_.distances(*self);
+                near.sweep = sweeps_;
+                if (near.ownOthers.capacity() != 0) {
+                    near.ownOthers = {};
+                    near.ownDistance = {};
+                }
             } else {
-                buildGrid();
-                near.others = grid_.within(*self, radius);
+                if (!kept_ || kept_->radius() != radius) kept_.emplace(radius, radius * kSkinShare);
+                if (keptStep_ != step_ || kept_->epochs() == 0) {
+                    kept_->update(positions, stationIndices_, keptIdsVersion_ != idsVersion_);
+                    keptStep_ = step_;
+                    keptIdsVersion_ = idsVersion_;
+                }
+                near.ownOthers.clear();
+                if (kept_->lasting(kLastingUpdates)) {
+                    kept_->within(*self, near.ownOthers);
+                } else {
+                    buildGrid();
+                    near.ownOthers = grid_.within(*self, radius);
+                }
+                near.ownDistance.resize(near.ownOthers.size());
+                for (std::size_t k = 0; k < near.ownOthers.size(); ++k)
+                    near.ownDistance[k] = (positions.col(near.ownOthers[k]) - positions.col(*self)).norm();
+                near.others = near.ownOthers;
+                near.distance = near.ownDistance;
+                near.sweep = 0;
             }
-            near.distance.resize(near.others.size());
-            for (std::size_t k = 0; k < near.others.size(); ++k)
-                near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
             near.step = step_;
             near.radius = radius;
             near.receiversKnown = false;
@@ -218,9 +248,11 @@ void DiscMedium::buildGrid() {
 void DiscMedium::takeReceivers(Neighbourhood& near) {
     std::vector<Receiver*>& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
-    receivers.resize(near.others.size());
-    stations.resize(near.others.size());
-    std::size_t taken = 0;
+    // Appended within the reserved room: no zero-filled resize first.
+    receivers.clear();
+    stations.clear();
+    receivers.reserve(near.others.size());
+    stations.reserve(near.others.size());
     // Counted per bin in a small array while the range has few bins (no growth check per link).
     constexpr std::size_t kFewBins = 64;
     std::array<std::uint64_t, kFewBins> few{};
@@ -235,9 +267,8 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
             receiverKnown_[other] = 1;
         }
         if (receivers_[other] == nullptr) continue;  // a vehicle without services
-        receivers[taken] = receivers_[other];
-        stations[taken] = stationIndices_[other];
-        ++taken;
+        receivers.push_back(receivers_[other]);
+        stations.push_back(stationIndices_[other]);
         if (!(distance >= 0)) continue;  // as Medium::countLink
         // distance / kDistanceBin, as Medium::countLink, without a division per link: a product
         // lands in the same bin unless it is within a hair of a bin's edge (then divided).
@@ -252,8 +283,6 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
     }
-    receivers.resize(taken);
-    stations.resize(taken);
     if (fewBins) {
         std::size_t bins = kFewBins;
         while (bins > 0 && few[bins - 1] == 0) --bins;
