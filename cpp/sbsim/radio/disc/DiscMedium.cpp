@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -20,8 +21,6 @@ constexpr double kSkinShare = 0.1;
 /// Kept lists serve while their epochs last this many steps (0.1 s steps: tens); else (1 s steps:
 /// one or two) each sender's neighbours come from the step's grid.
 constexpr std::uint64_t kLastingUpdates = 4;
-/// Below this many vehicles a sweep of all pairs saves too little to matter.
-constexpr std::size_t kSweepVehicles = 64;
 }  // namespace
 
 DiscMedium::DiscMedium(DiscSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory)
@@ -77,8 +76,6 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         gridTime_ = snapshot_.time();
         ++step_;
         gridBuilt_ = false;
-        lastStepSenders_ = stepSenders_;
-        stepSenders_ = 0;
         receiverKnown_.clear();
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
@@ -152,48 +149,37 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     if (self) {
         if (near_.size() <= senderIndex) near_.resize(senderIndex + 1);
         Neighbourhood& near = near_[senderIndex];
-        if (near.step != step_ || near.radius != radius || (near.sweep != 0 && near.sweep != sweeps_)) {
-            if (near.step != step_) ++stepSenders_;
-            const auto n = static_cast<std::size_t>(positions.cols());
-            if (sweepStep_ != step_ || sweepRadius_ != radius) {
-                // Most vehicles sent in the last step: all of this step's neighbourhoods in one sweep.
-                if (n >= kSweepVehicles && 2 * lastStepSenders_ >= n) {
-                    buildGrid();
-                    sweep_.build(grid_, positions, radius);
-                    kept_.reset();  // its lists, unused while sweeps serve, freed
-                    ++sweeps_;
-                    sweepStep_ = step_;
-                    sweepRadius_ = radius;
-                }
+        if (near.step != step_ || near.radius != radius) {
+            if (!kept_ || kept_->radius() != radius) kept_.emplace(radius, radius * kSkinShare);
+            if (keptStep_ != step_ || kept_->epochs() == 0) {
+                kept_->update(positions, stationIndices_, keptIdsVersion_ != idsVersion_);
+                keptStep_ = step_;
+                keptIdsVersion_ = idsVersion_;
             }
-            if (sweepStep_ == step_ && sweepRadius_ == radius) {
-                near.others = sweep_.others(*self);
-                near.distance = sweep_.distances(*self);
-                near.sweep = sweeps_;
-                if (near.ownOthers.capacity() != 0) {
-                    near.ownOthers = {};
-                    near.ownDistance = {};
-                }
+            near.others.clear();
+            if (kept_->lasting(kLastingUpdates)) {
+                kept_->within(*self, near.others);
+                near.distance.resize(near.others.size());
+                for (std::size_t k = 0; k < near.others.size(); ++k)
+                    near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
             } else {
-                if (!kept_ || kept_->radius() != radius) kept_.emplace(radius, radius * kSkinShare);
-                if (keptStep_ != step_ || kept_->epochs() == 0) {
-                    kept_->update(positions, stationIndices_, keptIdsVersion_ != idsVersion_);
-                    keptStep_ = step_;
-                    keptIdsVersion_ = idsVersion_;
+                // The grid's answer as a bit set read in ascending order, each distance the root of
+                // the grid test's own square: the bits of (positions(j) - positions(i)).norm().
+                buildGrid();
+                const auto n = static_cast<std::size_t>(positions.cols());
+                const std::size_t words = (n + 63) / 64;
+                if (marks_.size() != words) marks_.assign(words, 0);
+                if (squared_.size() < n) squared_.resize(n);
+                grid_.markWithin(*self, radius, marks_.data(), squared_.data());
+                near.distance.clear();
+                for (std::size_t w = 0; w < words; ++w) {
+                    for (std::uint64_t bits = marks_[w]; bits != 0; bits &= bits - 1) {
+                        const std::size_t j = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+                        near.others.push_back(static_cast<traffic::NeighbourGrid::Index>(j));
+                        near.distance.push_back(std::sqrt(squared_[j]));
+                    }
+                    marks_[w] = 0;
                 }
-                near.ownOthers.clear();
-                if (kept_->lasting(kLastingUpdates)) {
-                    kept_->within(*self, near.ownOthers);
-                } else {
-                    buildGrid();
-                    near.ownOthers = grid_.within(*self, radius);
-                }
-                near.ownDistance.resize(near.ownOthers.size());
-                for (std::size_t k = 0; k < near.ownOthers.size(); ++k)
-                    near.ownDistance[k] = (positions.col(near.ownOthers[k]) - positions.col(*self)).norm();
-                near.others = near.ownOthers;
-                near.distance = near.ownDistance;
-                near.sweep = 0;
             }
             near.step = step_;
             near.radius = radius;

@@ -3,16 +3,15 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <span>
 #include <string>
 #include <vector>
 
+#include "sbsim/kernel/DefaultInitAllocator.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/RandomStream.h"
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/disc/DiscSettings.h"
 #include "sbsim/radio/disc/KeptNeighbourhoods.h"
-#include "sbsim/radio/disc/StepNeighbourhoods.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -39,19 +38,14 @@ private:
     /// pay (built when first needed in a step).
     traffic::NeighbourGrid grid_;
     bool gridBuilt_ = false;
+    /// A grid query's scratch: its answer as a bit set and the squared distances, per snapshot index.
+    std::vector<std::uint64_t> marks_;
+    std::vector<double, kernel::DefaultInitAllocator<double>> squared_;
     std::optional<kernel::SimTime> gridTime_;  // the snapshot time of step_
     std::uint64_t step_ = 0;                   // counts the snapshot's steps seen
     /// A vehicle's neighbours, from lists kept across steps (for one radius: the range, or the
     /// trace range with a trace), updated at a step's first frame.
     std::optional<KeptNeighbourhoods> kept_;
-    /// Every vehicle's neighbours of the step at once, while (nearly) every vehicle sends each step
-    /// (the last step's senders were at least half the vehicles): built at the step's first frame.
-    StepNeighbourhoods sweep_;
-    std::uint64_t sweeps_ = 0;     // sweeps built so far
-    std::uint64_t sweepStep_ = 0;  // step_ of sweep_
-    double sweepRadius_ = 0;
-    std::size_t stepSenders_ = 0;      // vehicles whose neighbourhood was taken in step_
-    std::size_t lastStepSenders_ = 0;  // in the step before
     std::uint64_t keptStep_ = 0;
     std::uint64_t keptIdsVersion_ = 0;
     /// Per snapshot index, the station's receiving side, looked up once per step (while no
@@ -74,11 +68,8 @@ private:
     struct Neighbourhood {
         std::uint64_t step = 0;  // step_ of `others`; 0: none
         double radius = 0;
-        std::uint64_t sweep = 0;  // sweeps_ when `others` is the step's sweep's row; 0: its own lists
-        std::span<const traffic::NeighbourGrid::Index> others;
-        std::span<const double> distance;
-        std::vector<traffic::NeighbourGrid::Index> ownOthers;  // `others` when not the sweep's
-        std::vector<double> ownDistance;
+        KeptNeighbourhoods::Indices others;
+        std::vector<double, kernel::DefaultInitAllocator<double>> distance;
         /// Without packet errors or a trace every station in range receives: the stations in
         /// range (receivers, their indices, in the order above) and their count per distance bin,
         /// taken once per step and module change, so a frame copies them instead of visiting each link.
