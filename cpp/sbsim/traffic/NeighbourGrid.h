@@ -35,6 +35,12 @@ public:
     /// The indices of forEachWithin, in ascending order.
     std::vector<Index> within(Index i, double radius) const;
 
+    /// forEachWithin(i, radius) as a bit set, without a branch per candidate: sets bit j of
+    /// `marks` (bit j % 64 of word j / 64, one bit per vehicle) for every vehicle it visits, and
+    /// writes `squared[j]` = (xj - xi)² + (yj - yi)² (the test's own value) for at least those.
+    /// Read back in ascending order (and the bits cleared) by the caller.
+    void markWithin(Index i, double radius, std::uint64_t* marks, double* squared) const;
+
     /// Calls `visit(j)` for every vehicle j whose position is within `radius` of the point (x, y):
     /// the neighbours of a place rather than of a vehicle (a roadside unit's). Order unspecified.
     template <typename Visit>

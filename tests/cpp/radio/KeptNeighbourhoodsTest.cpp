@@ -19,10 +19,11 @@ namespace {
 
 using Index = KeptNeighbourhoods::Index;
 using Key = KeptNeighbourhoods::Key;
+using Indices = KeptNeighbourhoods::Indices;
 
 /// NeighbourGrid's answer by brute force: j != i with dx² + dy² <= r², ascending.
-std::vector<Index> bruteForce(const Eigen::Matrix2Xd& p, Index i, double r) {
-    std::vector<Index> out;
+Indices bruteForce(const Eigen::Matrix2Xd& p, Index i, double r) {
+    Indices out;
     for (Index j = 0; j < p.cols(); ++j) {
         const double dx = p(0, j) - p(0, i);
         const double dy = p(1, j) - p(1, i);
@@ -33,7 +34,7 @@ std::vector<Index> bruteForce(const Eigen::Matrix2Xd& p, Index i, double r) {
 
 void expectAllMatch(KeptNeighbourhoods& kept, const Eigen::Matrix2Xd& p, int step) {
     for (Index i = 0; i < p.cols(); ++i) {
-        std::vector<Index> got;
+        Indices got;
         kept.within(i, got);
         ASSERT_EQ(got, bruteForce(p, i, kept.radius())) << "step " << step << ", vehicle " << i;
     }
@@ -96,9 +97,9 @@ TEST(KeptNeighbourhoods, AVehicleThatMovesPastTheSkinIsFound) {
     fleet.xs[1] = 50;
     p = fleet.positions();
     kept.update(p, fleet.keys, false);
-    std::vector<Index> got;
+    Indices got;
     kept.within(0, got);
-    EXPECT_EQ(got, (std::vector<Index>{1}));
+    EXPECT_EQ(got, (Indices{1}));
     expectAllMatch(kept, p, 1);
     EXPECT_EQ(kept.epochs(), 1u) << "one jump: a new reference for it, not new lists for all";
     // It jumps back (its old place and its first new one both stale): found there, not twice.
@@ -108,7 +109,7 @@ TEST(KeptNeighbourhoods, AVehicleThatMovesPastTheSkinIsFound) {
     kept.update(p, fleet.keys, false);
     got.clear();
     kept.within(2, got);
-    EXPECT_EQ(got, (std::vector<Index>{1}));
+    EXPECT_EQ(got, (Indices{1}));
     expectAllMatch(kept, p, 2);
 
     // Two vehicles that each move a little less than half the skin towards each other: kept lists
@@ -126,7 +127,7 @@ TEST(KeptNeighbourhoods, AVehicleThatMovesPastTheSkinIsFound) {
     EXPECT_EQ(both.epochs(), 1u);
     got.clear();
     both.within(1, got);
-    EXPECT_EQ(got, (std::vector<Index>{0}));
+    EXPECT_EQ(got, (Indices{0}));
 }
 
 TEST(KeptNeighbourhoods, ANewcomerFindsAndIsFoundWithinTheEpoch) {
@@ -140,9 +141,9 @@ TEST(KeptNeighbourhoods, ANewcomerFindsAndIsFoundWithinTheEpoch) {
     p = fleet.positions();
     kept.update(p, fleet.keys, true);
     expectAllMatch(kept, p, 1);
-    std::vector<Index> got;
+    Indices got;
     kept.within(0, got);
-    EXPECT_EQ(got, (std::vector<Index>{1}));
+    EXPECT_EQ(got, (Indices{1}));
     // It moves on by 4 m (within the skin), vehicle 5 leaves: no new epoch, answers still exact.
     fleet = Fleet{{0, 3}, {0, 64}, {0, 0}};
     p = fleet.positions();

@@ -339,6 +339,71 @@ TEST(DiscMedium, DistanceBinsAtTheirEdgesCountAsPerLink) {
     EXPECT_EQ(plain.first, (std::vector<std::uint64_t>{1, 4, 4, 4, 4, 4, 4, 4, 2}));
 }
 
+// Vehicles that all move far each step (the kept lists do not last: each sender's neighbours come
+// from the step's grid, read as a bit set with the grid test's own squared distances), most of
+// them sending at each step, a few at steps 5-6: each frame reaches exactly the stations (with
+// services) in range at its step, in the order sent, counted in the distance bins of its links as
+// Medium::countLink counts them, traced or not.
+TEST(DiscMedium, EachFrameReachesTheStationsInRangeWhenAllMoveFarEachStep) {
+    QuietTrace quiet;
+    const auto place = [](int i, int k) {
+        return std::pair{1000.0 * k + 40.0 * (i % 10) + 7.0 * k * (i % 3), 35.0 * (i / 10) - 11.0 * k * (i % 4 == 1)};
+    };
+    const auto id = [](int i) { return (i % 11 == 5 ? "bare" : "v") + std::to_string(100 + i); };
+    const auto run = [&](bool traced) {
+        Harness h(kAllButBare, disc(150));
+        if (traced) h.medium.setTrace(&quiet);
+        int seq = 0;
+        for (int k = 1; k <= 8; ++k) {
+            std::vector<VehicleSnapshot::Vehicle> vehicles;
+            for (int i = 0; i < 90; ++i) vehicles.push_back(vehicle(id(i), place(i, k).first, place(i, k).second));
+            const SimTime t = secs(1 + 0.1 * k);
+            h.step(t, std::move(vehicles));
+            for (int i = 0; i < 90; ++i) {
+                const bool sends = k == 5 || k == 6 ? i % 30 == 1 : i % 11 != 5;
+                if (sends) sendAt(h, t, id(i), "Ping", seq++);
+            }
+        }
+        h.sim.run(secs(3));
+        std::map<std::string, std::vector<std::string>> heard;
+        for (int i = 0; i < 90; ++i) {
+            if (const ProbeRecord* r = h.log.find(id(i)))
+                for (const Indication& ind : r->indications)
+                    heard[id(i)].push_back(ind.sender + "#" + std::to_string(ind.seq));
+        }
+        const auto& c = h.medium.counts().at("Ping");
+        return std::make_tuple(heard, c.linkStations, c.delivered);
+    };
+    // Brute force: per frame, the stations with services within 150 m at its step, in sending order.
+    std::map<std::string, std::vector<std::string>> heard;
+    std::vector<std::uint64_t> bins;
+    std::uint64_t delivered = 0;
+    int seq = 0;
+    for (int k = 1; k <= 8; ++k) {
+        for (int s = 0; s < 90; ++s) {
+            const bool sends = k == 5 || k == 6 ? s % 30 == 1 : s % 11 != 5;
+            if (!sends) continue;
+            const int frame = seq++;
+            for (int r = 0; r < 90; ++r) {
+                const double dx = place(r, k).first - place(s, k).first;
+                const double dy = place(r, k).second - place(s, k).second;
+                if (r == s || r % 11 == 5 || dx * dx + dy * dy > 150.0 * 150.0) continue;
+                heard[id(r)].push_back(id(s) + "#" + std::to_string(frame));
+                const auto bin = static_cast<std::size_t>(std::sqrt(dx * dx + dy * dy) / 50);
+                if (bins.size() <= bin) bins.resize(bin + 1);
+                ++bins[bin];
+                ++delivered;
+            }
+        }
+    }
+    const auto plain = run(false);
+    EXPECT_EQ(std::get<0>(plain), heard);
+    EXPECT_EQ(std::get<1>(plain), bins);
+    EXPECT_EQ(std::get<2>(plain), delivered);
+    EXPECT_EQ(plain, run(true));
+    EXPECT_GT(delivered, 5000u);
+}
+
 // --- packet errors ---------------------------------------------------------------------------
 
 TEST(DiscSettings, InvalidSettingsAreRejected) {

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <vector>
 
 #include "TestScenes.h"
 
@@ -167,6 +170,50 @@ TEST(NeighbourGrid, RejectsABadCellSize) {
     EXPECT_THROW(grid.build(s, -1), std::invalid_argument);
     EXPECT_THROW(grid.build(s, std::numeric_limits<double>::infinity()), std::invalid_argument);
     EXPECT_THROW(grid.build(s, std::nan("")), std::invalid_argument);
+}
+
+// markWithin is within() as a bit set (read back ascending: the same indices), with each marked
+// vehicle's squared distance as the test computes it, bit for bit, in the dense layout (random
+// places, a lattice with exact distances, one spot), the hashed one (a stray far-off position) and
+// for a radius of many cells.
+TEST(NeighbourGrid, MarkWithinIsWithinAsABitSetWithTheSquaredDistances) {
+    const auto check = [](const Eigen::Matrix2Xd& p, double cell, double radius) {
+        NeighbourGrid grid;
+        grid.build(p, cell);
+        const auto n = static_cast<std::size_t>(p.cols());
+        std::vector<std::uint64_t> marks((n + 63) / 64, 0);
+        std::vector<double> squared(n, -1);
+        for (Index i = 0; i < p.cols(); ++i) {
+            grid.markWithin(i, radius, marks.data(), squared.data());
+            std::vector<Index> got;
+            for (std::size_t w = 0; w < marks.size(); ++w) {
+                for (std::uint64_t bits = marks[w]; bits != 0; bits &= bits - 1)
+                    got.push_back(static_cast<Index>(w * 64 + static_cast<std::size_t>(std::countr_zero(bits))));
+                marks[w] = 0;
+            }
+            ASSERT_EQ(got, grid.within(i, radius)) << "vehicle " << i;
+            for (const Index j : got) {
+                const double dx = p(0, j) - p(0, i);
+                const double dy = p(1, j) - p(1, i);
+                ASSERT_EQ(std::bit_cast<std::uint64_t>(squared[static_cast<std::size_t>(j)]),
+                          std::bit_cast<std::uint64_t>(dx * dx + dy * dy));
+                ASSERT_EQ(std::sqrt(squared[static_cast<std::size_t>(j)]), (p.col(j) - p.col(i)).norm());
+            }
+        }
+    };
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> place(0, 3000);
+    Eigen::Matrix2Xd p(2, 700);
+    for (Eigen::Index i = 0; i < p.cols(); ++i) p.col(i) << place(rng), place(rng);
+    check(p, 125, 500);
+    check(p, 10, 300);  // a radius of thirty cells
+    Eigen::Matrix2Xd lattice(2, 100);
+    for (Eigen::Index i = 0; i < 100; ++i) lattice.col(i) << 30.0 * (i % 10), 40.0 * (i / 10);  // 3-4-5 triangles
+    lattice.col(99) = lattice.col(98);                                                          // two on one spot
+    check(lattice, 25, 50);
+    Eigen::Matrix2Xd stray = p;
+    stray.col(3) << 1e7, -4e6;  // far off: hashed cells
+    check(stray, 125, 500);
 }
 
 }  // namespace

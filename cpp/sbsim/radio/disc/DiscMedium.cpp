@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -158,13 +159,28 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             near.others.clear();
             if (kept_->lasting(kLastingUpdates)) {
                 kept_->within(*self, near.others);
+                near.distance.resize(near.others.size());
+                for (std::size_t k = 0; k < near.others.size(); ++k)
+                    near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
             } else {
+                // The grid's answer as a bit set read in ascending order, each distance the root of
+                // the grid test's own square: the bits of (positions(j) - positions(i)).norm().
                 buildGrid();
-                near.others = grid_.within(*self, radius);
+                const auto n = static_cast<std::size_t>(positions.cols());
+                const std::size_t words = (n + 63) / 64;
+                if (marks_.size() != words) marks_.assign(words, 0);
+                if (squared_.size() < n) squared_.resize(n);
+                grid_.markWithin(*self, radius, marks_.data(), squared_.data());
+                near.distance.clear();
+                for (std::size_t w = 0; w < words; ++w) {
+                    for (std::uint64_t bits = marks_[w]; bits != 0; bits &= bits - 1) {
+                        const std::size_t j = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+                        near.others.push_back(static_cast<traffic::NeighbourGrid::Index>(j));
+                        near.distance.push_back(std::sqrt(squared_[j]));
+                    }
+                    marks_[w] = 0;
+                }
             }
-            near.distance.resize(near.others.size());
-            for (std::size_t k = 0; k < near.others.size(); ++k)
-                near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
             near.step = step_;
             near.radius = radius;
             near.receiversKnown = false;
@@ -218,9 +234,11 @@ void DiscMedium::buildGrid() {
 void DiscMedium::takeReceivers(Neighbourhood& near) {
     std::vector<Receiver*>& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
-    receivers.resize(near.others.size());
-    stations.resize(near.others.size());
-    std::size_t taken = 0;
+    // Appended within the reserved room: no zero-filled resize first.
+    receivers.clear();
+    stations.clear();
+    receivers.reserve(near.others.size());
+    stations.reserve(near.others.size());
     // Counted per bin in a small array while the range has few bins (no growth check per link).
     constexpr std::size_t kFewBins = 64;
     std::array<std::uint64_t, kFewBins> few{};
@@ -235,9 +253,8 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
             receiverKnown_[other] = 1;
         }
         if (receivers_[other] == nullptr) continue;  // a vehicle without services
-        receivers[taken] = receivers_[other];
-        stations[taken] = stationIndices_[other];
-        ++taken;
+        receivers.push_back(receivers_[other]);
+        stations.push_back(stationIndices_[other]);
         if (!(distance >= 0)) continue;  // as Medium::countLink
         // distance / kDistanceBin, as Medium::countLink, without a division per link: a product
         // lands in the same bin unless it is within a hair of a bin's edge (then divided).
@@ -252,8 +269,6 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
     }
-    receivers.resize(taken);
-    stations.resize(taken);
     if (fewBins) {
         std::size_t bins = kFewBins;
         while (bins > 0 && few[bins - 1] == 0) --bins;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sbsim/kernel/DefaultInitAllocator.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/RandomStream.h"
 #include "sbsim/radio/Medium.h"
@@ -37,6 +38,9 @@ private:
     /// pay (built when first needed in a step).
     traffic::NeighbourGrid grid_;
     bool gridBuilt_ = false;
+    /// A grid query's scratch: its answer as a bit set and the squared distances, per snapshot index.
+    std::vector<std::uint64_t> marks_;
+    std::vector<double, kernel::DefaultInitAllocator<double>> squared_;
     std::optional<kernel::SimTime> gridTime_;  // the snapshot time of step_
     std::uint64_t step_ = 0;                   // counts the snapshot's steps seen
     /// A vehicle's neighbours, from lists kept across steps (for one radius: the range, or the
@@ -64,8 +68,8 @@ private:
     struct Neighbourhood {
         std::uint64_t step = 0;  // step_ of `others`; 0: none
         double radius = 0;
-        std::vector<traffic::NeighbourGrid::Index> others;
-        std::vector<double> distance;
+        KeptNeighbourhoods::Indices others;
+        std::vector<double, kernel::DefaultInitAllocator<double>> distance;
         /// Without packet errors or a trace every station in range receives: the stations in
         /// range (receivers, their indices, in the order above) and their count per distance bin,
         /// taken once per step and module change, so a frame copies them instead of visiting each link.

@@ -108,7 +108,7 @@ bool KeptNeighbourhoods::reachable(Key a, Key b) const {
     return dx * dx + dy * dy <= reach_ * reach_;
 }
 
-void KeptNeighbourhoods::within(Index i, std::vector<Index>& out) {
+void KeptNeighbourhoods::within(Index i, Indices& out) {
     const Key self = keys_[static_cast<std::size_t>(i)];
     if (lists_.size() <= self) lists_.resize(self + 1);
     List& list = lists_[self];

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "sbsim/kernel/DefaultInitAllocator.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 
@@ -30,6 +31,8 @@ class SBSIM_API KeptNeighbourhoods {
 public:
     using Index = traffic::NeighbourGrid::Index;
     using Key = std::uint32_t;
+    /// A neighbour list: grown without a zero-fill (within() writes every candidate, keeps some).
+    using Indices = std::vector<Index, kernel::DefaultInitAllocator<Index>>;
 
     /// Lists of `radius` + `skin` m (skin > 0, finite; else std::invalid_argument).
     KeptNeighbourhoods(double radius, double skin);
@@ -42,7 +45,7 @@ public:
     void update(const Eigen::Matrix2Xd& positions, std::span<const Key> keys, bool idsChanged);
 
     /// Appends to `out` the vehicles j != i within radius() of vehicle i, ascending.
-    void within(Index i, std::vector<Index>& out);
+    void within(Index i, Indices& out);
 
     /// Epochs started so far (for tests and figures).
     std::uint64_t epochs() const { return epochs_; }
