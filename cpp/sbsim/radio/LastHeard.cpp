@@ -72,6 +72,8 @@ void LastHeard::hearList(List stations, kernel::SimTime now, kernel::SimTime sin
 }
 
 namespace {
+/// Newcomers fewer than a table's stations by this factor are merged by block moves.
+constexpr std::size_t kFewNewcomers = 16;
 /// How many of `a` and `b` (n each) are equal from the start: eight at a time while the runs are
 /// long (a chunk without an early exit, vectorised), then one at a time.
 std::size_t sameRun(const LastHeard::Index* a, const LastHeard::Index* b, std::size_t n) {
@@ -212,15 +214,31 @@ void LastHeard::walk(std::span<const Index> stations, kernel::SimTime now, kerne
 void LastHeard::addNewcomers(kernel::SimTime now) {
     std::sort(newcomers_.begin(), newcomers_.end());
     newcomers_.erase(std::unique(newcomers_.begin(), newcomers_.end()), newcomers_.end());
-    // Merged from the back, in place: each newcomer's place found by a search, the stations above
-    // it moved as one block (a few newcomers among a thousand stations: block copies, not a
-    // comparison per station).
-    const std::size_t old = stations_.size();
-    const std::size_t add = newcomers_.size();
+    // Merged from the back, in place: each array moves once.
+    std::size_t old = stations_.size();
+    std::size_t add = newcomers_.size();
     stations_.resize(old + add);
     heardNs_.resize(old + add);
     Index* const stations = stations_.data();
     kernel::SimTime::rep* const heard = heardNs_.data();
+    if (add * kFewNewcomers > old) {
+        // Many (a table filling): a comparison per station moved.
+        for (std::size_t out = old + add; add > 0;) {
+            --out;
+            if (old > 0 && stations[old - 1] > newcomers_[add - 1]) {
+                --old;
+                stations[out] = stations[old];
+                heard[out] = heard[old];
+            } else {
+                --add;
+                stations[out] = newcomers_[add];
+                heard[out] = now.raw();
+            }
+        }
+        return;
+    }
+    // A few among many (a sender's next step): each newcomer's place found by a search, the
+    // stations above it moved as one block.
     std::size_t end = old;  // stations_[0, end) are not moved yet
     for (std::size_t k = add; k > 0; --k) {
         const Index station = newcomers_[k - 1];
