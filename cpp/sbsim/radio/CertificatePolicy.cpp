@@ -1,5 +1,7 @@
 #include "sbsim/radio/CertificatePolicy.h"
 
+#include <algorithm>
+
 namespace sbsim::radio {
 
 CertificatePolicy::Station& CertificatePolicy::of(Index station, kernel::SimTime now) {
@@ -75,6 +77,17 @@ void CertificatePolicy::heardAll(LastHeard::List stations, Index sender, Securit
     heardBy(sender, profile, now, [&](LastHeard& table, kernel::SimTime since) {
         table.hearList(std::move(stations), now, since, unknown_);
     });
+}
+
+bool CertificatePolicy::sameList(Index sender, std::span<const Index> last, std::span<const Index> next) {
+    if (!secured_) return std::ranges::equal(last, next);
+    if (sender >= heardBy_.size()) heardBy_.resize(sender + 1);
+    return heardBy_[sender].compare(last, next);
+}
+
+void CertificatePolicy::expectList(Index sender, LastHeard::List from, LastHeard::List to) {
+    if (!secured_ || sender >= heardBy_.size()) return;
+    heardBy_[sender].expect(std::move(from), std::move(to));
 }
 
 }  // namespace sbsim::radio

@@ -60,6 +60,12 @@ public:
     /// The same for a list that may come again unchanged for the sender's next frames (a medium's
     /// receivers of the step; it must not change while held): a repeat costs no walk (LastHeard::hearList).
     void heardAll(LastHeard::List stations, Index sender, SecurityProfile profile, kernel::SimTime now);
+    /// Whether a medium's `next` list of `sender`'s receivers equals its `last` (the medium shares
+    /// the last again then): compared as the sender's table will split them (LastHeard::compare).
+    bool sameList(Index sender, std::span<const Index> last, std::span<const Index> next);
+    /// The lists sameList() last compared for `sender`, shared as `from` and `to`: the frames of
+    /// `to` take that comparison's split (LastHeard::expect).
+    void expectList(Index sender, LastHeard::List from, LastHeard::List to);
     void heard(std::string_view station, std::string_view sender, SecurityProfile profile, kernel::SimTime now) {
         if (secured_) heard(index(station), index(sender), profile, now);
     }

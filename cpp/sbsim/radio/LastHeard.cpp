@@ -1,6 +1,7 @@
 #include "sbsim/radio/LastHeard.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace sbsim::radio {
 
@@ -53,7 +54,7 @@ void LastHeard::hearList(List stations, kernel::SimTime now, kernel::SimTime sin
         pendingDirty_ = true;
         return;
     }
-    if (pending_ != nullptr && since.raw() <= pendingNs_ && differ(*stations)) {
+    if (pending_ != nullptr && since.raw() <= pendingNs_ && split(stations)) {
         // Kept stations are known and note `now` with the new list; gone ones get the held
         // list's time first, so a station matched as gone and come reads it as a walk would.
         if (pendingDirty_) write(gone_, pendingNs_);
@@ -70,21 +71,65 @@ void LastHeard::hearList(List stations, kernel::SimTime now, kernel::SimTime sin
     pendingNs_ = now.raw();
 }
 
-bool LastHeard::differ(std::span<const Index> stations) {
+namespace {
+/// Newcomers fewer than a table's stations by this factor are merged by block moves.
+constexpr std::size_t kFewNewcomers = 16;
+/// How many of `a` and `b` (n each) are equal from the start: eight at a time while the runs are
+/// long (a chunk without an early exit, vectorised), then one at a time.
+std::size_t sameRun(const LastHeard::Index* a, const LastHeard::Index* b, std::size_t n) {
+    std::size_t k = 0;
+    for (; k + 8 <= n; k += 8) {
+        LastHeard::Index diff = 0;
+        for (std::size_t d = 0; d < 8; ++d) diff |= a[k + d] ^ b[k + d];
+        if (diff != 0) break;
+    }
+    while (k < n && a[k] == b[k]) ++k;
+    return k;
+}
+}  // namespace
+
+bool LastHeard::compare(std::span<const Index> last, std::span<const Index> next) {
+    expectFrom_.reset();
+    expectTo_.reset();
+    nextFew_ = differ(last, next, nextGone_, nextCome_);
+    // Nothing gone or come with every station matched in order: the same list.
+    return nextFew_ && nextGone_.empty() && nextCome_.empty();
+}
+
+void LastHeard::expect(List from, List to) {
+    expectFrom_ = std::move(from);
+    expectTo_ = std::move(to);
+}
+
+bool LastHeard::split(const List& stations) {
+    if (expectTo_ != nullptr && expectTo_ == stations && expectFrom_ == pending_) {
+        // Both lists are held (by the hint and here), so the same pointers are the same contents.
+        expectFrom_.reset();
+        expectTo_.reset();
+        gone_.swap(nextGone_);
+        come_.swap(nextCome_);
+        return nextFew_;
+    }
+    return differ(*pending_, *stations, gone_, come_);
+}
+
+bool LastHeard::differ(std::span<const Index> held, std::span<const Index> stations, std::vector<Index>& gone,
+                       std::vector<Index>& come) {
     // Both lists come in a medium's order, which keeps the relative order of the stations that
     // stay: matched in step, a mismatch resolved by a short look ahead on either side. Any
     // matching is correct (a station matched only as gone and come is walked); a poor one costs.
     constexpr std::size_t kAhead = 8;
-    const std::span<const Index> held(*pending_);
     const std::size_t limit = stations.size() / 4 + 16;
-    gone_.clear();
-    come_.clear();
+    gone.clear();
+    come.clear();
     std::size_t i = 0;
     std::size_t j = 0;
     while (i < held.size() && j < stations.size()) {
         if (held[i] == stations[j]) {
-            ++i;
-            ++j;
+            const std::size_t same = 1 + sameRun(held.data() + i + 1, stations.data() + j + 1,
+                                                 std::min(held.size() - i, stations.size() - j) - 1);
+            i += same;
+            j += same;
             continue;
         }
         std::size_t goneRun = 0;  // held[i, i + goneRun) gone, then held matches stations[j]
@@ -102,22 +147,22 @@ bool LastHeard::differ(std::span<const Index> stations) {
             }
         }
         if (goneRun != 0 && (comeRun == 0 || goneRun <= comeRun)) {
-            gone_.insert(gone_.end(), held.begin() + static_cast<std::ptrdiff_t>(i),
-                         held.begin() + static_cast<std::ptrdiff_t>(i + goneRun));
+            gone.insert(gone.end(), held.begin() + static_cast<std::ptrdiff_t>(i),
+                        held.begin() + static_cast<std::ptrdiff_t>(i + goneRun));
             i += goneRun;
         } else if (comeRun != 0) {
-            come_.insert(come_.end(), stations.begin() + static_cast<std::ptrdiff_t>(j),
-                         stations.begin() + static_cast<std::ptrdiff_t>(j + comeRun));
+            come.insert(come.end(), stations.begin() + static_cast<std::ptrdiff_t>(j),
+                        stations.begin() + static_cast<std::ptrdiff_t>(j + comeRun));
             j += comeRun;
         } else {
-            gone_.push_back(held[i++]);
-            come_.push_back(stations[j++]);
+            gone.push_back(held[i++]);
+            come.push_back(stations[j++]);
         }
-        if (gone_.size() + come_.size() > limit) return false;
+        if (gone.size() + come.size() > limit) return false;
     }
-    gone_.insert(gone_.end(), held.begin() + static_cast<std::ptrdiff_t>(i), held.end());
-    come_.insert(come_.end(), stations.begin() + static_cast<std::ptrdiff_t>(j), stations.end());
-    return gone_.size() + come_.size() <= limit;
+    gone.insert(gone.end(), held.begin() + static_cast<std::ptrdiff_t>(i), held.end());
+    come.insert(come.end(), stations.begin() + static_cast<std::ptrdiff_t>(j), stations.end());
+    return gone.size() + come.size() <= limit;
 }
 
 void LastHeard::write(std::span<const Index> stations, kernel::SimTime::rep ns) {
@@ -141,6 +186,8 @@ void LastHeard::flush() {
 void LastHeard::settle() {
     flush();
     pending_.reset();
+    expectFrom_.reset();
+    expectTo_.reset();
 }
 
 void LastHeard::walk(std::span<const Index> stations, kernel::SimTime now, kernel::SimTime since,
@@ -172,17 +219,37 @@ void LastHeard::addNewcomers(kernel::SimTime now) {
     std::size_t add = newcomers_.size();
     stations_.resize(old + add);
     heardNs_.resize(old + add);
-    for (std::size_t out = old + add; add > 0;) {
-        --out;
-        if (old > 0 && stations_[old - 1] > newcomers_[add - 1]) {
-            --old;
-            stations_[out] = stations_[old];
-            heardNs_[out] = heardNs_[old];
-        } else {
-            --add;
-            stations_[out] = newcomers_[add];
-            heardNs_[out] = now.raw();
+    Index* const stations = stations_.data();
+    kernel::SimTime::rep* const heard = heardNs_.data();
+    if (add * kFewNewcomers > old) {
+        // Many (a table filling): a comparison per station moved.
+        for (std::size_t out = old + add; add > 0;) {
+            --out;
+            if (old > 0 && stations[old - 1] > newcomers_[add - 1]) {
+                --old;
+                stations[out] = stations[old];
+                heard[out] = heard[old];
+            } else {
+                --add;
+                stations[out] = newcomers_[add];
+                heard[out] = now.raw();
+            }
         }
+        return;
+    }
+    // A few among many (a sender's next step): each newcomer's place found by a search, the
+    // stations above it moved as one block.
+    std::size_t end = old;  // stations_[0, end) are not moved yet
+    for (std::size_t k = add; k > 0; --k) {
+        const Index station = newcomers_[k - 1];
+        // None is known, so none equals a station held: it goes after those below it.
+        const std::size_t at = static_cast<std::size_t>(std::upper_bound(stations, stations + end, station) - stations);
+        // The k newcomers up to this one come before stations_[at, end): they move by k.
+        std::memmove(stations + at + k, stations + at, (end - at) * sizeof(Index));
+        std::memmove(heard + at + k, heard + at, (end - at) * sizeof(kernel::SimTime::rep));
+        stations[at + k - 1] = station;
+        heard[at + k - 1] = now.raw();
+        end = at;
     }
 }
 
@@ -205,6 +272,8 @@ void LastHeard::forgetBefore(kernel::SimTime before) {
         std::vector<Index>().swap(newcomers_);
         std::vector<Index>().swap(gone_);
         std::vector<Index>().swap(come_);
+        std::vector<Index>().swap(nextGone_);
+        std::vector<Index>().swap(nextCome_);
     }
 }
 

@@ -25,6 +25,10 @@ namespace sbsim::radio {
 /// (the sender's receivers of the next step) walks only the difference: its stations kept were
 /// heard at the held list's time, so they are known and only note the new one (as a repeat);
 /// those gone write the held time, those come are walked. Answers are those of a walk per frame.
+///
+/// A medium that must compare the sender's next list with its last anyway (to share the last
+/// again when equal) makes that comparison the split hearList() takes (compare(), then expect()
+/// once the new list is shared), so the two lists are matched once, not twice.
 class SBSIM_API LastHeard {
 public:
     using Index = std::uint32_t;
@@ -41,6 +45,12 @@ public:
     /// another list comes or forgetBefore()): the same list again, when none of its stations can
     /// have been heard before `since`, costs no walk.
     void hearList(List stations, kernel::SimTime now, kernel::SimTime since, std::vector<Index>& unknown);
+    /// Compares a sender's `next` list with its `last` as hearList() would split them; true when
+    /// they are equal. The split is kept for expect().
+    bool compare(std::span<const Index> last, std::span<const Index> next);
+    /// `from` and `to` hold the lists compare() last compared (unchanged since): hearList(to), while
+    /// `from` is the list held, takes compare()'s split instead of matching the lists again.
+    void expect(List from, List to);
     /// Forgets the stations that last heard before `before`.
     void forgetBefore(kernel::SimTime before);
     /// Repeats of a list noted and not yet written (for tests).
@@ -58,9 +68,12 @@ private:
     void flush();
     /// flush(), and the list dropped: the arrays are about to change otherwise.
     void settle();
-    /// Splits `stations` against `pending_` into gone_ (held only) and come_ (new only, in their
+    /// Splits `stations` against `held` into `gone` (held only) and `come` (new only, in their
     /// order), the rest matched in order; false when they differ by too many for this to pay.
-    bool differ(std::span<const Index> stations);
+    static bool differ(std::span<const Index> held, std::span<const Index> stations, std::vector<Index>& gone,
+                       std::vector<Index>& come);
+    /// differ() against `pending_` into gone_ and come_, or the split expect() named for this list.
+    bool split(const List& stations);
     /// Writes `ns` as the time of each of `stations`, all in the arrays.
     void write(std::span<const Index> stations, kernel::SimTime::rep ns);
     /// hearAll()'s walk, on arrays that hold every reception.
@@ -70,6 +83,9 @@ private:
     std::vector<kernel::SimTime::rep> heardNs_;  // as stations_
     std::vector<Index> newcomers_;               // scratch of hearAll
     std::vector<Index> gone_, come_;             // scratch of hearList's difference
+    std::vector<Index> nextGone_, nextCome_;     // compare()'s split
+    bool nextFew_ = false;                       // compare()'s differ() answer
+    List expectFrom_, expectTo_;                 // the lists of nextGone_ and nextCome_ (expect)
     List pending_;                               // the last list walked or noted (hearList)
     kernel::SimTime::rep pendingNs_ = 0;         // when it was heard last: every station of it at or after
     bool pendingDirty_ = false;                  // its stations' times in the arrays are older

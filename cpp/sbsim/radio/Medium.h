@@ -151,6 +151,8 @@ protected:
     /// use_count() is 1.
     void deliverLater(std::shared_ptr<const V2xMessage> message, std::shared_ptr<const Recipients> recipients,
                       kernel::SimTime delay);
+    /// The certificate policy, for a medium that hands it how a sender's kept list changed.
+    CertificatePolicy& certificates() { return certificates_; }
 
 private:
     /// One frame's receptions at one time: a kernel event the medium keeps and reuses.

@@ -225,6 +225,130 @@ TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
     }
 }
 
+// The medium's path: a sender's next list compared with its last once (compare), the last shared
+// again when equal, else the new list expected (expect) so its frames take that split. Lists change
+// by a few stations or many (past the split's limit), mostly ascending, now and then reshuffled;
+// a comparison now and then not followed by its list's frames (a hint gone stale), frames of
+// another list, single receptions and forgetting between. Against a full walk per frame (hearAll)
+// and a std::map, frame by frame and the history left.
+TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
+    for (const unsigned seed : {4u, 5u, 6u, 7u}) {
+        std::mt19937 random(seed);
+        LastHeard heard, walked;
+        std::map<Index, SimTime> reference;
+        const SimTime window = SimTime::fromMilliseconds(500);
+        std::vector<Index> current;
+        for (Index s = 0; s < 600; ++s) {
+            if (random() % 2 == 0) current.push_back(s);
+        }
+        LastHeard::List last;
+        SimTime now = SimTime::zero();
+        std::size_t lists = 0, same = 0;
+        const auto frameOf = [&](const LastHeard::List& list, SimTime at, const std::string& what) {
+            std::vector<Index> unknown, full;
+            heard.hearList(list, at, at - window, unknown);
+            walked.hearAll(*list, at, at - window, full);
+            EXPECT_EQ(unknown, full) << "seed " << seed << " " << what;
+            std::vector<Index> expected;
+            for (const Index s : *list) {
+                const auto it = reference.find(s);
+                if (it == reference.end() || it->second < at - window) expected.push_back(s);
+                reference[s] = at;
+            }
+            EXPECT_EQ(unknown, expected) << "seed " << seed << " " << what;
+            return !::testing::Test::HasFailure();
+        };
+        for (int step = 0; step < 800; ++step) {
+            const unsigned pick = random() % 50;
+            if (pick == 0) {
+                std::shuffle(current.begin(), current.end(), random);
+            } else if (pick == 1) {
+                std::sort(current.begin(), current.end());
+            } else if (pick < 4) {
+                // Many changed: past a quarter of the list.
+                current.clear();
+                for (Index s = 0; s < 600; ++s) {
+                    if (random() % 2 == 0) current.push_back(s);
+                }
+            } else if (pick < 12) {
+                // Unchanged: the medium shares the last list again.
+            } else {
+                // A few to some tens gone and come, ascending where the list was.
+                const unsigned changes = random() % 4 == 0 ? 40 : 6;
+                for (unsigned gone = random() % changes; gone > 0 && !current.empty(); --gone)
+                    current.erase(current.begin() + static_cast<std::ptrdiff_t>(random() % current.size()));
+                for (unsigned come = random() % changes; come > 0; --come) {
+                    const Index s = static_cast<Index>(random() % 700);
+                    if (std::find(current.begin(), current.end(), s) != current.end()) continue;
+                    const auto at = std::upper_bound(current.begin(), current.end(), s);
+                    current.insert(random() % 8 == 0
+                                       ? current.begin() + static_cast<std::ptrdiff_t>(random() % (current.size() + 1))
+                                       : at,
+                                   s);
+                }
+            }
+            // As DiscMedium::takeReceivers: the comparison decides whether the last list goes again.
+            LastHeard::List list;
+            if (last != nullptr && heard.compare(*last, current)) {
+                ASSERT_EQ(*last, current) << "seed " << seed << " step " << step;
+                list = last;
+                ++same;
+            } else {
+                if (last != nullptr) ASSERT_NE(*last, current) << "seed " << seed << " step " << step;
+                list = std::make_shared<const std::vector<Index>>(current);
+                if (last != nullptr && random() % 10 != 0) heard.expect(last, list);
+                ++lists;
+            }
+            now = now + SimTime::fromMilliseconds(random() % 30 == 0 ? 650 : 100);
+            if (random() % 20 == 0) {
+                // The comparison made, but another list comes first (a frame of the step before
+                // still on the air, or one of its own).
+                if (last != nullptr && random() % 2 == 0) {
+                    ASSERT_TRUE(frameOf(last, now, "step " + std::to_string(step) + " (late)"));
+                } else {
+                    std::vector<Index> own{static_cast<Index>(random() % 700), 650, 660};
+                    std::vector<Index> unknown, full;
+                    heard.hearAll(own, now, now - window, unknown);
+                    walked.hearAll(own, now, now - window, full);
+                    ASSERT_EQ(unknown, full) << "seed " << seed << " step " << step << " (own frame)";
+                    for (const Index s : own) reference[s] = now;
+                }
+            }
+            // Now and then none of the list's frames comes (their receivers left): the next
+            // comparison is then against a list the table never held.
+            const unsigned frames = random() % 15 == 0 ? 0 : 1 + random() % 10;
+            for (unsigned frame = 0; frame < frames; ++frame) {
+                const SimTime at = now + SimTime::fromMilliseconds(1 + 9 * frame);
+                ASSERT_TRUE(frameOf(list, at, "step " + std::to_string(step) + " frame " + std::to_string(frame)));
+            }
+            last = list;
+            const unsigned between = random() % 30;
+            const SimTime later = now + SimTime::fromMilliseconds(95);
+            if (between == 0) {
+                const Index s = static_cast<Index>(random() % 700);
+                ASSERT_EQ(heard.hear(s, later), walked.hear(s, later)) << "seed " << seed << " station " << s;
+                reference[s] = later;
+            } else if (between == 1) {
+                const SimTime before = now - SimTime::fromMilliseconds(random() % 2 == 0 ? 300 : 5);
+                heard.forgetBefore(before);
+                walked.forgetBefore(before);
+                std::erase_if(reference, [&](const auto& entry) { return entry.second < before; });
+            }
+            ASSERT_EQ(heard.size(), walked.size()) << "seed " << seed << " step " << step;
+        }
+        // The paths were taken: lists shared again, and most new ones by their difference.
+        EXPECT_GT(same, 50u) << "seed " << seed;
+        EXPECT_GT(heard.differences(), lists / 2) << "seed " << seed;
+        const SimTime end = now + SimTime::fromSeconds(10);
+        heard.forgetBefore(SimTime::zero());
+        ASSERT_EQ(heard.size(), reference.size());
+        for (const auto& [s, t] : reference) {
+            EXPECT_EQ(heard.hear(s, end), t) << "seed " << seed << " station " << s;
+            EXPECT_EQ(walked.hear(s, end), t) << "seed " << seed << " station " << s;
+        }
+    }
+}
+
 TEST(LastHeard, ARepeatAfterTheWindowFindsItsStationsUnknown) {
     LastHeard heard;
     const auto list = std::make_shared<const std::vector<Index>>(std::vector<Index>{2, 5, 9});

@@ -278,17 +278,26 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
     near.receiversKnown = true;
     near.receiversChanges = receiversChanges_;
     // The same receivers as the sender's last list: that list again (the certificate policy then
-    // walks nothing). Else a new one, unless nobody else holds the last (frames on the air, the
-    // policy) and it can be refilled in place.
-    if (near.recipients != nullptr && near.recipients->stations == stations && near.recipients->receivers == receivers)
+    // walks nothing). The comparison is the sender's table's own split of the two lists, which it
+    // takes when this list's frames come instead of matching them again. Else a new list, unless
+    // nobody else holds the last (frames on the air, the policy) and it can be refilled in place.
+    const auto sender = static_cast<StationIndex>(&near - near_.data());
+    std::shared_ptr<Recipients> last = near.recipients;
+    if (last != nullptr && certificates().sameList(sender, last->stations, stations) && last->receivers == receivers)
         return;
-    if (near.recipients == nullptr || near.recipients.use_count() > 1) {
+    if (last == nullptr || last.use_count() > 2) {  // held elsewhere than here and in `last`
         near.recipients = std::make_shared<Recipients>();
         near.recipients->receivers.reserve(receivers.size());
         near.recipients->stations.reserve(stations.size());
+    } else {
+        last.reset();  // refilled in place: no list to split against
     }
     near.recipients->receivers.swap(receivers);
     near.recipients->stations.swap(stations);
+    if (last != nullptr) {
+        certificates().expectList(sender, LastHeard::List(last, &last->stations),
+                                  LastHeard::List(near.recipients, &near.recipients->stations));
+    }
 }
 
 }  // namespace sbsim::radio
