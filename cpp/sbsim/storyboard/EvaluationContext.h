@@ -15,8 +15,6 @@
 
 namespace sbsim::storyboard {
 
-class StepPairs;
-
 /// What conditions may read during one evaluation pass (one SUMO step): the step's snapshot, the
 /// time, and a spatial index over the snapshot built once for the step. Conditions never call
 /// libsumo directly; the few that need a value the snapshot lacks ask queries(), only for the
@@ -27,14 +25,13 @@ public:
                       traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr,
                       const facilities::StationRegistry* stations = nullptr,
                       const traffic::Penetration* penetration = nullptr)
-        : EvaluationContext(snapshot, &neighbours, nullptr, nullptr, queries, parallel, stations, penetration) {}
-    /// The same with the step's grid built only if a condition asks for it and the step's shared
-    /// pair sweep (the storyboard's pass).
+        : EvaluationContext(snapshot, &neighbours, nullptr, queries, parallel, stations, penetration) {}
+    /// The same with the step's grid built only if a condition asks for it (the storyboard's pass).
     EvaluationContext(const traffic::VehicleSnapshot& snapshot, const StepNeighbours& lazyNeighbours,
                       traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr,
                       const facilities::StationRegistry* stations = nullptr,
-                      const traffic::Penetration* penetration = nullptr, StepPairs* pairs = nullptr)
-        : EvaluationContext(snapshot, nullptr, &lazyNeighbours, pairs, queries, parallel, stations, penetration) {}
+                      const traffic::Penetration* penetration = nullptr)
+        : EvaluationContext(snapshot, nullptr, &lazyNeighbours, queries, parallel, stations, penetration) {}
 
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     kernel::SimTime now() const { return snapshot_.time(); }
@@ -54,10 +51,6 @@ public:
     /// evaluated without a simulation (then that work runs on the calling thread). Never used
     /// from test(), which already runs on the pool.
     kernel::ParallelFor* parallel() const { return parallel_; }
-    /// The step's pair sweep, which a condition answering from all pairs within its radius joins
-    /// in prepare() (run after every prepare(), shared with the other users); null outside the
-    /// storyboard's pass (then such a condition sweeps alone).
-    StepPairs* pairs() const { return pairs_; }
     /// What each station heard over V2X (its LDM, its DENM memory), which the V2X conditions read;
     /// null in a run without services (then nobody heard anything).
     const facilities::StationRegistry* stations() const { return stations_; }
@@ -70,13 +63,12 @@ public:
 private:
     /// Both public constructors' one initialisation: exactly one of the two grids is given.
     EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid* neighbours,
-                      const StepNeighbours* lazyNeighbours, StepPairs* pairs, traffic::TrafficQueries* queries,
+                      const StepNeighbours* lazyNeighbours, traffic::TrafficQueries* queries,
                       kernel::ParallelFor* parallel, const facilities::StationRegistry* stations,
                       const traffic::Penetration* penetration)
         : snapshot_(snapshot),
           neighbours_(neighbours),
           lazyNeighbours_(lazyNeighbours),
-          pairs_(pairs),
           queries_(queries),
           parallel_(parallel),
           stations_(stations),
@@ -85,7 +77,6 @@ private:
     const traffic::VehicleSnapshot& snapshot_;
     const traffic::NeighbourGrid* neighbours_;  // given built, or
     const StepNeighbours* lazyNeighbours_;      // built on first use
-    StepPairs* pairs_;
     traffic::TrafficQueries* queries_;
     kernel::ParallelFor* parallel_;
     const facilities::StationRegistry* stations_;

@@ -113,10 +113,9 @@ void Storyboard::update(const traffic::VehicleSnapshot& snapshot, std::vector<st
     // Built on first use: a condition that answers from its own sweep ahead never asks.
     grid_.reset(snapshot, std::max(neighbourRadius_.value_or(0.0), 5.0));
     const EvaluationContext ctx(snapshot, grid_, queries_.get(), &simulation().parallel(), stations_.get(),
-                                &penetration_, &pairs_);
+                                &penetration_);
     for (Condition* c : conditions_) c->prepare(ctx);
     for (const CriterionPtr& c : criteria_) c->prepare(ctx);
-    pairs_.run(ctx);  // one sweep for every condition that joined it in prepare()
     if (!world_.empty()) {
         world_.run(now_);
         vehicles_.setGone(world_.network().removedAfterInsertion());

@@ -20,7 +20,6 @@
 #include "sbsim/storyboard/EventLog.h"
 #include "sbsim/storyboard/NetworkStack.h"
 #include "sbsim/storyboard/StepNeighbours.h"
-#include "sbsim/storyboard/StepPairs.h"
 #include "sbsim/storyboard/Story.h"
 #include "sbsim/storyboard/VehiclePass.h"
 #include "sbsim/storyboard/WorldPass.h"
@@ -120,7 +119,6 @@ private:
     traffic::SnapshotColumns conditionColumns_;
     std::optional<double> neighbourRadius_;
     StepNeighbours grid_;  // built only in steps where a condition searches neighbours
-    StepPairs pairs_;      // the step's pair sweep, shared by the conditions answering ahead
     std::unique_ptr<traffic::TrafficQueries> queries_;
     std::shared_ptr<const facilities::StationRegistry> stations_;
     traffic::Penetration penetration_;

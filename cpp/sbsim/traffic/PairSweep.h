@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -30,9 +29,7 @@ public:
     std::size_t rows() const { return rowStart_.empty() ? 0 : rowStart_.size() - 1; }
 
     /// Calls `visit(a, b)` (a != b, either may be the smaller index) once for every pair of row
-    /// `row` within the radius, or `visit(a, b, d2)` with d2 = dx·dx + dy·dy, the squared distance
-    /// the radius was tested against (the same bits whichever of the two is a). The order of the
-    /// calls is unspecified.
+    /// `row` within the radius. The order of the calls is unspecified.
     template <typename Visit>
     void forEachPairInRow(std::size_t row, Visit&& visit) const;
 
@@ -77,16 +74,8 @@ void PairSweep::forEachPairInRow(std::size_t row, Visit&& visit) const {
     const auto test = [&](std::int32_t a, std::int32_t b) {
         const double dx = xs[b] - xs[a];
         const double dy = ys[b] - ys[a];
-        const double d2 = dx * dx + dy * dy;
-        if (d2 <= r2) {
-            const Index ia = indices_[static_cast<std::size_t>(a)];
-            const Index ib = indices_[static_cast<std::size_t>(b)];
-            if constexpr (std::is_invocable_v<Visit&, Index, Index, double>) {
-                visit(ia, ib, d2);
-            } else {
-                visit(ia, ib);
-            }
-        }
+        if (dx * dx + dy * dy <= r2)
+            visit(indices_[static_cast<std::size_t>(a)], indices_[static_cast<std::size_t>(b)]);
     };
     const std::uint32_t first = rowStart_[row];
     const std::uint32_t last = rowStart_[row + 1];

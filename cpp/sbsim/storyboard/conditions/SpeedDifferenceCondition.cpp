@@ -44,44 +44,24 @@ void SpeedDifferenceCondition::prepare(const EvaluationContext& ctx) {
     const std::size_t before = preparedSize_;
     preparedSize_ = static_cast<std::size_t>(ctx.snapshot().size());
     const std::size_t asked = tests_.exchange(0, std::memory_order_relaxed);
-    if (ctx.parallel() != nullptr && before > 0 && 2 * asked >= before) {
-        // From the step's sweep shared with the other conditions that answer ahead (the board
-        // runs it after every prepare()), or our own.
-        if (ctx.pairs() != nullptr) {
-            ctx.pairs()->join(*this);
-        } else {
-            ownPairs_.join(*this);
-            ownPairs_.run(ctx);
-        }
-    }
+    if (ctx.parallel() != nullptr && before > 0 && 2 * asked >= before) computeAnswers(ctx);
 }
 
-void SpeedDifferenceCondition::keepPairs(const traffic::VehicleSnapshot& snapshot,
-                                         std::span<const StepPairs::Pair> pairs,
-                                         std::vector<StepPairs::Pair>& kept) const {
-    const Eigen::VectorXd& speeds = snapshot.speeds();
-    for (const auto& [a, b] : pairs) keepPair(speeds, a, b, kept);
-}
-
-void SpeedDifferenceCondition::sweepRow(const traffic::VehicleSnapshot& snapshot, const traffic::PairSweep& sweep,
-                                        std::size_t row, StepPairs::Handover& handover,
-                                        std::vector<StepPairs::Pair>& kept) const {
-    const Eigen::VectorXd& speeds = snapshot.speeds();
-    sweep.forEachPairInRow(row, [&](VehicleIndex a, VehicleIndex b, double d2) {
-        handover.offer(a, b, d2);
-        keepPair(speeds, a, b, kept);
-    });
-}
-
-void SpeedDifferenceCondition::pairsKept(const traffic::VehicleSnapshot& snapshot,
-                                         const std::vector<StepPairs::Pair>& kept) {
-    // Sorted by ego, then other: each ego's answer is one ascending run.
+void SpeedDifferenceCondition::computeAnswers(const EvaluationContext& ctx) {
+    const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
     const auto n = static_cast<std::size_t>(snapshot.size());
+    const Eigen::VectorXd& speeds = snapshot.speeds();
+    sweep_.build(snapshot, *distance_);
+    // Sorted by ego, then other: each ego's answer is one ascending run.
+    sweep_.collectSorted(*ctx.parallel(), rowFound_, found_, [&](VehicleIndex a, VehicleIndex b, auto& out) {
+        if (qualifies(speeds[a], speeds[b])) out.emplace_back(a, b);
+        if (qualifies(speeds[b], speeds[a])) out.emplace_back(b, a);
+    });
     answerStart_.assign(n + 1, 0);
-    for (const auto& [ego, other] : kept) ++answerStart_[static_cast<std::size_t>(ego) + 1];
+    for (const auto& [ego, other] : found_) ++answerStart_[static_cast<std::size_t>(ego) + 1];
     for (std::size_t k = 0; k < n; ++k) answerStart_[k + 1] += answerStart_[k];
-    answerOthers_.resize(kept.size());
-    for (std::size_t k = 0; k < kept.size(); ++k) answerOthers_[k] = kept[k].second;
+    answerOthers_.resize(found_.size());
+    for (std::size_t k = 0; k < found_.size(); ++k) answerOthers_[k] = found_[k].second;
     answersReady_ = true;
 }
 

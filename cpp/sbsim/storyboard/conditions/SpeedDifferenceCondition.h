@@ -3,20 +3,19 @@
 #include <atomic>
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <utility>
 #include <vector>
 
 #include "sbsim/storyboard/Condition.h"
-#include "sbsim/storyboard/StepPairs.h"
 #include "sbsim/storyboard/conditions/SnapshotStamp.h"
+#include "sbsim/traffic/PairSweep.h"
 
 namespace sbsim::storyboard {
 
 /// Common part of SpeedDifferenceConditionFaster/Slower: the set of other vehicles whose speed
 /// differs from the ego's by more than `delta` (m/s, strict) in the given direction, optionally only
 /// those within `distance` m (inclusive, through the neighbour grid).
-class SpeedDifferenceCondition : public Condition, private StepPairs::User {
+class SpeedDifferenceCondition : public Condition {
 public:
     traffic::SnapshotColumns columns() const override {
         return {traffic::SnapshotColumns::Position, traffic::SnapshotColumns::Speed};
@@ -45,19 +44,9 @@ private:
     }
     ConditionResult testAll(const traffic::VehicleSnapshot& snapshot, VehicleIndex ego);
     void sortBySpeed(const traffic::VehicleSnapshot& snapshot);
-    // With a distance: every vehicle's answer at once, from the step's shared sweep of the pairs
-    // (StepPairs: each pair's distance tested once), on the pool; fills answerStart_ and answerOthers_.
-    double pairRadius() const override { return *distance_; }
-    void sweepRow(const traffic::VehicleSnapshot& snapshot, const traffic::PairSweep& sweep, std::size_t row,
-                  StepPairs::Handover& handover, std::vector<StepPairs::Pair>& kept) const override;
-    void keepPairs(const traffic::VehicleSnapshot& snapshot, std::span<const StepPairs::Pair> pairs,
-                   std::vector<StepPairs::Pair>& kept) const override;
-    void keepPair(const Eigen::VectorXd& speeds, VehicleIndex a, VehicleIndex b,
-                  std::vector<StepPairs::Pair>& kept) const {
-        if (qualifies(speeds[a], speeds[b])) kept.emplace_back(a, b);
-        if (qualifies(speeds[b], speeds[a])) kept.emplace_back(b, a);
-    }
-    void pairsKept(const traffic::VehicleSnapshot& snapshot, const std::vector<StepPairs::Pair>& kept) override;
+    /// With a distance: every vehicle's answer at once, from one sweep of the pairs within the
+    /// distance (each pair's distance tested once), on the pool; fills answerStart_ and answerOthers_.
+    void computeAnswers(const EvaluationContext& ctx);
 
     Direction direction_;
     double delta_;
@@ -72,13 +61,15 @@ private:
     double highestSpeed_ = 0;
     // With a distance and a pool, when test() asked about most vehicles in the step before (as
     // TtcCondition does): vehicle i's answer is answerOthers_[answerStart_[i], answerStart_[i + 1]),
-    // ascending, for the snapshot stamp_ names. ownPairs_: the sweep when the context has no shared one.
+    // ascending, for the snapshot stamp_ names. rowFound_[k]: the (ego, other) the sweep's row k found.
     bool answersReady_ = false;
     std::atomic<std::size_t> tests_{0};  // test() calls since the last prepare()
     std::size_t preparedSize_ = 0;       // vehicles at the last prepare()
     std::vector<std::int32_t> answerStart_;
     std::vector<VehicleIndex> answerOthers_;
-    StepPairs ownPairs_;
+    traffic::PairSweep sweep_;
+    std::vector<std::vector<std::pair<VehicleIndex, VehicleIndex>>> rowFound_;
+    std::vector<std::pair<VehicleIndex, VehicleIndex>> found_;
 };
 
 /// The other vehicles the ego is faster than by more than `delta`: speed(ego) - speed(o) > delta.

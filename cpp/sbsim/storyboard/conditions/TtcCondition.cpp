@@ -40,47 +40,33 @@ void TtcCondition::prepare(const EvaluationContext& ctx) {
     // Pairs ahead only pay when test() will ask about most vehicles, as it did last step: a story
     // whose other conditions fail first (a time window, an area) asks about few or none.
     const std::size_t asked = tests_.exchange(0, std::memory_order_relaxed);
-    if (ctx.parallel() != nullptr && before > 0 && 2 * asked >= before) {
-        // Every pair within distance_ once, from the step's sweep shared with the other
-        // conditions that answer ahead (the board runs it after every prepare()), or our own.
-        if (ctx.pairs() != nullptr) {
-            ctx.pairs()->join(*this);
-        } else {
-            ownPairs_.join(*this);
-            ownPairs_.run(ctx);
-        }
-    }
+    if (ctx.parallel() != nullptr && before > 0 && 2 * asked >= before) computePairs(ctx);
 }
 
-void TtcCondition::sweepRow(const traffic::VehicleSnapshot& /*snapshot*/, const traffic::PairSweep& sweep,
-                            std::size_t row, StepPairs::Handover& handover, std::vector<StepPairs::Pair>& kept) const {
-    sweep.forEachPairInRow(row, [&](VehicleIndex a, VehicleIndex b, double d2) {
-        handover.offer(a, b, d2);
-        keepPair(a, b, kept);
-    });
-}
-
-void TtcCondition::keepPairs(const traffic::VehicleSnapshot& /*snapshot*/, std::span<const StepPairs::Pair> pairs,
-                             std::vector<StepPairs::Pair>& kept) const {
-    for (const auto& [a, b] : pairs) keepPair(a, b, kept);
-}
-
-void TtcCondition::pairsKept(const traffic::VehicleSnapshot& /*snapshot*/, const std::vector<StepPairs::Pair>& kept) {
-    // Each conflicting pair (few, sorted) counts for both vehicles. Walking them in ascending
-    // order appends to vehicle j first the smaller indices that found it, then its own larger
-    // ones: ascending.
+void TtcCondition::computePairs(const EvaluationContext& ctx) {
     const std::size_t n = movers_.size();
+    // One sweep visits each pair within distance_ once (a search per vehicle meets it twice);
+    // a pair is tested with its smaller index first, as the search per vehicle does.
+    sweep_.build(ctx.snapshot(), distance_);
+    // Few pairs conflict: sorted, they are each vehicle's later conflicts in ascending order.
+    sweep_.collectSorted(*ctx.parallel(), rowConflicts_, conflicting_, [&](VehicleIndex a, VehicleIndex b, auto& out) {
+        const VehicleIndex ego = std::min(a, b);
+        const VehicleIndex other = std::max(a, b);
+        if (conflicts(ego, other)) out.emplace_back(ego, other);
+    });
+    // Each pair counts for both vehicles. Walking the pairs in ascending order appends to
+    // vehicle j first the smaller indices that found it, then its own larger ones: ascending.
     pairStart_.assign(n + 1, 0);
-    for (const auto& [k, o] : kept) {
+    for (const auto& [k, o] : conflicting_) {
         ++pairStart_[static_cast<std::size_t>(k) + 1];
         ++pairStart_[static_cast<std::size_t>(o) + 1];
     }
     for (std::size_t k = 0; k < n; ++k) pairStart_[k + 1] += pairStart_[k];
     pairOthers_.resize(static_cast<std::size_t>(pairStart_[n]));
-    nextSlot_.assign(pairStart_.begin(), pairStart_.end() - 1);
-    for (const auto& [k, o] : kept) {
-        pairOthers_[static_cast<std::size_t>(nextSlot_[static_cast<std::size_t>(k)]++)] = o;
-        pairOthers_[static_cast<std::size_t>(nextSlot_[static_cast<std::size_t>(o)]++)] = k;
+    std::vector<std::int32_t> next(pairStart_.begin(), pairStart_.end() - 1);
+    for (const auto& [k, o] : conflicting_) {
+        pairOthers_[static_cast<std::size_t>(next[static_cast<std::size_t>(k)]++)] = o;
+        pairOthers_[static_cast<std::size_t>(next[static_cast<std::size_t>(o)]++)] = k;
     }
     pairsReady_ = true;
 }

@@ -1,20 +1,18 @@
 #pragma once
 
-#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <optional>
-#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "sbsim/storyboard/Condition.h"
-#include "sbsim/storyboard/StepPairs.h"
 #include "sbsim/storyboard/conditions/SnapshotStamp.h"
 #include "sbsim/storyboard/geometry/Footprint.h"
 #include "sbsim/storyboard/geometry/MovingFootprint.h"
+#include "sbsim/traffic/PairSweep.h"
 
 namespace sbsim::storyboard {
 
@@ -32,7 +30,7 @@ namespace sbsim::storyboard {
 /// A vehicle's bend is the curvature geometry::PathCurvature finds between its pose in the
 /// previous snapshot this condition saw and its pose now (none in its first step); its
 /// footprint's centre then follows the circle of that curvature, the heading turning with it.
-class TtcCondition : public Condition, private StepPairs::User {
+class TtcCondition : public Condition {
 public:
     /// The most samples a pair on a bend is tested at.
     static constexpr std::int64_t kMaxBendSamples = 1'000;
@@ -84,22 +82,11 @@ private:
                                       double ttc);
     /// conflict() for vehicles `a` and `b` of the prepared step.
     bool conflicts(VehicleIndex a, VehicleIndex b) const;
-    // The pairs within distance_ tested ahead, from the step's shared sweep (StepPairs): each
-    // pair once, with its smaller index first; the conflicting ones laid out per vehicle.
-    double pairRadius() const override { return distance_; }
-    void sweepRow(const traffic::VehicleSnapshot& snapshot, const traffic::PairSweep& sweep, std::size_t row,
-                  StepPairs::Handover& handover, std::vector<StepPairs::Pair>& kept) const override;
-    void keepPairs(const traffic::VehicleSnapshot& snapshot, std::span<const StepPairs::Pair> pairs,
-                   std::vector<StepPairs::Pair>& kept) const override;
-    void keepPair(VehicleIndex a, VehicleIndex b, std::vector<StepPairs::Pair>& kept) const {
-        // A pair is tested with its smaller index first, as the search per vehicle does.
-        const VehicleIndex ego = std::min(a, b);
-        const VehicleIndex other = std::max(a, b);
-        if (conflicts(ego, other)) kept.emplace_back(ego, other);
-    }
-    void pairsKept(const traffic::VehicleSnapshot& snapshot, const std::vector<StepPairs::Pair>& kept) override;
     /// The step's movers and poses; on the pool when one is given.
     void computeMovers(const traffic::VehicleSnapshot& snapshot, kernel::ParallelFor* parallel);
+    /// Every pair within distance_ tested once, on the pool (one sweep of the pairs, a row of
+    /// cells per task); fills pairStart_ and pairOthers_.
+    void computePairs(const EvaluationContext& ctx);
 
     /// The front bumper poses of one snapshot, by vehicle id in ascending order.
     struct Poses {
@@ -116,12 +103,14 @@ private:
     std::vector<geometry::MovingFootprint> movers_;  // per vehicle of the step
     std::vector<geometry::MovingCircle> circles_;    // the same, compact
     // Pairs tested ahead: vehicle i's others are pairOthers_[pairStart_[i], pairStart_[i + 1]),
-    // ascending. ownPairs_: the sweep when the context has no shared one.
+    // ascending. rowConflicts_[k] holds the conflicting pairs (smaller index first) the sweep's
+    // row k found (one writer per row).
     bool pairsReady_ = false;
     std::vector<std::int32_t> pairStart_;
     std::vector<VehicleIndex> pairOthers_;
-    std::vector<std::int32_t> nextSlot_;
-    StepPairs ownPairs_;
+    traffic::PairSweep sweep_;
+    std::vector<std::vector<std::pair<VehicleIndex, VehicleIndex>>> rowConflicts_;
+    std::vector<std::pair<VehicleIndex, VehicleIndex>> conflicting_;
     std::atomic<std::size_t> tests_{0};  // test() calls since the last prepare()
     // The poses of the last snapshot seen and of the one before it (an earlier time): a snapshot
     // seen again at the same time compares with the same previous poses.
