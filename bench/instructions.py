@@ -32,7 +32,9 @@ def instructions(cmd: list[str], keep: Path | None = None) -> int:
     with tempfile.TemporaryDirectory() as tmp:
         out = keep or Path(tmp) / "callgrind.out"
         subprocess.run(
-            ["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", *cmd],
+            # Children traced: a wrapper script that execs the program (a build's `run`, setting
+            # LD_LIBRARY_PATH) is counted as the program it runs, not as the shell alone.
+            ["valgrind", "--tool=callgrind", "--trace-children=yes", f"--callgrind-out-file={out}", *cmd],
             check=True,
             stdout=subprocess.DEVNULL,
             stderr=subprocess.DEVNULL,

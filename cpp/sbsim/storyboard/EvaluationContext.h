@@ -25,23 +25,13 @@ public:
                       traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr,
                       const facilities::StationRegistry* stations = nullptr,
                       const traffic::Penetration* penetration = nullptr)
-        : snapshot_(snapshot),
-          neighbours_(&neighbours),
-          queries_(queries),
-          parallel_(parallel),
-          stations_(stations),
-          penetration_(penetration) {}
+        : EvaluationContext(snapshot, &neighbours, nullptr, queries, parallel, stations, penetration) {}
     /// The same with the step's grid built only if a condition asks for it (the storyboard's pass).
     EvaluationContext(const traffic::VehicleSnapshot& snapshot, const StepNeighbours& lazyNeighbours,
                       traffic::TrafficQueries* queries = nullptr, kernel::ParallelFor* parallel = nullptr,
                       const facilities::StationRegistry* stations = nullptr,
                       const traffic::Penetration* penetration = nullptr)
-        : snapshot_(snapshot),
-          lazyNeighbours_(&lazyNeighbours),
-          queries_(queries),
-          parallel_(parallel),
-          stations_(stations),
-          penetration_(penetration) {}
+        : EvaluationContext(snapshot, nullptr, &lazyNeighbours, queries, parallel, stations, penetration) {}
 
     const traffic::VehicleSnapshot& snapshot() const { return snapshot_; }
     kernel::SimTime now() const { return snapshot_.time(); }
@@ -71,9 +61,22 @@ public:
     }
 
 private:
+    /// Both public constructors' one initialisation: exactly one of the two grids is given.
+    EvaluationContext(const traffic::VehicleSnapshot& snapshot, const traffic::NeighbourGrid* neighbours,
+                      const StepNeighbours* lazyNeighbours, traffic::TrafficQueries* queries,
+                      kernel::ParallelFor* parallel, const facilities::StationRegistry* stations,
+                      const traffic::Penetration* penetration)
+        : snapshot_(snapshot),
+          neighbours_(neighbours),
+          lazyNeighbours_(lazyNeighbours),
+          queries_(queries),
+          parallel_(parallel),
+          stations_(stations),
+          penetration_(penetration) {}
+
     const traffic::VehicleSnapshot& snapshot_;
-    const traffic::NeighbourGrid* neighbours_ = nullptr;  // given built, or
-    const StepNeighbours* lazyNeighbours_ = nullptr;      // built on first use
+    const traffic::NeighbourGrid* neighbours_;  // given built, or
+    const StepNeighbours* lazyNeighbours_;      // built on first use
     traffic::TrafficQueries* queries_;
     kernel::ParallelFor* parallel_;
     const facilities::StationRegistry* stations_;
