@@ -16,6 +16,60 @@ namespace {
 using kernel::SimTime;
 using Index = LastHeard::Index;
 
+/// The randomized tests' three answers side by side: the table under test, one that walks every
+/// frame in full (hearAll) and a std::map of when each station was last heard.
+struct ThreeAnswers {
+    LastHeard heard, walked;
+    std::map<Index, SimTime> reference;
+    SimTime window = SimTime::fromMilliseconds(500);
+    std::string where;  // the seed and step, for the failure messages
+
+    /// A frame of `list` at `at`: the tested table's unknown stations as the full walk's and the map's.
+    bool frame(const LastHeard::List& list, SimTime at, const std::string& what) {
+        std::vector<Index> unknown, full;
+        heard.hearList(list, at, at - window, unknown);
+        walked.hearAll(*list, at, at - window, full);
+        EXPECT_EQ(unknown, full) << where << " " << what;
+        std::vector<Index> expected;
+        for (const Index s : *list) {
+            const auto it = reference.find(s);
+            if (it == reference.end() || it->second < at - window) expected.push_back(s);
+            reference[s] = at;
+        }
+        EXPECT_EQ(unknown, expected) << where << " " << what;
+        return !::testing::Test::HasFailure();
+    }
+    /// The sender's own frame to `own`, a list of its own (hearAll on both tables).
+    bool ownFrame(const std::vector<Index>& own, SimTime at) {
+        std::vector<Index> unknown, full;
+        heard.hearAll(own, at, at - window, unknown);
+        walked.hearAll(own, at, at - window, full);
+        EXPECT_EQ(unknown, full) << where << " (own frame)";
+        for (const Index s : own) reference[s] = at;
+        return !::testing::Test::HasFailure();
+    }
+    /// One reception of `s` alone.
+    bool hearOne(Index s, SimTime at) {
+        EXPECT_EQ(heard.hear(s, at), walked.hear(s, at)) << where << " station " << s;
+        reference[s] = at;
+        return !::testing::Test::HasFailure();
+    }
+    void forget(SimTime before) {
+        heard.forgetBefore(before);
+        walked.forgetBefore(before);
+        std::erase_if(reference, [&](const auto& entry) { return entry.second < before; });
+    }
+    /// After the run: both tables remember exactly the map's stations, at the map's times.
+    void expectSameHistory(SimTime end) {
+        heard.forgetBefore(SimTime::zero());
+        ASSERT_EQ(heard.size(), reference.size()) << where;
+        for (const auto& [s, t] : reference) {
+            EXPECT_EQ(heard.hear(s, end), t) << where << " station " << s;
+            EXPECT_EQ(walked.hear(s, end), t) << where << " station " << s;
+        }
+    }
+};
+
 TEST(LastHeard, OneStationAtATime) {
     LastHeard heard;
     EXPECT_FALSE(heard.hear(7, SimTime::fromMilliseconds(10)));
@@ -142,9 +196,7 @@ TEST(LastHeard, RepeatsOfAListAnswerAsAWalkPerFrame) {
 TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
     for (const unsigned seed : {1u, 2u, 3u}) {
         std::mt19937 random(seed);
-        LastHeard heard, walked;
-        std::map<Index, SimTime> reference;
-        const SimTime window = SimTime::fromMilliseconds(500);
+        ThreeAnswers answers;
         std::vector<Index> current;
         for (Index s = 0; s < 400; ++s) {
             if (random() % 2 == 0) current.push_back(s);
@@ -152,6 +204,7 @@ TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
         SimTime now = SimTime::zero();
         std::size_t lists = 0;
         for (int step = 0; step < 600; ++step) {
+            answers.where = "seed " + std::to_string(seed) + " step " + std::to_string(step);
             const unsigned pick = random() % 40;
             if (pick == 0) {
                 std::shuffle(current.begin(), current.end(), random);
@@ -180,48 +233,22 @@ TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
             now = now + SimTime::fromMilliseconds(random() % 30 == 0 ? 650 : 100);
             for (unsigned frame = 0, frames = 1 + random() % 10; frame < frames; ++frame) {
                 const SimTime at = now + SimTime::fromMilliseconds(10 * frame);
-                std::vector<Index> unknown, full;
-                heard.hearList(list, at, at - window, unknown);
-                walked.hearAll(*list, at, at - window, full);
-                ASSERT_EQ(unknown, full) << "seed " << seed << " step " << step << " frame " << frame;
-                std::vector<Index> expected;
-                for (const Index s : *list) {
-                    const auto it = reference.find(s);
-                    if (it == reference.end() || it->second < at - window) expected.push_back(s);
-                    reference[s] = at;
-                }
-                ASSERT_EQ(unknown, expected) << "seed " << seed << " step " << step << " frame " << frame;
+                ASSERT_TRUE(answers.frame(list, at, "frame " + std::to_string(frame)));
             }
             const unsigned between = random() % 25;
             const SimTime later = now + SimTime::fromMilliseconds(95);
             if (between == 0) {
-                std::vector<Index> own{static_cast<Index>(random() % 500), 450, 460};
-                std::vector<Index> unknown, full;
-                heard.hearAll(own, later, later - window, unknown);
-                walked.hearAll(own, later, later - window, full);
-                ASSERT_EQ(unknown, full) << "seed " << seed << " step " << step << " (own frame)";
-                for (const Index s : own) reference[s] = later;
+                ASSERT_TRUE(answers.ownFrame({static_cast<Index>(random() % 500), 450, 460}, later));
             } else if (between == 1) {
-                const Index s = static_cast<Index>(random() % 500);
-                ASSERT_EQ(heard.hear(s, later), walked.hear(s, later)) << "seed " << seed << " station " << s;
-                reference[s] = later;
+                ASSERT_TRUE(answers.hearOne(static_cast<Index>(random() % 500), later));
             } else if (between == 2) {
-                const SimTime before = now - SimTime::fromMilliseconds(random() % 2 == 0 ? 300 : 5);
-                heard.forgetBefore(before);
-                walked.forgetBefore(before);
-                std::erase_if(reference, [&](const auto& entry) { return entry.second < before; });
+                answers.forget(now - SimTime::fromMilliseconds(random() % 2 == 0 ? 300 : 5));
             }
-            ASSERT_EQ(heard.size(), walked.size()) << "seed " << seed << " step " << step;
+            ASSERT_EQ(answers.heard.size(), answers.walked.size()) << answers.where;
         }
         // Most lists took the difference's path, and the history it left is the full walks'.
-        EXPECT_GT(heard.differences(), lists / 2) << "seed " << seed;
-        const SimTime end = now + SimTime::fromSeconds(10);
-        heard.forgetBefore(SimTime::zero());
-        ASSERT_EQ(heard.size(), reference.size());
-        for (const auto& [s, t] : reference) {
-            EXPECT_EQ(heard.hear(s, end), t) << "seed " << seed << " station " << s;
-            EXPECT_EQ(walked.hear(s, end), t) << "seed " << seed << " station " << s;
-        }
+        EXPECT_GT(answers.heard.differences(), lists / 2) << "seed " << seed;
+        answers.expectSameHistory(now + SimTime::fromSeconds(10));
     }
 }
 
@@ -234,9 +261,8 @@ TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
 TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
     for (const unsigned seed : {4u, 5u, 6u, 7u}) {
         std::mt19937 random(seed);
-        LastHeard heard, walked;
-        std::map<Index, SimTime> reference;
-        const SimTime window = SimTime::fromMilliseconds(500);
+        ThreeAnswers answers;
+        LastHeard& heard = answers.heard;
         std::vector<Index> current;
         for (Index s = 0; s < 600; ++s) {
             if (random() % 2 == 0) current.push_back(s);
@@ -244,21 +270,8 @@ TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
         LastHeard::List last;
         SimTime now = SimTime::zero();
         std::size_t lists = 0, same = 0;
-        const auto frameOf = [&](const LastHeard::List& list, SimTime at, const std::string& what) {
-            std::vector<Index> unknown, full;
-            heard.hearList(list, at, at - window, unknown);
-            walked.hearAll(*list, at, at - window, full);
-            EXPECT_EQ(unknown, full) << "seed " << seed << " " << what;
-            std::vector<Index> expected;
-            for (const Index s : *list) {
-                const auto it = reference.find(s);
-                if (it == reference.end() || it->second < at - window) expected.push_back(s);
-                reference[s] = at;
-            }
-            EXPECT_EQ(unknown, expected) << "seed " << seed << " " << what;
-            return !::testing::Test::HasFailure();
-        };
         for (int step = 0; step < 800; ++step) {
+            answers.where = "seed " + std::to_string(seed) + " step " + std::to_string(step);
             const unsigned pick = random() % 50;
             if (pick == 0) {
                 std::shuffle(current.begin(), current.end(), random);
@@ -290,11 +303,11 @@ TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
             // As DiscMedium::takeReceivers: the comparison decides whether the last list goes again.
             LastHeard::List list;
             if (last != nullptr && heard.compare(*last, current)) {
-                ASSERT_EQ(*last, current) << "seed " << seed << " step " << step;
+                ASSERT_EQ(*last, current) << answers.where;
                 list = last;
                 ++same;
             } else {
-                if (last != nullptr) ASSERT_NE(*last, current) << "seed " << seed << " step " << step;
+                if (last != nullptr) ASSERT_NE(*last, current) << answers.where;
                 list = std::make_shared<const std::vector<Index>>(current);
                 if (last != nullptr && random() % 10 != 0) heard.expect(last, list);
                 ++lists;
@@ -304,14 +317,9 @@ TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
                 // The comparison made, but another list comes first (a frame of the step before
                 // still on the air, or one of its own).
                 if (last != nullptr && random() % 2 == 0) {
-                    ASSERT_TRUE(frameOf(last, now, "step " + std::to_string(step) + " (late)"));
+                    ASSERT_TRUE(answers.frame(last, now, "(late)"));
                 } else {
-                    std::vector<Index> own{static_cast<Index>(random() % 700), 650, 660};
-                    std::vector<Index> unknown, full;
-                    heard.hearAll(own, now, now - window, unknown);
-                    walked.hearAll(own, now, now - window, full);
-                    ASSERT_EQ(unknown, full) << "seed " << seed << " step " << step << " (own frame)";
-                    for (const Index s : own) reference[s] = now;
+                    ASSERT_TRUE(answers.ownFrame({static_cast<Index>(random() % 700), 650, 660}, now));
                 }
             }
             // Now and then none of the list's frames comes (their receivers left): the next
@@ -319,33 +327,22 @@ TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
             const unsigned frames = random() % 15 == 0 ? 0 : 1 + random() % 10;
             for (unsigned frame = 0; frame < frames; ++frame) {
                 const SimTime at = now + SimTime::fromMilliseconds(1 + 9 * frame);
-                ASSERT_TRUE(frameOf(list, at, "step " + std::to_string(step) + " frame " + std::to_string(frame)));
+                ASSERT_TRUE(answers.frame(list, at, "frame " + std::to_string(frame)));
             }
             last = list;
             const unsigned between = random() % 30;
             const SimTime later = now + SimTime::fromMilliseconds(95);
             if (between == 0) {
-                const Index s = static_cast<Index>(random() % 700);
-                ASSERT_EQ(heard.hear(s, later), walked.hear(s, later)) << "seed " << seed << " station " << s;
-                reference[s] = later;
+                ASSERT_TRUE(answers.hearOne(static_cast<Index>(random() % 700), later));
             } else if (between == 1) {
-                const SimTime before = now - SimTime::fromMilliseconds(random() % 2 == 0 ? 300 : 5);
-                heard.forgetBefore(before);
-                walked.forgetBefore(before);
-                std::erase_if(reference, [&](const auto& entry) { return entry.second < before; });
+                answers.forget(now - SimTime::fromMilliseconds(random() % 2 == 0 ? 300 : 5));
             }
-            ASSERT_EQ(heard.size(), walked.size()) << "seed " << seed << " step " << step;
+            ASSERT_EQ(heard.size(), answers.walked.size()) << answers.where;
         }
         // The paths were taken: lists shared again, and most new ones by their difference.
         EXPECT_GT(same, 50u) << "seed " << seed;
         EXPECT_GT(heard.differences(), lists / 2) << "seed " << seed;
-        const SimTime end = now + SimTime::fromSeconds(10);
-        heard.forgetBefore(SimTime::zero());
-        ASSERT_EQ(heard.size(), reference.size());
-        for (const auto& [s, t] : reference) {
-            EXPECT_EQ(heard.hear(s, end), t) << "seed " << seed << " station " << s;
-            EXPECT_EQ(walked.hear(s, end), t) << "seed " << seed << " station " << s;
-        }
+        answers.expectSameHistory(now + SimTime::fromSeconds(10));
     }
 }
 
