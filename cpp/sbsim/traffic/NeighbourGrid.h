@@ -56,6 +56,34 @@ private:
     template <typename Visit>
     void visitNear(double x, double y, double radius, Index skip, Visit& visit) const;
 
+    /// The cells a query of `radius` around (x, y) reads. The range is widened by a hair so that
+    /// rounding in x - r cannot drop a point that the distance test accepts.
+    struct CellRange {
+        std::int32_t x0, x1, y0, y1;
+        /// Visiting them would cost more than all `n` vehicles (a radius far beyond the cell size).
+        bool beyond(std::int64_t n) const {
+            const std::int64_t columns = std::int64_t{x1} - x0 + 1;
+            const std::int64_t rows = std::int64_t{y1} - y0 + 1;
+            return columns > n || rows > n || columns * rows > n;
+        }
+    };
+    CellRange cellsAround(double x, double y, double radius) const {
+        const double reach = radius * (1 + 1e-12) + 1e-9;
+        return {cellCoordinate(x - reach, inverseCellSize_), cellCoordinate(x + reach, inverseCellSize_),
+                cellCoordinate(y - reach, inverseCellSize_), cellCoordinate(y + reach, inverseCellSize_)};
+    }
+    /// Dense layout: every item of the cells, row by row (each row of the range is one run of items).
+    template <typename Each>
+    void forEachDenseItem(const CellRange& cells, Each&& each) const {
+        const std::int32_t x0 = std::max(cells.x0, minX_);
+        const std::int32_t x1 = std::min(cells.x1, maxX_);
+        if (x0 > x1) return;
+        for (std::int32_t cy = std::max(cells.y0, minY_), last = std::min(cells.y1, maxY_); cy <= last; ++cy) {
+            const Item* const end = items_.data() + bucketStart_[bucketOf(x1, cy) + 1];
+            for (const Item* it = items_.data() + bucketStart_[bucketOf(x0, cy)]; it != end; ++it) each(*it);
+        }
+    }
+
     // Vehicles are counting-sorted by bucket, so a bucket is one contiguous run of items_. Where the
     // vehicles' bounding box has few cells (O(n)), a bucket is one cell, numbered row by row, so the
     // cells of a query row are one run as well ("dense"). Otherwise (a network spanning tens of
@@ -118,38 +146,21 @@ void NeighbourGrid::visitNear(double x, double y, double radius, Index i, Visit&
         return dx * dx + dy * dy <= r2;
     };
     const auto n = static_cast<std::int64_t>(items_.size());
-
-    // The cell range is widened by a hair so that rounding in x - r cannot drop a point that the
-    // distance test accepts.
-    const double reach = radius * (1 + 1e-12) + 1e-9;
-    const std::int32_t cx0 = cellCoordinate(x - reach, inverseCellSize_);
-    const std::int32_t cx1 = cellCoordinate(x + reach, inverseCellSize_);
-    const std::int32_t cy0 = cellCoordinate(y - reach, inverseCellSize_);
-    const std::int32_t cy1 = cellCoordinate(y + reach, inverseCellSize_);
-    const std::int64_t columns = std::int64_t{cx1} - cx0 + 1;
-    const std::int64_t rows = std::int64_t{cy1} - cy0 + 1;
-    if (columns > n || rows > n || columns * rows > n) {
-        // A radius far beyond the cell size: visiting the cells would cost more than all vehicles.
+    const CellRange cells = cellsAround(x, y, radius);
+    if (cells.beyond(n)) {
         for (Index j = 0; j < static_cast<Index>(n); ++j) {
             if (j != i && near(positions(0, j), positions(1, j))) visit(j);
         }
         return;
     }
     if (dense_) {
-        // Each row of the query is one run of items, and every item in it is in range of the row.
-        const std::int32_t x0 = std::max(cx0, minX_);
-        const std::int32_t x1 = std::min(cx1, maxX_);
-        if (x0 > x1) return;
-        for (std::int32_t cy = std::max(cy0, minY_), last = std::min(cy1, maxY_); cy <= last; ++cy) {
-            const Item* const end = items_.data() + bucketStart_[bucketOf(x1, cy) + 1];
-            for (const Item* it = items_.data() + bucketStart_[bucketOf(x0, cy)]; it != end; ++it) {
-                if (it->index != i && near(it->x, it->y)) visit(it->index);
-            }
-        }
+        forEachDenseItem(cells, [&](const Item& it) {
+            if (it.index != i && near(it.x, it.y)) visit(it.index);
+        });
         return;
     }
-    for (std::int64_t cx = cx0; cx <= cx1; ++cx) {
-        for (std::int64_t cy = cy0; cy <= cy1; ++cy) {
+    for (std::int64_t cx = cells.x0; cx <= cells.x1; ++cx) {
+        for (std::int64_t cy = cells.y0; cy <= cells.y1; ++cy) {
             const auto icx = static_cast<std::int32_t>(cx);
             const auto icy = static_cast<std::int32_t>(cy);
             const std::uint64_t key = cellKey(icx, icy);

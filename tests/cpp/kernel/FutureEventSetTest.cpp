@@ -38,6 +38,15 @@ std::vector<std::string> drain(FutureEventSet& fes) {
     return names;
 }
 
+/// A reference model's entry: the set's total order (time, priority, insertion order) in a std::set.
+struct Key {
+    SimTime at;
+    int priority;
+    std::uint64_t order;
+    Message* msg;
+    auto operator<=>(const Key&) const = default;
+};
+
 class FutureEventSetTest : public ::testing::Test {
 protected:
     Module a_{"a"};
@@ -211,13 +220,6 @@ TEST_F(FutureEventSetTest, RemoveAllForDropsOnlyThatTargetsMessages) {
 
 // Random inserts, cancels, destructions and pops against a reference ordered set.
 TEST_F(FutureEventSetTest, MatchesAReferenceModelUnderRandomOperations) {
-    struct Key {
-        SimTime at;
-        int priority;
-        std::uint64_t order;
-        Message* msg;
-        auto operator<=>(const Key&) const = default;
-    };
     std::mt19937_64 rng(20240611);
     const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
 
@@ -357,13 +359,6 @@ TEST_F(FutureEventSetTest, DeepHeapDeliversInKeyOrder) {
 // and of drifting periods, cancels from a lane's middle and head, stations leaving (removeAllFor)
 // and timers destroyed while scheduled: delivered in the reference order, and the lanes do serve.
 TEST_F(FutureEventSetTest, LanesKeepTheOrderOfARunsTimersAndFrames) {
-    struct Key {
-        SimTime at;
-        int priority;
-        std::uint64_t order;
-        Message* msg;
-        auto operator<=>(const Key&) const = default;
-    };
     std::mt19937_64 rng(28);
     const auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
     const SimTime period = ms(100), latency = SimTime::fromNanoseconds(2'000);
