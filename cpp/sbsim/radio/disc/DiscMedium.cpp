@@ -186,7 +186,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             near.receiversKnown = false;
         }
         if (everyoneInRange) {
-            if (!near.receiversKnown || near.receiversChanges != receiversChanges_) takeReceivers(near);
+            if (!near.receiversKnown || near.receiversChanges != receiversChanges_) takeReceivers(senderIndex, near);
             shareable = near.recipients;
             if (counts != nullptr && !near.perBin.empty()) {
                 if (counts->linkStations.size() < near.perBin.size()) {
@@ -231,7 +231,7 @@ void DiscMedium::buildGrid() {
     gridBuilt_ = true;
 }
 
-void DiscMedium::takeReceivers(Neighbourhood& near) {
+void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
     std::vector<Receiver*>& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
     // Appended within the reserved room: no zero-filled resize first.
@@ -281,7 +281,6 @@ void DiscMedium::takeReceivers(Neighbourhood& near) {
     // walks nothing). The comparison is the sender's table's own split of the two lists, which it
     // takes when this list's frames come instead of matching them again. Else a new list, unless
     // nobody else holds the last (frames on the air, the policy) and it can be refilled in place.
-    const auto sender = static_cast<StationIndex>(&near - near_.data());
     std::shared_ptr<Recipients> last = near.recipients;
     if (last != nullptr && certificates().sameList(sender, last->stations, stations) && last->receivers == receivers)
         return;

@@ -83,8 +83,8 @@ private:
     };
     /// The step's grid_, once per step.
     void buildGrid();
-    /// `near`'s receivers in range, as of the current modules.
-    void takeReceivers(Neighbourhood& near);
+    /// `near`'s receivers in range (of `sender`, near_[sender]), as of the current modules.
+    void takeReceivers(StationIndex sender, Neighbourhood& near);
     std::vector<Neighbourhood> near_;
     Recipients scratch_;                            // takeReceivers' new list, compared with the last
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()
