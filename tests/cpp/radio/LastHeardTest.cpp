@@ -16,6 +16,15 @@ namespace {
 using kernel::SimTime;
 using Index = LastHeard::Index;
 
+/// A neighbourhood drawn afresh: each of the stations 0 .. n - 1 with probability one half, ascending.
+std::vector<Index> aboutHalfOf(Index n, std::mt19937& random) {
+    std::vector<Index> stations;
+    for (Index s = 0; s < n; ++s) {
+        if (random() % 2 == 0) stations.push_back(s);
+    }
+    return stations;
+}
+
 /// The randomized tests' three answers side by side: the table under test, one that walks every
 /// frame in full (hearAll) and a std::map of when each station was last heard.
 struct ThreeAnswers {
@@ -197,10 +206,7 @@ TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
     for (const unsigned seed : {1u, 2u, 3u}) {
         std::mt19937 random(seed);
         ThreeAnswers answers;
-        std::vector<Index> current;
-        for (Index s = 0; s < 400; ++s) {
-            if (random() % 2 == 0) current.push_back(s);
-        }
+        std::vector<Index> current = aboutHalfOf(400, random);
         SimTime now = SimTime::zero();
         std::size_t lists = 0;
         for (int step = 0; step < 600; ++step) {
@@ -209,10 +215,7 @@ TEST(LastHeard, AListTakenByItsDifferenceAnswersAsAFullWalk) {
             if (pick == 0) {
                 std::shuffle(current.begin(), current.end(), random);
             } else if (pick == 1) {
-                current.clear();  // another neighbourhood entirely
-                for (Index s = 0; s < 400; ++s) {
-                    if (random() % 2 == 0) current.push_back(s);
-                }
+                current = aboutHalfOf(400, random);  // another neighbourhood entirely
             } else {
                 // A few gone, a few come (stations not in the list, some heard before, some never).
                 for (unsigned gone = random() % 6; gone > 0 && !current.empty(); --gone)
@@ -263,10 +266,7 @@ TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
         std::mt19937 random(seed);
         ThreeAnswers answers;
         LastHeard& heard = answers.heard;
-        std::vector<Index> current;
-        for (Index s = 0; s < 600; ++s) {
-            if (random() % 2 == 0) current.push_back(s);
-        }
+        std::vector<Index> current = aboutHalfOf(600, random);
         LastHeard::List last;
         SimTime now = SimTime::zero();
         std::size_t lists = 0, same = 0;
@@ -279,10 +279,7 @@ TEST(LastHeard, AListComparedByTheMediumAnswersAsAFullWalk) {
                 std::sort(current.begin(), current.end());
             } else if (pick < 4) {
                 // Many changed: past a quarter of the list.
-                current.clear();
-                for (Index s = 0; s < 600; ++s) {
-                    if (random() % 2 == 0) current.push_back(s);
-                }
+                current = aboutHalfOf(600, random);
             } else if (pick < 12) {
                 // Unchanged: the medium shares the last list again.
             } else {
