@@ -13,8 +13,8 @@ struct Medium::FrameDelivery : kernel::Message {
     FrameDelivery() : kernel::Message("v2x frame", kKind) {}
     std::shared_ptr<const V2xMessage> message;
     std::shared_ptr<const Medium::Recipients> recipients;  // its stations, to find them should one leave meanwhile
-    bool keptByMedium = false;        // the list may come again, unchanged, for the sender's next frames
-    std::uint64_t moduleChanges = 0;  // the simulation's when the receivers were taken
+    bool keptByMedium = false;          // the list may come again, unchanged, for the sender's next frames
+    std::uint64_t receiverChanges = 0;  // the medium's receiverChanges() when the receivers were taken
 };
 
 Medium::Medium(Directory directory) : kernel::Module("medium"), directory_(std::move(directory)) {}
@@ -34,6 +34,44 @@ Receiver* Medium::receivingSide(const std::string& stationId) {
         if (!index || !interest_.registered(*index)) everyReceiverRegistered_ = false;
     }
     return receiver;
+}
+
+Receiver* Medium::receivingSide(StationIndex station, const std::string& stationId) {
+    if (receiversFilledAt_ != receiverChanges()) {
+        receiverKnownAt_.assign(receiverKnownAt_.size(), 0);
+        receiversFilledAt_ = receiverChanges();
+    }
+    if (station < receiverKnownAt_.size() && receiverKnownAt_[station]) return receiverAt_[station];
+    Receiver* receiver = receivingSide(stationId);
+    if (receiverKnownAt_.size() <= station) {
+        receiverKnownAt_.resize(station + 1, 0);
+        receiverAt_.resize(station + 1, nullptr);
+    }
+    receiverAt_[station] = receiver;
+    receiverKnownAt_[station] = 1;
+    return receiver;
+}
+
+std::uint64_t Medium::receiverChanges() const {
+    // Either count only grows; the reported one starts above any module count it replaces.
+    return reportsStationChanges_ ? stationChanges_ : simulation().moduleChanges();
+}
+
+void Medium::reportStationChanges() {
+    if (reportsStationChanges_) return;
+    reportsStationChanges_ = true;
+    // A fresh count, distinct from every value receiverChanges() had: all kept receivers are dropped.
+    stationChanges_ = simulation().moduleChanges() + 1;
+}
+
+void Medium::stationChanged(const std::string& stationId) {
+    const bool kept = reportsStationChanges_ && receiversFilledAt_ == stationChanges_;
+    ++stationChanges_;
+    if (!kept) return;  // nothing kept is still trusted: all are looked up again anyway
+    // Only this station is looked up again; the others' kept answers stay as the count moves on.
+    const std::optional<StationIndex> index = certificates_.find(stationId);
+    if (index && *index < receiverKnownAt_.size()) receiverKnownAt_[*index] = 0;
+    receiversFilledAt_ = stationChanges_;
 }
 
 void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
@@ -61,7 +99,7 @@ void Medium::queue(std::shared_ptr<const V2xMessage> message, std::shared_ptr<co
     frame.message = std::move(message);
     frame.recipients = std::move(recipients);
     frame.keptByMedium = keptByMedium;
-    frame.moduleChanges = simulation().moduleChanges();
+    frame.receiverChanges = receiverChanges();
     // Scheduled as sendDirect() would hand it over: the same time and place among the events.
     scheduleAt(simTime() + delay, frame);
 }
@@ -82,10 +120,10 @@ void Medium::handleMessage(kernel::Message& msg) {
     const V2xMessage& message = *frame.message;
     const Recipients* recipients = frame.recipients.get();
     Recipients found;
-    if (simulation().moduleChanges() != frame.moduleChanges) {
-        // Some station joined or left since the frame was sent: its receivers found again by name.
+    if (receiverChanges() != frame.receiverChanges) {
+        // Some station joined or left since the frame was sent: its receivers found again.
         for (const StationIndex station : recipients->stations) {
-            Receiver* receiver = receivingSide(certificates_.name(station));
+            Receiver* receiver = receivingSide(station, certificates_.name(station));
             if (receiver == nullptr) continue;  // it left
             found.receivers.push_back(receiver);
             found.stations.push_back(station);

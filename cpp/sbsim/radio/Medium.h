@@ -93,6 +93,13 @@ public:
     /// Hands a frame's receptions (queued with deliverLater()) to their stations.
     void handleMessage(kernel::Message& msg) override;
 
+    /// Promises that the directory's owner calls stationChanged() for every station whose module it
+    /// adds, removes or replaces, from now on: a station's receiving side is then kept across the
+    /// run's other module changes (a vehicle's departure elsewhere), not looked up again by name.
+    void reportStationChanges();
+    /// `stationId`'s module changed (see reportStationChanges()): its receiving side is looked up again.
+    void stationChanged(const std::string& stationId);
+
     const std::map<std::string, Counts, std::less<>>& counts() const { return counts_; }
 
     /// Makes `id` a stationary station (a roadside unit) at `position`: it sends and receives like a
@@ -137,6 +144,12 @@ protected:
     /// The receiving side of `stationId`'s module; null for a vehicle that is not a station. Media
     /// hand deliverLater() only receivers found here (so it knows whether all said what they take).
     Receiver* receivingSide(const std::string& stationId);
+    /// The same for `station`, `stationId`'s stationIndex(): kept by index while its module stays,
+    /// so a medium asks each step without a lookup by name.
+    Receiver* receivingSide(StationIndex station, const std::string& stationId);
+    /// Changes when a station found by receivingSide() may have changed: the station changes
+    /// reported, else every module change (a medium keeps receivers while it stays the same).
+    std::uint64_t receiverChanges() const;
     /// The sender's stationIndex(), as stamp() looked it up.
     static StationIndex senderIndex(const V2xMessage& message) { return message.senderIndex_; }
     /// Delivers `message` to `receivers` (in this order; `stations` are their stationIndex()) after
@@ -171,6 +184,12 @@ private:
     std::function<bool(const V2xMessage&)> layersTake_;
     std::vector<std::pair<const std::type_info*, bool>> layersTakeKnown_;  // layersTake_'s answers per type
     bool everyReceiverRegistered_ = true;  // every receiver found so far called setTypesTaken() first
+    // receivingSide() by station index, while receiverChanges() keeps the value it had when filled.
+    std::vector<Receiver*> receiverAt_;
+    std::vector<unsigned char> receiverKnownAt_;
+    std::uint64_t receiversFilledAt_ = 0;
+    bool reportsStationChanges_ = false;
+    std::uint64_t stationChanges_ = 0;
     // The sender broadcastFrom() named and its index, for the stamp of the frame it is sending.
     const std::string* knownSender_ = nullptr;
     StationIndex knownSenderIndex_ = 0;

@@ -79,7 +79,10 @@ void ServiceManager::makeRoadsideUnit(const RoadsideUnitSpec& spec, const std::s
     middleware.setFixedPosition(position);
     roadsideUnits_.push_back(&middleware);
     middlewares_[id] = &middleware;  // the medium finds a station's receiving side here
-    if (medium_ != nullptr) medium_->addFixedStation(id, position);
+    if (medium_ != nullptr) {
+        medium_->stationChanged(id);
+        medium_->addFixedStation(id, position);
+    }
     for (const ServiceSpec& serviceSpec : spec.services) {
         std::unique_ptr<Service> service = ServiceRegistry::instance().create(serviceSpec);
         const auto* vehicleOnly = dynamic_cast<const NeedsVehicle*>(service.get());
@@ -105,6 +108,8 @@ void ServiceManager::attach(kernel::Module& sumo) {
 
 void ServiceManager::setMedium(radio::Medium& medium) {
     medium_ = &medium;
+    // The medium's directory is middlewareOf(): every change of its answers is reported (stationChanged).
+    medium.reportStationChanges();
     medium.setLayersTake([](const radio::V2xMessage& message) {
         return dynamic_cast<const facilities::ItsMessage*>(&message) != nullptr;
     });
@@ -175,6 +180,7 @@ void ServiceManager::depart(const std::string& id) {
     if (selected.empty()) return;
     auto& middleware = simulation().emplaceModule<Middleware>(*this, id);
     middlewares_[id] = &middleware;
+    if (medium_ != nullptr) medium_->stationChanged(id);
     for (const ServiceSpec* spec : selected) {
         std::unique_ptr<Service> service = ServiceRegistry::instance().create(*spec);
         // Hosted before it joins the simulation: initialize() may already use vehicle() or send().
@@ -189,6 +195,7 @@ void ServiceManager::arrive(const std::string& id) {
     if (it == middlewares_.end()) return;
     Middleware& middleware = *it->second;
     middlewares_.erase(it);
+    if (medium_ != nullptr) medium_->stationChanged(id);  // before its services' finish() may send
     for (Service* s : middleware.services()) {
         std::erase(allSignals_, s);
         simulation().removeModule(*s);  // finish(), then its timers are dropped

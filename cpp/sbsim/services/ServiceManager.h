@@ -45,7 +45,8 @@ public:
     static traffic::SnapshotColumns columns() { return traffic::SnapshotColumns::all(); }
     traffic::VehicleRegistry& registry() const { return *registry_; }
     /// The medium the stations send on; every station's facilities take its ITS messages (CAMs,
-    /// DENMs) whatever its services take (Medium::setLayersTake).
+    /// DENMs) whatever its services take (Medium::setLayersTake). The medium's directory must be
+    /// this manager's middlewareOf(): the manager reports each station's change to it.
     void setMedium(radio::Medium& medium);
     bool hasMedium() const { return medium_ != nullptr; }
     /// How the stations' GeoNetworking routers forward geo-broadcasts (default: CBF and greedy

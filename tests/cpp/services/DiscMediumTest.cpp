@@ -226,6 +226,38 @@ TEST(DiscMedium, MessageToAVehicleThatLeftBeforeDeliveryIsDropped) {
     EXPECT_EQ(b->callsAfterFinish + c->callsAfterFinish, 0);
 }
 
+// The medium keeps each station's receiving side across steps and other stations' departures
+// and arrivals: a station that leaves is no longer reached (its module is gone), and one that comes
+// back under the same id is reached through its new module, also by a frame on the air meanwhile.
+TEST(DiscMedium, AStationThatLeavesAndComesBackIsReachedThroughItsNewModule) {
+    Harness h(kAllButBare, disc(100, SimTime::fromMilliseconds(150)));
+    const auto others = [](int k) {
+        // Other stations come and go at every step: module changes that leave b's module as it is.
+        return vehicle("o" + std::to_string(k), 40, 10);
+    };
+    h.step(secs(1.0), {vehicle("b", 10, 0), others(1), vehicle("s")});
+    sendAt(h, secs(1.0), "s", "Ping", 1);  // b's first module, delivered at 1.15 s
+    h.step(secs(1.1), {vehicle("b", 10, 0), others(2), vehicle("s")});
+    sendAt(h, secs(1.1), "s", "Ping", 2);  // on the air while b leaves at 1.2 s and comes back at 1.3 s: dropped
+    h.step(secs(1.2), {others(3), vehicle("s")});
+    sendAt(h, secs(1.2), "s", "Ping", 3);  // b is away
+    h.step(secs(1.3), {vehicle("b", 10, 0), others(4), vehicle("s")});
+    sendAt(h, secs(1.3), "s", "Ping", 4);  // b's second module
+    h.step(secs(1.4), {vehicle("b", 10, 0), others(5), vehicle("s")});
+    sendAt(h, secs(1.4), "s", "Ping", 5);
+    h.sim.run(secs(2));
+    const std::vector<ProbeRecord*> b = h.log.of("b");
+    ASSERT_EQ(b.size(), 2u);
+    const auto seqs = [](const ProbeRecord& r) {
+        std::vector<int> out;
+        for (const Indication& i : r.indications) out.push_back(i.seq);
+        return out;
+    };
+    EXPECT_EQ(seqs(*b[0]), (std::vector<int>{1}));
+    EXPECT_EQ(seqs(*b[1]), (std::vector<int>{4, 5})) << "the new module, not the old one";
+    EXPECT_EQ(b[0]->callsAfterFinish + b[1]->callsAfterFinish, 0);
+}
+
 // At 0.1 s steps a sender's neighbours come from lists kept across steps and its receivers stay
 // one list while they are the same: each frame still reaches exactly the stations in range at its
 // step, when one drives in and out of range, one jumps from far away (past the lists' skin), one

@@ -80,10 +80,10 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
         fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));
-    if (receiverKnown_.empty() || receiversChanges_ != simulation().moduleChanges()) {
+    if (receiverKnown_.empty() || receiversChanges_ != receiverChanges()) {
         receiverKnown_.assign(snapshot_.ids().size(), 0);
         receivers_.assign(snapshot_.ids().size(), nullptr);
-        receiversChanges_ = simulation().moduleChanges();
+        receiversChanges_ = receiverChanges();
     }
     const std::shared_ptr<const V2xMessage> shared(std::move(message));
     const auto& positions = snapshot_.positions();
@@ -140,7 +140,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     };
     const auto vehicleReceiver = [&](traffic::VehicleSnapshot::Index other) {
         if (!receiverKnown_[other]) {
-            receivers_[other] = receivingSide(snapshot_.ids()[other]);
+            receivers_[other] = receivingSide(stationIndices_[other], snapshot_.ids()[other]);
             receiverKnown_[other] = 1;
         }
         return receivers_[other];
@@ -212,7 +212,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
     }
     fixed.forEachWithin(from, radius, fixedSelf, [&](FixedStations::Index k, double distance) {
-        consider(receivingSide(fixed.ids()[k]), fixedIndices_[k], fixed.ids()[k], distance);
+        consider(receivingSide(fixedIndices_[k], fixed.ids()[k]), fixedIndices_[k], fixed.ids()[k], distance);
     });
     if (shareable != nullptr) {
         if (receivers.empty()) return deliverLater(shared, std::move(shareable), settings_.latency);
@@ -249,7 +249,7 @@ void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
         const double distance = near.distance[k];
         if (distance > settings_.range) continue;
         if (!receiverKnown_[other]) {
-            receivers_[other] = receivingSide(snapshot_.ids()[other]);
+            receivers_[other] = receivingSide(stationIndices_[other], snapshot_.ids()[other]);
             receiverKnown_[other] = 1;
         }
         if (receivers_[other] == nullptr) continue;  // a vehicle without services
