@@ -236,33 +236,40 @@ void DiscMedium::buildGrid() {
 void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
     std::vector<Receiver*>& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
-    // Appended within the reserved room: no zero-filled resize first.
-    receivers.clear();
-    stations.clear();
-    receivers.reserve(near.others.size());
-    stations.reserve(near.others.size());
     // Counted per bin in a small array while the range has few bins (no growth check per link).
     constexpr std::size_t kFewBins = 64;
     std::array<std::uint64_t, kFewBins> few{};
     const bool fewBins = settings_.range / kDistanceBin < kFewBins - 1;
     near.perBin.clear();
     // One pass over the neighbours: range and bin from the square (no root), receiver and station
-    // from one record per vehicle.
+    // from one record per vehicle, written through pointers held in registers (a push_back's
+    // stores would make the compiler reload the vectors' ends, and the tables, at every link).
+    const std::size_t n = near.others.size();
+    receivers.resize(n);
+    stations.resize(n);
+    Receiver** const toReceiver = receivers.data();
+    StationIndex* const toStation = stations.data();
+    std::size_t taken = 0;
+    const KeptNeighbourhoods::Index* const others = near.others.data();
+    const double* const squares = near.squared.data();
+    Slot* const slots = slots_.data();
+    const SquaredDistanceBins::Lookup binOf = bins_.lookup();
     const double maxSquared = bins_.maxSquared();
-    for (std::size_t k = 0; k < near.others.size(); ++k) {
-        const auto other = static_cast<std::size_t>(near.others[k]);
-        const double squared = near.squared[k];
+    for (std::size_t k = 0; k < n; ++k) {
+        const double squared = squares[k];
         if (squared > maxSquared) continue;  // beyond the range
-        Slot& slot = slots_[other];
+        Slot& slot = slots[others[k]];
         if (!slot.known) {
-            slot.receiver = receivingSide(snapshot_.ids()[other]);
+            slot.receiver = receivingSide(snapshot_.ids()[static_cast<std::size_t>(others[k])]);
             slot.known = true;
         }
-        if (slot.receiver == nullptr) continue;  // a vehicle without services
-        receivers.push_back(slot.receiver);
-        stations.push_back(slot.station);
+        Receiver* const receiver = slot.receiver;
+        if (receiver == nullptr) continue;  // a vehicle without services
+        toReceiver[taken] = receiver;
+        toStation[taken] = slot.station;
+        ++taken;
         if (!(squared >= 0)) continue;  // as Medium::countLink
-        const std::size_t bin = bins_.of(squared);
+        const std::size_t bin = binOf.of(squared);
         if (fewBins && bin < kFewBins) {
             ++few[bin];
             continue;
@@ -270,6 +277,8 @@ void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
     }
+    receivers.resize(taken);
+    stations.resize(taken);
     if (fewBins) {
         std::size_t bins = kFewBins;
         while (bins > 0 && few[bins - 1] == 0) --bins;

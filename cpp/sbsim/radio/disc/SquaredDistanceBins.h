@@ -24,14 +24,23 @@ public:
     static std::size_t binOf(double distance) { return static_cast<std::size_t>(distance / Medium::kDistanceBin); }
     /// The largest square whose root is <= the range: a link is in range iff its square is <= it.
     double maxSquared() const { return maxSquared_; }
-    /// binOf(std::sqrt(squared)), for 0 <= squared <= maxSquared().
-    std::size_t of(double squared) const {
-        if (cells_.empty()) return binOf(std::sqrt(squared));  // a range of very many bins
-        std::size_t b = cells_[static_cast<std::size_t>(squared * perCell_)];
-        while (squared < steps_[b]) --b;
-        while (squared >= steps_[b + 1]) ++b;
-        return b;
-    }
+    /// The tables by value, for a loop over many links (held in registers: no reload after each
+    /// store the compiler cannot tell apart from them). Valid while the SquaredDistanceBins lives.
+    struct Lookup {
+        const std::uint16_t* cells;  // null: a range of very many bins, the root per link
+        const double* steps;
+        double perCell;
+        /// binOf(std::sqrt(squared)), for 0 <= squared <= maxSquared().
+        std::size_t of(double squared) const {
+            if (cells == nullptr) return binOf(std::sqrt(squared));
+            std::size_t b = cells[static_cast<std::int64_t>(squared * perCell)];
+            while (squared < steps[b]) --b;
+            while (squared >= steps[b + 1]) ++b;
+            return b;
+        }
+    };
+    Lookup lookup() const { return {cells_.empty() ? nullptr : cells_.data(), steps_.data(), perCell_}; }
+    std::size_t of(double squared) const { return lookup().of(squared); }
 
 private:
     double maxSquared_ = 0;
