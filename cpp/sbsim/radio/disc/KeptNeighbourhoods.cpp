@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace sbsim::radio {
@@ -45,7 +46,10 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
             epochToCurrent_[e] = moved_[k] ? -1 : keyToCurrent_[k];
         }
     }
-    if (epochs_ == 0) return startEpoch();
+    if (epochs_ == 0) {
+        startEpoch();
+        return placeCurrent();
+    }
     // A pair (i, j) is within the radius only if its references are within radius + skin while
     // neither moved more than half the skin from its reference. One that did (a fast vehicle, a
     // jump: SUMO's teleports) takes its position as its new reference, as a newcomer: found by the
@@ -69,6 +73,17 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
     }
     // Many newcomers make every list's scan of them long: all lists start again.
     if (newcomers_.size() > 64 + static_cast<std::size_t>(n) / 8) startEpoch();
+    placeCurrent();
+}
+
+void KeptNeighbourhoods::placeCurrent() {
+    const Eigen::Matrix2Xd& positions = *positions_;
+    const double none = std::numeric_limits<double>::quiet_NaN();  // never within: the test is false
+    epochCurrent_.resize(epochToCurrent_.size());
+    for (std::size_t e = 0; e < epochToCurrent_.size(); ++e) {
+        const Index j = epochToCurrent_[e];
+        epochCurrent_[e] = j < 0 ? Candidate{none, none, -1} : Candidate{positions(0, j), positions(1, j), j};
+    }
 }
 
 void KeptNeighbourhoods::startEpoch() {
@@ -142,16 +157,18 @@ void KeptNeighbourhoods::within(Index i, Indices& out, Squares& squared) {
     out.resize(start + list.epochOthers.size() + list.newcomers.size());
     squared.resize(out.size());
     // Branch-free: every candidate written with its square, the cursor advanced for those kept (a
-    // candidate gone or moved maps to -1, read as i itself, which is never kept).
+    // candidate gone or moved has a NaN place, never within).
     Index* w = out.data() + start;
     double* s = squared.data() + start;
+    const Candidate* const current = epochCurrent_.data();
     for (const Index e : list.epochOthers) {
-        Index j = epochToCurrent_[static_cast<std::size_t>(e)];
-        j = j < 0 ? i : j;
-        const double d2 = square(j);
-        *w = j;
+        const Candidate& c = current[e];
+        const double dx = c.x - x;
+        const double dy = c.y - y;
+        const double d2 = dx * dx + dy * dy;
+        *w = c.j;
         *s = d2;
-        const int kept = static_cast<int>(j != i) & static_cast<int>(d2 <= r2);
+        const int kept = static_cast<int>(c.j != i) & static_cast<int>(d2 <= r2);
         w += kept;
         s += kept;
     }

@@ -66,6 +66,8 @@ private:
         std::size_t newcomersSeen = 0;   // newcomers_ checked so far
     };
     void startEpoch();
+    /// epochCurrent_ from epochToCurrent_ and the update's positions.
+    void placeCurrent();
     /// Whether the references of `a` and `b` are within radius + skin.
     bool reachable(Key a, Key b) const;
 
@@ -80,6 +82,13 @@ private:
     std::vector<Key> epochKeys_;
     traffic::NeighbourGrid epochGrid_;
     std::vector<Index> epochToCurrent_;  // per reference index, its current index, or -1 (gone)
+    /// Per reference index, its vehicle's current position and index (NaN and -1: gone or moved),
+    /// set at each update: a list's candidate is one read, not an index and then a position.
+    struct Candidate {
+        double x, y;
+        Index j;
+    };
+    std::vector<Candidate> epochCurrent_;
     // Per key: its reference position (set: hasReference_), and its current index (or -1).
     std::vector<double> referenceX_, referenceY_;
     std::vector<unsigned char> hasReference_;
