@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
@@ -32,11 +34,30 @@ Indices bruteForce(const Eigen::Matrix2Xd& p, Index i, double r) {
     return out;
 }
 
+/// Vehicle i's neighbours from `kept`; each one's square checked: the test's own, whose root is
+/// the bits of the positions' difference's norm() (as the disc model's distances were taken).
+Indices within(KeptNeighbourhoods& kept, const Eigen::Matrix2Xd& p, Index i) {
+    Indices got{-7};  // appended after what `out` holds
+    KeptNeighbourhoods::Squares squared{-1.0};
+    kept.within(i, got, squared);
+    EXPECT_EQ(got.size(), squared.size());
+    EXPECT_EQ(got.front(), -7);
+    EXPECT_EQ(squared.front(), -1.0);
+    for (std::size_t k = 1; k < got.size() && k < squared.size(); ++k) {
+        const Index j = got[k];
+        const double dx = p(0, j) - p(0, i);
+        const double dy = p(1, j) - p(1, i);
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(squared[k]), std::bit_cast<std::uint64_t>(dx * dx + dy * dy));
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(std::sqrt(squared[k])),
+                  std::bit_cast<std::uint64_t>((p.col(j) - p.col(i)).norm()))
+            << "vehicles " << i << " and " << j;
+    }
+    return Indices(got.begin() + 1, got.end());
+}
+
 void expectAllMatch(KeptNeighbourhoods& kept, const Eigen::Matrix2Xd& p, int step) {
     for (Index i = 0; i < p.cols(); ++i) {
-        Indices got;
-        kept.within(i, got);
-        ASSERT_EQ(got, bruteForce(p, i, kept.radius())) << "step " << step << ", vehicle " << i;
+        ASSERT_EQ(within(kept, p, i), bruteForce(p, i, kept.radius())) << "step " << step << ", vehicle " << i;
     }
 }
 
@@ -97,9 +118,7 @@ TEST(KeptNeighbourhoods, AVehicleThatMovesPastTheSkinIsFound) {
     fleet.xs[1] = 50;
     p = fleet.positions();
     kept.update(p, fleet.keys, false);
-    Indices got;
-    kept.within(0, got);
-    EXPECT_EQ(got, (Indices{1}));
+    EXPECT_EQ(within(kept, p, 0), (Indices{1}));
     expectAllMatch(kept, p, 1);
     EXPECT_EQ(kept.epochs(), 1u) << "one jump: a new reference for it, not new lists for all";
     // It jumps back (its old place and its first new one both stale): found there, not twice.
@@ -107,9 +126,7 @@ TEST(KeptNeighbourhoods, AVehicleThatMovesPastTheSkinIsFound) {
     fleet.xs[2] = 420;
     p = fleet.positions();
     kept.update(p, fleet.keys, false);
-    got.clear();
-    kept.within(2, got);
-    EXPECT_EQ(got, (Indices{1}));
+    EXPECT_EQ(within(kept, p, 2), (Indices{1}));
     expectAllMatch(kept, p, 2);
 
     // Two vehicles that each move a little less than half the skin towards each other: kept lists
@@ -125,9 +142,7 @@ TEST(KeptNeighbourhoods, AVehicleThatMovesPastTheSkinIsFound) {
     both.update(p, pair.keys, false);
     expectAllMatch(both, p, 1);
     EXPECT_EQ(both.epochs(), 1u);
-    got.clear();
-    both.within(1, got);
-    EXPECT_EQ(got, (Indices{0}));
+    EXPECT_EQ(within(both, p, 1), (Indices{0}));
 }
 
 TEST(KeptNeighbourhoods, ANewcomerFindsAndIsFoundWithinTheEpoch) {
@@ -141,9 +156,7 @@ TEST(KeptNeighbourhoods, ANewcomerFindsAndIsFoundWithinTheEpoch) {
     p = fleet.positions();
     kept.update(p, fleet.keys, true);
     expectAllMatch(kept, p, 1);
-    Indices got;
-    kept.within(0, got);
-    EXPECT_EQ(got, (Indices{1}));
+    EXPECT_EQ(within(kept, p, 0), (Indices{1}));
     // It moves on by 4 m (within the skin), vehicle 5 leaves: no new epoch, answers still exact.
     fleet = Fleet{{0, 3}, {0, 64}, {0, 0}};
     p = fleet.positions();

@@ -21,12 +21,15 @@ constexpr double kSkinShare = 0.1;
 /// Kept lists serve while their epochs last this many steps (0.1 s steps: tens); else (1 s steps:
 /// one or two) each sender's neighbours come from the step's grid.
 constexpr std::uint64_t kLastingUpdates = 4;
+
+double checkedRange(double range) {
+    if (!(range > 0) || !std::isfinite(range)) throw std::invalid_argument("V2X range must be > 0 m");
+    return range;
+}
 }  // namespace
 
 DiscMedium::DiscMedium(DiscSettings settings, const traffic::VehicleSnapshot& snapshot, Directory directory)
-    : Medium(std::move(directory)), settings_(settings), snapshot_(snapshot) {
-    if (!(settings_.range > 0) || !std::isfinite(settings_.range))
-        throw std::invalid_argument("V2X range must be > 0 m");
+    : Medium(std::move(directory)), settings_(settings), bins_(checkedRange(settings.range)), snapshot_(snapshot) {
     if (settings_.latency < kernel::SimTime::zero()) throw std::invalid_argument("V2X latency must be >= 0 s");
     if (settings_.fadeStart && (*settings_.fadeStart < 0 || *settings_.fadeStart > settings_.range)) {
         throw std::invalid_argument("V2X fade start must be between 0 m and the range");
@@ -52,6 +55,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         // frame finds its sender by the index stamp() looked up, not by a search among the names.
         idsVersion_ = snapshot_.idsVersion();
         const auto& ids = snapshot_.ids();
+        slots_.clear();  // set afresh for the new indices
         previousIndices_.swap(stationIndices_);
         stationIndices_.resize(ids.size());
         for (std::size_t i = 0; i < ids.size(); ++i) stationIndices_[i] = stationIndex(ids[i]);
@@ -76,13 +80,13 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         gridTime_ = snapshot_.time();
         ++step_;
         gridBuilt_ = false;
-        receiverKnown_.clear();
+        slots_.clear();
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
         fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));
-    if (receiverKnown_.empty() || receiversChanges_ != receiverChanges()) {
-        receiverKnown_.assign(snapshot_.ids().size(), 0);
-        receivers_.assign(snapshot_.ids().size(), nullptr);
+    if (slots_.empty() || receiversChanges_ != receiverChanges()) {
+        slots_.resize(stationIndices_.size());
+        for (std::size_t i = 0; i < slots_.size(); ++i) slots_[i] = Slot{nullptr, stationIndices_[i], false};
         receiversChanges_ = receiverChanges();
     }
     const std::shared_ptr<const V2xMessage> shared(std::move(message));
@@ -139,11 +143,12 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
     };
     const auto vehicleReceiver = [&](traffic::VehicleSnapshot::Index other) {
-        if (!receiverKnown_[other]) {
-            receivers_[other] = receivingSide(stationIndices_[other], snapshot_.ids()[other]);
-            receiverKnown_[other] = 1;
+        Slot& slot = slots_[static_cast<std::size_t>(other)];
+        if (!slot.known) {
+            slot.receiver = receivingSide(slot.station, snapshot_.ids()[other]);
+            slot.known = true;
         }
-        return receivers_[other];
+        return slot.receiver;
     };
     // Vehicles first, ascending, then the stationary stations in the order they were added.
     if (self) {
@@ -157,26 +162,22 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
                 keptIdsVersion_ = idsVersion_;
             }
             near.others.clear();
+            near.squared.clear();
             if (kept_->lasting(kLastingUpdates)) {
-                kept_->within(*self, near.others);
-                near.distance.resize(near.others.size());
-                for (std::size_t k = 0; k < near.others.size(); ++k)
-                    near.distance[k] = (positions.col(near.others[k]) - positions.col(*self)).norm();
+                kept_->within(*self, near.others, near.squared);
             } else {
-                // The grid's answer as a bit set read in ascending order, each distance the root of
-                // the grid test's own square: the bits of (positions(j) - positions(i)).norm().
+                // The grid's answer as a bit set read in ascending order, with the grid test's own squares.
                 buildGrid();
                 const auto n = static_cast<std::size_t>(positions.cols());
                 const std::size_t words = (n + 63) / 64;
                 if (marks_.size() != words) marks_.assign(words, 0);
                 if (squared_.size() < n) squared_.resize(n);
                 grid_.markWithin(*self, radius, marks_.data(), squared_.data());
-                near.distance.clear();
                 for (std::size_t w = 0; w < words; ++w) {
                     for (std::uint64_t bits = marks_[w]; bits != 0; bits &= bits - 1) {
                         const std::size_t j = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
                         near.others.push_back(static_cast<traffic::NeighbourGrid::Index>(j));
-                        near.distance.push_back(std::sqrt(squared_[j]));
+                        near.squared.push_back(squared_[j]);
                     }
                     marks_[w] = 0;
                 }
@@ -201,7 +202,8 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         }
         for (std::size_t k = 0; !everyoneInRange && k < near.others.size(); ++k) {
             const auto other = near.others[k];
-            consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other], near.distance[k]);
+            consider(vehicleReceiver(other), stationIndices_[other], snapshot_.ids()[other],
+                     std::sqrt(near.squared[k]));
         }
     } else {
         // A roadside unit sends about once a second: its neighbours are looked up afresh.
@@ -234,34 +236,40 @@ void DiscMedium::buildGrid() {
 void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
     std::vector<Receiver*>& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
-    // Appended within the reserved room: no zero-filled resize first.
-    receivers.clear();
-    stations.clear();
-    receivers.reserve(near.others.size());
-    stations.reserve(near.others.size());
     // Counted per bin in a small array while the range has few bins (no growth check per link).
     constexpr std::size_t kFewBins = 64;
     std::array<std::uint64_t, kFewBins> few{};
     const bool fewBins = settings_.range / kDistanceBin < kFewBins - 1;
     near.perBin.clear();
-    for (std::size_t k = 0; k < near.others.size(); ++k) {
-        const auto other = near.others[k];
-        const double distance = near.distance[k];
-        if (distance > settings_.range) continue;
-        if (!receiverKnown_[other]) {
-            receivers_[other] = receivingSide(stationIndices_[other], snapshot_.ids()[other]);
-            receiverKnown_[other] = 1;
+    // One pass over the neighbours: range and bin from the square (no root), receiver and station
+    // from one record per vehicle, written through pointers held in registers (a push_back's
+    // stores would make the compiler reload the vectors' ends, and the tables, at every link).
+    const std::size_t n = near.others.size();
+    receivers.resize(n);
+    stations.resize(n);
+    Receiver** const toReceiver = receivers.data();
+    StationIndex* const toStation = stations.data();
+    std::size_t taken = 0;
+    const KeptNeighbourhoods::Index* const others = near.others.data();
+    const double* const squares = near.squared.data();
+    Slot* const slots = slots_.data();
+    const SquaredDistanceBins::Lookup binOf = bins_.lookup();
+    const double maxSquared = bins_.maxSquared();
+    for (std::size_t k = 0; k < n; ++k) {
+        const double squared = squares[k];
+        if (squared > maxSquared) continue;  // beyond the range
+        Slot& slot = slots[others[k]];
+        if (!slot.known) {
+            slot.receiver = receivingSide(slot.station, snapshot_.ids()[static_cast<std::size_t>(others[k])]);
+            slot.known = true;
         }
-        if (receivers_[other] == nullptr) continue;  // a vehicle without services
-        receivers.push_back(receivers_[other]);
-        stations.push_back(stationIndices_[other]);
-        if (!(distance >= 0)) continue;  // as Medium::countLink
-        // distance / kDistanceBin, as Medium::countLink, without a division per link: a product
-        // lands in the same bin unless it is within a hair of a bin's edge (then divided).
-        const double scaled = distance * (1 / kDistanceBin);
-        auto bin = static_cast<std::size_t>(scaled);
-        const double within = scaled - static_cast<double>(bin);
-        if (within < 1e-9 || within > 1 - 1e-9) bin = static_cast<std::size_t>(distance / kDistanceBin);
+        Receiver* const receiver = slot.receiver;
+        if (receiver == nullptr) continue;  // a vehicle without services
+        toReceiver[taken] = receiver;
+        toStation[taken] = slot.station;
+        ++taken;
+        if (!(squared >= 0)) continue;  // as Medium::countLink
+        const std::size_t bin = binOf.of(squared);
         if (fewBins && bin < kFewBins) {
             ++few[bin];
             continue;
@@ -269,6 +277,8 @@ void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
     }
+    receivers.resize(taken);
+    stations.resize(taken);
     if (fewBins) {
         std::size_t bins = kFewBins;
         while (bins > 0 && few[bins - 1] == 0) --bins;

@@ -12,6 +12,7 @@
 #include "sbsim/radio/Medium.h"
 #include "sbsim/radio/disc/DiscSettings.h"
 #include "sbsim/radio/disc/KeptNeighbourhoods.h"
+#include "sbsim/radio/disc/SquaredDistanceBins.h"
 #include "sbsim/traffic/NeighbourGrid.h"
 #include "sbsim/traffic/VehicleSnapshot.h"
 
@@ -33,6 +34,7 @@ public:
 
 private:
     DiscSettings settings_;
+    SquaredDistanceBins bins_;  // of settings_.range
     const traffic::VehicleSnapshot& snapshot_;
     /// The step's grid, for a roadside unit's neighbours, and a vehicle's while kept lists do not
     /// pay (built when first needed in a step).
@@ -49,9 +51,14 @@ private:
     std::uint64_t keptStep_ = 0;
     std::uint64_t keptIdsVersion_ = 0;
     /// Per snapshot index, the station's receiving side, looked up once per step (while no
-    /// module joins or leaves): null while unknown or not a station.
-    std::vector<Receiver*> receivers_;
-    std::vector<unsigned char> receiverKnown_;
+    /// module joins or leaves; null if not a station), with its stationIndex(): one record a
+    /// link reads. Empty: to be set afresh.
+    struct Slot {
+        Receiver* receiver = nullptr;
+        StationIndex station = 0;
+        bool known = false;
+    };
+    std::vector<Slot> slots_;
     /// Per snapshot index, the station's stationIndex(), interned in the snapshot's order when the
     /// step's grid is built (so a frame's receivers come in ascending indices, as the certificate
     /// policy's tables are sorted); per stationary station, the same.
@@ -63,13 +70,15 @@ private:
     static constexpr auto kNotInSnapshot = static_cast<traffic::VehicleSnapshot::Index>(-1);
     std::vector<StationIndex> fixedIndices_;
     std::uint64_t receiversChanges_ = 0;
-    /// Per sender's stationIndex(), the stations within the visit radius and their distances,
-    /// computed at the sender's first frame of a step and reused by its others (a beacon sends several).
+    /// Per sender's stationIndex(), the stations within the visit radius and their squared
+    /// distances (the neighbour test's own: the root is the bits of the positions' difference's
+    /// norm()), computed at the sender's first frame of a step and reused by its others (a beacon
+    /// sends several).
     struct Neighbourhood {
         std::uint64_t step = 0;  // step_ of `others`; 0: none
         double radius = 0;
         KeptNeighbourhoods::Indices others;
-        std::vector<double, kernel::DefaultInitAllocator<double>> distance;
+        KeptNeighbourhoods::Squares squared;
         /// Without packet errors or a trace every station in range receives: the stations in
         /// range (receivers, their indices, in the order above) and their count per distance bin,
         /// taken once per step and module change, so a frame copies them instead of visiting each link.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace sbsim::radio {
@@ -28,6 +29,7 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
             referenceY_.resize(top + 1);
         }
         std::fill(keyToCurrent_.begin(), keyToCurrent_.end(), -1);
+        currentOrdered_ = std::is_sorted(keys.begin(), keys.end());
         for (Index i = 0; i < n; ++i) {
             const Key k = keys[static_cast<std::size_t>(i)];
             keyToCurrent_[k] = i;
@@ -44,7 +46,10 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
             epochToCurrent_[e] = moved_[k] ? -1 : keyToCurrent_[k];
         }
     }
-    if (epochs_ == 0) return startEpoch();
+    if (epochs_ == 0) {
+        startEpoch();
+        return placeCurrent();
+    }
     // A pair (i, j) is within the radius only if its references are within radius + skin while
     // neither moved more than half the skin from its reference. One that did (a fast vehicle, a
     // jump: SUMO's teleports) takes its position as its new reference, as a newcomer: found by the
@@ -68,6 +73,17 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
     }
     // Many newcomers make every list's scan of them long: all lists start again.
     if (newcomers_.size() > 64 + static_cast<std::size_t>(n) / 8) startEpoch();
+    placeCurrent();
+}
+
+void KeptNeighbourhoods::placeCurrent() {
+    const Eigen::Matrix2Xd& positions = *positions_;
+    const double none = std::numeric_limits<double>::quiet_NaN();  // never within: the test is false
+    epochCurrent_.resize(epochToCurrent_.size());
+    for (std::size_t e = 0; e < epochToCurrent_.size(); ++e) {
+        const Index j = epochToCurrent_[e];
+        epochCurrent_[e] = j < 0 ? Candidate{none, none, -1} : Candidate{positions(0, j), positions(1, j), j};
+    }
 }
 
 void KeptNeighbourhoods::startEpoch() {
@@ -87,6 +103,7 @@ void KeptNeighbourhoods::startEpoch() {
     newcomers_.clear();
     epochPositions_ = positions;
     epochKeys_.assign(keys_.begin(), keys_.end());
+    epochOrdered_ = currentOrdered_;
     epochToCurrent_.resize(epochKeys_.size());
     epochKeysSorted_.resize(epochKeys_.size());
     for (std::size_t i = 0; i < epochKeys_.size(); ++i) {
@@ -108,7 +125,8 @@ bool KeptNeighbourhoods::reachable(Key a, Key b) const {
     return dx * dx + dy * dy <= reach_ * reach_;
 }
 
-void KeptNeighbourhoods::within(Index i, Indices& out) {
+void KeptNeighbourhoods::within(Index i, Indices& out, Squares& squared) {
+    if (squared.size() != out.size()) throw std::invalid_argument("kept neighbourhoods: squares not as long as out");
     const Key self = keys_[static_cast<std::size_t>(i)];
     if (lists_.size() <= self) lists_.resize(self + 1);
     List& list = lists_[self];
@@ -129,41 +147,69 @@ void KeptNeighbourhoods::within(Index i, Indices& out) {
     const double x = positions(0, i);
     const double y = positions(1, i);
     const double r2 = radius_ * radius_;
-    const auto near = [&](Index j) {
+    const auto square = [&](Index j) {
         const double dx = positions(0, j) - x;
         const double dy = positions(1, j) - y;
-        return dx * dx + dy * dy <= r2;
+        return dx * dx + dy * dy;
     };
     const std::size_t start = out.size();
-    // Branch-free: every candidate written, the cursor advanced for those kept (a candidate gone
-    // or moved maps to -1, read as i itself, which is never kept).
-    out.resize(start + list.epochOthers.size());
+    // Room for every candidate (no zero-fill), cut to the answer at the end.
+    out.resize(start + list.epochOthers.size() + list.newcomers.size());
+    squared.resize(out.size());
+    // Branch-free: every candidate written with its square, the cursor advanced for those kept (a
+    // candidate gone or moved has a NaN place, never within).
     Index* w = out.data() + start;
+    double* s = squared.data() + start;
+    const Candidate* const current = epochCurrent_.data();
     for (const Index e : list.epochOthers) {
-        Index j = epochToCurrent_[static_cast<std::size_t>(e)];
-        j = j < 0 ? i : j;
-        *w = j;
-        w += static_cast<int>(j != i) & static_cast<int>(near(j));
+        const Candidate& c = current[e];
+        const double dx = c.x - x;
+        const double dy = c.y - y;
+        const double d2 = dx * dx + dy * dy;
+        *w = c.j;
+        *s = d2;
+        const int kept = static_cast<int>(c.j != i) & static_cast<int>(d2 <= r2);
+        w += kept;
+        s += kept;
     }
-    out.resize(static_cast<std::size_t>(w - out.data()));
-    const std::size_t middle = out.size();
+    std::size_t end = static_cast<std::size_t>(w - out.data());
+    tail_.clear();
     for (const Key k : list.newcomers) {
         const Index j = keyToCurrent_[k];
-        if (j >= 0 && j != i && near(j)) out.push_back(j);
+        if (j < 0 || j == i) continue;
+        const double d2 = square(j);
+        if (d2 <= r2) tail_.emplace_back(j, d2);
     }
-    const auto first = out.begin() + static_cast<std::ptrdiff_t>(start);
-    const auto mid = out.begin() + static_cast<std::ptrdiff_t>(middle);
-    if (mid != out.end()) {
+    if (!tail_.empty()) {
         // A vehicle may be a newcomer twice (it moved again): once in the answer.
-        std::sort(mid, out.end());
-        out.erase(std::unique(mid, out.end()), out.end());
+        std::sort(tail_.begin(), tail_.end());
+        tail_.erase(std::unique(tail_.begin(), tail_.end()), tail_.end());
     }
-    if (!std::is_sorted(first, mid)) {
+    if (!(epochOrdered_ && currentOrdered_) && !std::is_sorted(out.begin() + static_cast<std::ptrdiff_t>(start),
+                                                               out.begin() + static_cast<std::ptrdiff_t>(end))) {
         // Keys whose order is not the positions' order from step to step: correct, only slower.
-        std::sort(first, out.end());
-    } else {
-        std::inplace_merge(first, out.begin() + static_cast<std::ptrdiff_t>(middle), out.end());
+        for (std::size_t k = start; k < end; ++k) tail_.emplace_back(out[k], squared[k]);
+        std::sort(tail_.begin(), tail_.end());
+        end = start;
     }
+    // The few newcomers merged in from the back, in place (a list ascends: its epoch's candidates
+    // map to ascending current indices while the keys ascend in both orders, else sorted above).
+    std::size_t to = end + tail_.size();
+    const std::size_t size = to;
+    for (std::size_t from = end, t = tail_.size(); t > 0;) {
+        --to;
+        if (from > start && out[from - 1] > tail_[t - 1].first) {
+            --from;
+            out[to] = out[from];
+            squared[to] = squared[from];
+        } else {
+            --t;
+            out[to] = tail_[t].first;
+            squared[to] = tail_[t].second;
+        }
+    }
+    out.resize(size);
+    squared.resize(size);
 }
 
 }  // namespace sbsim::radio

@@ -20,7 +20,8 @@ namespace sbsim::radio {
 /// step, so a list lasts many steps.
 ///
 /// Answers are the grid's: within() gives the vehicles j != i with (xj - xi)² + (yj - yi)² <= r²
-/// (NeighbourGrid's test), ascending, whatever the lists hold.
+/// (NeighbourGrid's test), ascending, whatever the lists hold, with that square: its root is the
+/// bits of (positions.col(j) - positions.col(i)).norm(), so a caller gathers no position again.
 ///
 /// Vehicles are known across steps by a key (any stable, dense number per vehicle id: the medium's
 /// station index). A vehicle that comes during an epoch takes its first position as its
@@ -33,6 +34,8 @@ public:
     using Key = std::uint32_t;
     /// A neighbour list: grown without a zero-fill (within() writes every candidate, keeps some).
     using Indices = std::vector<Index, kernel::DefaultInitAllocator<Index>>;
+    /// Squared distances, one per neighbour of an Indices.
+    using Squares = std::vector<double, kernel::DefaultInitAllocator<double>>;
 
     /// Lists of `radius` + `skin` m (skin > 0, finite; else std::invalid_argument).
     KeptNeighbourhoods(double radius, double skin);
@@ -44,8 +47,9 @@ public:
     /// `idsChanged`: false only when the keys are those of the last update.
     void update(const Eigen::Matrix2Xd& positions, std::span<const Key> keys, bool idsChanged);
 
-    /// Appends to `out` the vehicles j != i within radius() of vehicle i, ascending.
-    void within(Index i, Indices& out);
+    /// Appends to `out` the vehicles j != i within radius() of vehicle i, ascending, and to
+    /// `squared` (as long as `out` on entry) each one's (xj - xi)² + (yj - yi)².
+    void within(Index i, Indices& out, Squares& squared);
 
     /// Epochs started so far (for tests and figures).
     std::uint64_t epochs() const { return epochs_; }
@@ -62,6 +66,8 @@ private:
         std::size_t newcomersSeen = 0;   // newcomers_ checked so far
     };
     void startEpoch();
+    /// epochCurrent_ from epochToCurrent_ and the update's positions.
+    void placeCurrent();
     /// Whether the references of `a` and `b` are within radius + skin.
     bool reachable(Key a, Key b) const;
 
@@ -76,6 +82,13 @@ private:
     std::vector<Key> epochKeys_;
     traffic::NeighbourGrid epochGrid_;
     std::vector<Index> epochToCurrent_;  // per reference index, its current index, or -1 (gone)
+    /// Per reference index, its vehicle's current position and index (NaN and -1: gone or moved),
+    /// set at each update: a list's candidate is one read, not an index and then a position.
+    struct Candidate {
+        double x, y;
+        Index j;
+    };
+    std::vector<Candidate> epochCurrent_;
     // Per key: its reference position (set: hasReference_), and its current index (or -1).
     std::vector<double> referenceX_, referenceY_;
     std::vector<unsigned char> hasReference_;
@@ -84,7 +97,11 @@ private:
     std::vector<Index> keyToCurrent_;
     std::vector<Key> newcomers_;  // keys that came during the epoch, in order of arrival
     std::vector<List> lists_;     // by key
-    std::vector<Index> scratch_;
+    /// Current indices ascend with the epoch's (keys ascending in both orders): a list's answer
+    /// needs no check of its order.
+    bool epochOrdered_ = false;                   // the epoch's keys ascend
+    bool currentOrdered_ = false;                 // the keys of the last update ascend
+    std::vector<std::pair<Index, double>> tail_;  // within()'s newcomers in range, and its unsorted case
 };
 
 }  // namespace sbsim::radio
