@@ -34,6 +34,11 @@ std::optional<kernel::SimTime> LastHeard::hear(Index station, kernel::SimTime no
         heardNs_[static_cast<std::size_t>(k)] = now.raw();
         return before;
     }
+    if (const std::size_t e = findLate(station); e != kNotLate) {
+        const auto before = kernel::SimTime::fromNanoseconds(lateNs_[e]);
+        lateNs_[e] = now.raw();
+        return before;
+    }
     stations_.insert(at, station);
     heardNs_.insert(heardNs_.begin() + k, now.raw());
     return std::nullopt;
@@ -72,7 +77,7 @@ void LastHeard::hearList(List stations, kernel::SimTime now, kernel::SimTime sin
 }
 
 namespace {
-/// Newcomers fewer than a table's stations by this factor are merged by block moves.
+/// Newcomers fewer than a table's stations by this factor are kept aside (late_) first.
 constexpr std::size_t kFewNewcomers = 16;
 /// How many of `a` and `b` (n each) are equal from the start: eight at a time while the runs are
 /// long (a chunk without an early exit, vectorised), then one at a time.
@@ -172,8 +177,17 @@ void LastHeard::write(std::span<const Index> stations, kernel::SimTime::rep ns) 
         if (station < last) at = 0;
         last = station;
         at = seek(at, station);
-        if (at < stations_.size() && stations_[at] == station) heardNs_[at++] = ns;
+        if (at < stations_.size() && stations_[at] == station) {
+            heardNs_[at++] = ns;
+        } else if (const std::size_t e = findLate(station); e != kNotLate) {
+            lateNs_[e] = ns;
+        }
     }
+}
+
+std::size_t LastHeard::findLate(Index station) const {
+    const auto at = std::lower_bound(late_.begin(), late_.end(), station);
+    return at != late_.end() && *at == station ? static_cast<std::size_t>(at - late_.begin()) : kNotLate;
 }
 
 void LastHeard::flush() {
@@ -203,6 +217,9 @@ void LastHeard::walk(std::span<const Index> stations, kernel::SimTime now, kerne
             if (heardNs_[at] < since.raw()) unknown.push_back(station);
             heardNs_[at] = now.raw();
             ++at;
+        } else if (const std::size_t e = late_.empty() ? kNotLate : findLate(station); e != kNotLate) {
+            if (lateNs_[e] < since.raw()) unknown.push_back(station);
+            lateNs_[e] = now.raw();
         } else {
             newcomers_.push_back(station);
             unknown.push_back(station);
@@ -214,15 +231,14 @@ void LastHeard::walk(std::span<const Index> stations, kernel::SimTime now, kerne
 void LastHeard::addNewcomers(kernel::SimTime now) {
     std::sort(newcomers_.begin(), newcomers_.end());
     newcomers_.erase(std::unique(newcomers_.begin(), newcomers_.end()), newcomers_.end());
-    // Merged from the back, in place: each array moves once.
     std::size_t old = stations_.size();
     std::size_t add = newcomers_.size();
-    stations_.resize(old + add);
-    heardNs_.resize(old + add);
-    Index* const stations = stations_.data();
-    kernel::SimTime::rep* const heard = heardNs_.data();
     if (add * kFewNewcomers > old) {
-        // Many (a table filling): a comparison per station moved.
+        // Many (a table filling): merged from the back, in place, a comparison per station moved.
+        stations_.resize(old + add);
+        heardNs_.resize(old + add);
+        Index* const stations = stations_.data();
+        kernel::SimTime::rep* const heard = heardNs_.data();
         for (std::size_t out = old + add; add > 0;) {
             --out;
             if (old > 0 && stations[old - 1] > newcomers_[add - 1]) {
@@ -237,24 +253,44 @@ void LastHeard::addNewcomers(kernel::SimTime now) {
         }
         return;
     }
-    // A few among many (a sender's next step): each newcomer's place found by a search, the
-    // stations above it moved as one block.
+    // A few among many (a sender's next step): kept aside in the small sorted late_ list, so
+    // the table's arrays move once per kLateMerge newcomers, not once per frame that has some.
+    for (const Index station : newcomers_) {
+        const auto at = std::upper_bound(late_.begin(), late_.end(), station);
+        const auto k = at - late_.begin();
+        late_.insert(at, station);
+        lateNs_.insert(lateNs_.begin() + k, now.raw());
+    }
+    if (late_.size() > kLateMerge) mergeLate();
+}
+
+void LastHeard::mergeLate() {
+    if (late_.empty()) return;
+    const std::size_t old = stations_.size();
+    stations_.resize(old + late_.size());
+    heardNs_.resize(old + late_.size());
+    Index* const stations = stations_.data();
+    kernel::SimTime::rep* const heard = heardNs_.data();
+    // Each late station's place found by a search, the stations above it moved as one block.
     std::size_t end = old;  // stations_[0, end) are not moved yet
-    for (std::size_t k = add; k > 0; --k) {
-        const Index station = newcomers_[k - 1];
-        // None is known, so none equals a station held: it goes after those below it.
+    for (std::size_t k = late_.size(); k > 0; --k) {
+        const Index station = late_[k - 1];
+        // None is in the arrays, so none equals a station held: it goes after those below it.
         const std::size_t at = static_cast<std::size_t>(std::upper_bound(stations, stations + end, station) - stations);
-        // The k newcomers up to this one come before stations_[at, end): they move by k.
+        // The k late stations up to this one come before stations_[at, end): they move by k.
         std::memmove(stations + at + k, stations + at, (end - at) * sizeof(Index));
         std::memmove(heard + at + k, heard + at, (end - at) * sizeof(kernel::SimTime::rep));
         stations[at + k - 1] = station;
-        heard[at + k - 1] = now.raw();
+        heard[at + k - 1] = lateNs_[k - 1];
         end = at;
     }
+    late_.clear();
+    lateNs_.clear();
 }
 
 void LastHeard::forgetBefore(kernel::SimTime before) {
     settle();  // and a sender gone for good keeps no list
+    mergeLate();
     std::size_t kept = 0;
     for (std::size_t k = 0; k < stations_.size(); ++k) {
         if (heardNs_[k] < before.raw()) continue;
@@ -274,6 +310,8 @@ void LastHeard::forgetBefore(kernel::SimTime before) {
         std::vector<Index>().swap(come_);
         std::vector<Index>().swap(nextGone_);
         std::vector<Index>().swap(nextCome_);
+        std::vector<Index>().swap(late_);
+        std::vector<kernel::SimTime::rep>().swap(lateNs_);
     }
 }
 

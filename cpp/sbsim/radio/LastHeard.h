@@ -57,13 +57,18 @@ public:
     bool pending() const { return pendingDirty_; }
     /// Lists taken by their difference from the one held (for tests).
     std::size_t differences() const { return differences_; }
-    std::size_t size() const { return stations_.size(); }
+    std::size_t size() const { return stations_.size() + late_.size(); }
 
 private:
     /// The first position at or after `from` whose station is not below `station`.
     std::size_t seek(std::size_t from, Index station) const;
-    /// Merges `newcomers_` (heard at `now`, none known) into the sorted arrays.
+    /// Adds `newcomers_` (heard at `now`, none known): merged into the sorted arrays when many,
+    /// else kept aside in late_ until it holds more than kLateMerge.
     void addNewcomers(kernel::SimTime now);
+    /// Merges late_ into the sorted arrays (block moves: each station of the arrays moves once).
+    void mergeLate();
+    /// The position of `station` in late_, or kNotLate.
+    std::size_t findLate(Index station) const;
     /// Writes the times the repeats of `pending_` noted, so the arrays hold every reception.
     void flush();
     /// flush(), and the list dropped: the arrays are about to change otherwise.
@@ -81,14 +86,21 @@ private:
 
     std::vector<Index> stations_;                // ascending
     std::vector<kernel::SimTime::rep> heardNs_;  // as stations_
-    std::vector<Index> newcomers_;               // scratch of hearAll
-    std::vector<Index> gone_, come_;             // scratch of hearList's difference
-    std::vector<Index> nextGone_, nextCome_;     // compare()'s split
-    bool nextFew_ = false;                       // compare()'s differ() answer
-    List expectFrom_, expectTo_;                 // the lists of nextGone_ and nextCome_ (expect)
-    List pending_;                               // the last list walked or noted (hearList)
-    kernel::SimTime::rep pendingNs_ = 0;         // when it was heard last: every station of it at or after
-    bool pendingDirty_ = false;                  // its stations' times in the arrays are older
+    /// Stations new to the table lately, ascending, none in stations_, and when they heard: the
+    /// arrays above take them by the kLateMerge, so a sender's next step, which brings a few,
+    /// moves no block of the arrays (a miss per cache line of a table of ~1,500 stations).
+    std::vector<Index> late_;
+    std::vector<kernel::SimTime::rep> lateNs_;
+    static constexpr std::size_t kLateMerge = 64;
+    static constexpr std::size_t kNotLate = static_cast<std::size_t>(-1);
+    std::vector<Index> newcomers_;            // scratch of hearAll
+    std::vector<Index> gone_, come_;          // scratch of hearList's difference
+    std::vector<Index> nextGone_, nextCome_;  // compare()'s split
+    bool nextFew_ = false;                    // compare()'s differ() answer
+    List expectFrom_, expectTo_;              // the lists of nextGone_ and nextCome_ (expect)
+    List pending_;                            // the last list walked or noted (hearList)
+    kernel::SimTime::rep pendingNs_ = 0;      // when it was heard last: every station of it at or after
+    bool pendingDirty_ = false;               // its stations' times in the arrays are older
     std::size_t differences_ = 0;
 };
 

@@ -283,6 +283,36 @@ TEST(DiscMedium, KeptNeighbourhoodsAndListsFollowEachStep) {
     EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {10, 25}}}));
 }
 
+// A sender's receivers kept as its last list while the same stations are in range: kept only
+// while no module joined or left, since a station that left and came back between two of the
+// sender's frames is the same station with another receiving side. Here b leaves at step 3 (s
+// sends nothing then) and comes back at step 4, after "a0" (out of range) joined, which may take
+// the memory b's old side freed: step 4's frames must reach b's new side, and a0 nothing.
+TEST(DiscMedium, AStationBackWithAnotherReceiverIsReachedThere) {
+    Harness h(kAllButBare, disc(100));
+    for (int k = 1; k <= 6; ++k) {
+        std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("a", 50, 0), vehicle("s")};
+        if (k != 3) vehicles.push_back(vehicle("b", 60, 0));
+        if (k >= 4) vehicles.push_back(vehicle("a0", 3000, 0));
+        for (int b = 0; b < 30; ++b) vehicles.push_back(vehicle("bare" + std::to_string(b), 30.0 * b, 500 + 90.0 * b));
+        const SimTime t = secs(1 + 0.1 * k);
+        h.step(t, std::move(vehicles));
+        if (k != 3) sendAt(h, t, "s", "Ping", k);
+    }
+    h.sim.run(secs(3));
+    std::map<std::string, std::vector<int>> heard;  // over every record of a vehicle (b has two)
+    for (const auto& r : h.log.records) {
+        if (r->type != "TestProbe") continue;
+        for (const Indication& i : r->indications) heard[r->vehicle].push_back(i.seq);
+    }
+    EXPECT_EQ(heard["a"], (std::vector<int>{1, 2, 4, 5, 6}));
+    EXPECT_EQ(heard["b"], (std::vector<int>{1, 2, 4, 5, 6})) << "b's new side hears the frames after it came back";
+    EXPECT_TRUE(heard["a0"].empty()) << "out of range";
+    ASSERT_NE(h.log.find("b"), nullptr);
+    EXPECT_EQ(h.log.find("b")->indications.size(), 2u) << "b's first side heard the frames before it left";
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {5, 10}}}));
+}
+
 // Without packet errors or a trace a frame takes its sender's receivers of the step (taken once
 // per step and module change) instead of visiting each link: the same stations hear the same
 // frames in the same order, with the same counts per distance bin, as with a trace (which visits

@@ -286,13 +286,17 @@ void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
         for (std::size_t b = 0; b < bins; ++b) near.perBin[b] += few[b];
     }
     near.receiversKnown = true;
+    // The last list's receivers were looked up while no station's module changed since
+    // (Medium::receiverChanges()): the same stations are then the same receivers.
+    const bool sameModules = near.receiversChanges == receiversChanges_;
     near.receiversChanges = receiversChanges_;
     // The same receivers as the sender's last list: that list again (the certificate policy then
     // walks nothing). The comparison is the sender's table's own split of the two lists, which it
     // takes when this list's frames come instead of matching them again. Else a new list, unless
     // nobody else holds the last (frames on the air, the policy) and it can be refilled in place.
     std::shared_ptr<Recipients> last = near.recipients;
-    if (last != nullptr && certificates().sameList(sender, last->stations, stations) && last->receivers == receivers)
+    if (last != nullptr && certificates().sameList(sender, last->stations, stations) &&
+        (sameModules || last->receivers == receivers))
         return;
     if (last == nullptr || last.use_count() > 2) {  // held elsewhere than here and in `last`
         near.recipients = std::make_shared<Recipients>();
