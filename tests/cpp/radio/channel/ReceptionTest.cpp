@@ -1,13 +1,17 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "sbsim/kernel/SimTime.h"
 #include "sbsim/radio/Decibels.h"
+#include "sbsim/radio/channel/ChannelStations.h"
+#include "sbsim/radio/channel/FarCells.h"
 #include "sbsim/radio/channel/Reception.h"
 
 namespace sbsim::radio {
@@ -345,6 +349,46 @@ TEST_F(ReceptionTest, ManyStationsKeepTheirOwnStateThroughOverlappingFrames) {
     EXPECT_GT(locks, 100U);
     EXPECT_GT(halves, 100U);
     EXPECT_GT(ends, 10000U);
+}
+
+/// One interference-only link of `units` to station `r`.
+StepLinks interferenceOf(Reception::Slot r, Reception::Units units) {
+    StepLinks step;
+    step.receivers.push_back(r);
+    step.bin.push_back(0);
+    step.distance.push_back(300);
+    step.tier.push_back(StepLinks::kInterference);
+    step.units.push_back(units);
+    return step;
+}
+
+TEST_F(ReceptionTest, ASumsMilliwattsAreThoseOfThe128BitConversionAtEveryMagnitude) {
+    // The power a station hears, in mW, for sums from one unit to far above 1 mW (2^64 units), among them
+    // the values either side of 2^64 and ones whose low bits must round: the very double the 128-bit
+    // integer's conversion gives.
+    using Units = Reception::Units;
+    std::vector<Units> sums;
+    for (int bits = 1; bits <= 100; ++bits) {
+        const Units top = Units{1} << (bits - 1);
+        sums.push_back(top);
+        sums.push_back(top + 1);
+        sums.push_back((top << 1) - 1);
+    }
+    std::mt19937_64 random(64);
+    for (int k = 0; k < 2000; ++k) {
+        const int shift = static_cast<int>(random() % 100);
+        sums.push_back(((Units{random()} << 64) | random()) >> shift);
+    }
+    std::vector<Link> none;
+    for (const Units units : sums) {
+        if (units == 0) continue;
+        const StepLinks step = interferenceOf(1, units);
+        reception.frameStarts(1, step, none);
+        const double exact = static_cast<double>(units) / 18446744073709551616.0;
+        ASSERT_EQ(reception.leave(1, 0), exact) << "high word " << static_cast<std::uint64_t>(units >> 64)
+                                                << ", low word " << static_cast<std::uint64_t>(units);
+        ASSERT_EQ(reception.leave(1, units), 0.0);
+    }
 }
 
 }  // namespace
