@@ -35,7 +35,6 @@ void Reception::growField(std::int32_t cell) {
     const auto n = static_cast<std::size_t>(cell) + 1;
     if (field_.size() >= n) return;
     field_.resize(n, 0);
-    sense_.resize(n);
     logged_.resize(n, 0);
     log_.resize(n * kLog, 0);
 }
@@ -56,29 +55,13 @@ void Reception::farStarts(const StepLinks& step) {
 
 void Reception::senseCell(std::int32_t cell) {
     if (cells_ == nullptr) return;
-    const Units field = field_[cell];
-    CellSense& bound = sense_[static_cast<std::size_t>(cell)];
-    // The walk below acts on a member only where (its sum + the field >= the threshold) differs from its sense:
-    // an idle member's sum is at most idleMax, a busy one's at least busyMin.
-    const bool idleStay = !bound.anyIdle || (field < sensingUnits_ && bound.idleMax < sensingUnits_ - field);
-    const bool busyStay = field >= sensingUnits_ || bound.busyMin >= sensingUnits_ - field;
-    if (idleStay && busyStay) return;
-    CellSense fresh;
     const auto [begin, end] = cells_->members(cell);
     for (const Slot* r = begin; r != end; ++r) {
         if (cell_[*r] != cell) continue;  // not moved in yet (moveStations)
-        const Units heard = heard_[*r];
-        const Units total = heard + field_[cell];
+        const Units total = heard_[*r] + field_[cell];
         // Units first (no conversion); setSensedPower decides in mW as everywhere else.
         if ((total >= sensingUnits_) != static_cast<bool>(sensedBusy_[*r])) setSensedPower(*r, mwOf(total));
-        if (sensedBusy_[*r] != 0) {
-            fresh.busyMin = std::min(fresh.busyMin, heard);
-        } else {
-            fresh.idleMax = std::max(fresh.idleMax, heard);
-            fresh.anyIdle = true;
-        }
     }
-    bound = fresh;  // the walk saw every member: the bounds tighten to them
 }
 
 void Reception::moveStations(const FarCells& cells) {
@@ -205,7 +188,6 @@ double Reception::frameEnds(FrameId id, kernel::SimTime start, Link& link) {
 
 void Reception::setSensedPower(Slot s, double mw) {
     const bool busy = mw >= sensingMw_;
-    noteSense(s, busy);
     if (busy == static_cast<bool>(sensedBusy_[s])) return;
     sensedBusy_[s] = busy;
     listener_.channelSensed(s, busy);

@@ -144,22 +144,8 @@ private:
         const std::int32_t c = cell_[r];
         return c >= 0 && static_cast<std::size_t>(c) < field_.size() ? field_[c] : Units{0};
     }
-    /// Carrier sense of `cell`'s stations after its field changed: skipped whole when the cell's
-    /// bounds show that no member's sum crosses the sensing threshold (the walk would call nothing).
+    /// Carrier sense of `cell`'s stations after its field changed.
     void senseCell(std::int32_t cell);
-    /// Keeps station `s`'s cell's bounds over its power heard (setSensedPower's every call: each
-    /// change of a station's power, sense or cell ends in one).
-    void noteSense(Slot s, bool busy) {
-        const std::int32_t c = cell_[s];
-        if (c < 0) return;
-        CellSense& bound = sense_[static_cast<std::size_t>(c)];
-        if (busy) {
-            bound.busyMin = std::min(bound.busyMin, heard_[s]);
-        } else {
-            bound.idleMax = std::max(bound.idleMax, heard_[s]);
-            bound.anyIdle = true;
-        }
-    }
 
     Listener& listener_;
     FrameErrorTable fer_;
@@ -189,15 +175,6 @@ private:
     // Carrier sense with the far field: each station's cell this step and the cells' members.
     std::vector<std::int32_t> cell_;
     const FarCells* cells_ = nullptr;
-    // Per cell, bounds over its members' own sums (heard_) since its last walk, noted at every change: the
-    // largest an idle member heard and the smallest a busy one heard (no busy member: the largest units).
-    // Loose (a member that left or changed state stays in them), never too tight, so a skip is exact.
-    struct CellSense {
-        Units idleMax = 0;
-        Units busyMin = ~Units{0};
-        bool anyIdle = false;
-    };
-    std::vector<CellSense> sense_;
     Units sensingUnits_ = 0;
 };
 

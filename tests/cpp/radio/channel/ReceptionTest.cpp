@@ -395,7 +395,8 @@ TEST_F(ReceptionTest, AFarCellsStationsSenseTheirSumWhateverCellsTheSensingSkips
     // 40 stations in four far cells, moving between them at each "step", hear individual links and their
     // cells' fields rising and falling, all near the sensing threshold (−85 dBm): after every change each
     // station senses busy exactly when its links' sum plus its cell's field reaches the threshold, and the
-    // changes reported are exactly those (a cell skipped when a member would have changed shows here).
+    // changes reported are exactly those (a far cell whose walk were skipped when a member would have changed
+    // shows here: the check kept for any such lever).
     constexpr int kStations = 40;
     for (int k = 3; k < kStations; ++k) reception.addStation();
     using Units = Reception::Units;
