@@ -7,16 +7,18 @@ per bin), then the interference the model neglects: the mean power at a receiver
 beyond the cutoff range (the only links no tier computes), from the model's own WINNER+ B1 law,
 against the noise.
 
-    PYTHONPATH=python:tools .venv/bin/python bench/tiers.py [--seconds 4] [--seeds 3]
+    PYTHONPATH=python:tools .venv/bin/python bench/tiers.py [--seconds 4] [--seeds 3] [--tier-margin 7 5 ...]
+
+Each mode's error is printed beside its runs' CPU seconds (user + sys, all seeds) and their ratio to the exact model's.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import resource
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -62,10 +64,12 @@ def main() -> None:
     parser.add_argument(
         "--tier-margin",
         type=float,
-        default=None,
-        help="also run the far cells with this tier margin (dB; default 10): the interference-only tier starts "
-        "nearer (7 dB: 430 m instead of 512 m at bench5k's 23 dBm; here the far cells still start at the trace's "
-        "520 m, which these runs need for their lost lines)",
+        nargs="*",
+        default=[],
+        metavar="DB",
+        help="also run the far cells with each of these tier margins (dB; default 10): the interference-only tier "
+        "starts nearer (7 dB: 430 m instead of 512 m at bench5k's 23 dBm; here the far cells still start at the "
+        "trace's 520 m, which these runs need for their lost lines)",
     )
     args = parser.parse_args()
 
@@ -75,59 +79,54 @@ def main() -> None:
         "links": ("--param", "radio_link_budget=tiers", "--param", "radio_far_cell_m=0"),
         "cells": ("--param", "radio_link_budget=tiers"),
     }
-    if args.tier_margin is not None:
-        modes["nearer"] = (
-            "--param",
-            "radio_link_budget=tiers",
-            "--param",
-            f"radio_tier_margin_db={args.tier_margin:g}",
-        )
+    labels = {"links": "tiers per link", "cells": "tiers with far cells"}
+    for margin in args.tier_margin:
+        mode = f"m{margin:g}"
+        modes[mode] = ("--param", "radio_link_budget=tiers", "--param", f"radio_tier_margin_db={margin:g}")
+        labels[mode] = f"far cells, tier margin {margin:g} dB"
     curves: dict[str, list[dict]] = {mode: [] for mode in modes}
-    seconds: dict[str, float] = {mode: 0.0 for mode in modes}
+    cpu: dict[str, float] = {mode: 0.0 for mode in modes}  # the runs' own CPU (user + sys), s
     with tempfile.TemporaryDirectory() as tmp:
         for seed in range(1, args.seeds + 1):
             for mode, extra in modes.items():
-                began = time.perf_counter()
+                before = resource.getrusage(resource.RUSAGE_CHILDREN)
                 curves[mode].append(run(c, args.seconds, Path(tmp), args.threads, seed, extra))
-                seconds[mode] += time.perf_counter() - began
-    exact, links, cells = (pooled(curves[mode]) for mode in ("exact", "links", "cells"))
-    nearer = pooled(curves["nearer"]) if "nearer" in modes else None
+                after = resource.getrusage(resource.RUSAGE_CHILDREN)
+                cpu[mode] += after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+    pooledBy = {mode: pooled(curves[mode]) for mode in modes}
+    exact = pooledBy["exact"]
+    compared = [mode for mode in modes if mode != "exact"]
     print(
-        f"β = {c.density} veh/m, {c.hz:g} Hz, {args.seconds:g} s x {args.seeds} seeds; mean CBR exact "
-        f"{exact['cbr']:.3f}, tiers per link {links['cbr']:.3f}, tiers with far cells {cells['cbr']:.3f}"
+        f"β = {c.density} veh/m, {c.hz:g} Hz, {args.seconds:g} s x {args.seeds} seeds; mean CBR "
+        + ", ".join(f"{mode} {pooledBy[mode]['cbr']:.3f}" for mode in modes)
     )
-    header = f"\n{'metres':>6} {'exact':>7} {'links':>7} {'diff':>7} {'cells':>7} {'diff':>7} {'links':>9}"
-    print(header + (f" {'nearer':>7} {'diff':>7}" if nearer is not None else ""))
-    worst = {"links": 0.0, "cells": 0.0, "nearer": 0.0}
+    print(f"\n{'metres':>6} {'exact':>7}" + "".join(f" {mode:>7} {'diff':>7}" for mode in compared) + f" {'links':>9}")
+    worst = {mode: 0.0 for mode in compared}
     for k, d in enumerate(DISTANCES):
-        a, b, e = exact["pdr"][k], links["pdr"][k], cells["pdr"][k]
-        if a is None or b is None or e is None:
+        a = exact["pdr"][k]
+        if a is None:
             continue
-        worst["links"] = max(worst["links"], abs(a - b))
-        worst["cells"] = max(worst["cells"], abs(a - e))
-        row = f"{d:6.0f} {a:7.4f} {b:7.4f} {b - a:+7.4f} {e:7.4f} {e - a:+7.4f} {exact['links'][k]:9d}"
-        if nearer is not None and nearer["pdr"][k] is not None:
-            n = nearer["pdr"][k]
-            worst["nearer"] = max(worst["nearer"], abs(a - n))
-            row += f" {n:7.4f} {n - a:+7.4f}"
-        print(row)
-    labels = [("links", "tiers per link"), ("cells", "tiers with far cells")]
-    if nearer is not None:
-        labels.append(("nearer", f"far cells, tier margin {args.tier_margin:g} dB"))
-        print(f"mean CBR with tier margin {args.tier_margin:g} dB: {nearer['cbr']:.3f}")
-    for mode, label in labels:
+        row = f"{d:6.0f} {a:7.4f}"
+        for mode in compared:
+            b = pooledBy[mode]["pdr"][k]
+            if b is None:
+                row += f" {'-':>7} {'-':>7}"
+                continue
+            worst[mode] = max(worst[mode], abs(a - b))
+            row += f" {b:7.4f} {b - a:+7.4f}"
+        print(row + f" {exact['links'][k]:9d}")
+    print(f"\n{'mode':<34} {'largest diff':>12} {'bound 0.01':>10} {'mean CBR':>8} {'CPU s':>7} {'x exact':>7}")
+    print(f"{'exact model':<34} {0:12.4f} {'':>10} {exact['cbr']:8.3f} {cpu['exact']:7.1f} {1:7.2f}")
+    for mode in compared:
         w = worst[mode]
         print(
-            f"\n{label}: largest difference per 25 m bin {w:.4f} (bound 0.01): {'within' if w <= 0.01 else 'OUTSIDE'}"
+            f"{labels[mode]:<34} {w:12.4f} {'within' if w <= 0.01 else 'OUTSIDE':>10} {pooledBy[mode]['cbr']:8.3f} "
+            f"{cpu[mode]:7.1f} {cpu[mode] / cpu['exact']:7.2f}"
         )
     neglected = neglected_dbm(c.density, c.hz)
     print(
-        f"cutoff {cutoff_m():.0f} m; neglected interference beyond it: {neglected:.1f} dBm, "
+        f"\ncutoff {cutoff_m():.0f} m; neglected interference beyond it: {neglected:.1f} dBm, "
         f"{NOISE - neglected:.1f} dB below the noise ({NOISE:g} dBm; bound: more than 10 dB)"
-    )
-    print(
-        f"wall seconds of all runs: exact {seconds['exact']:.1f}, tiers per link {seconds['links']:.1f}, "
-        f"with far cells {seconds['cells']:.1f}"
     )
 
 

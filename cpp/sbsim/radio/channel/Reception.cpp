@@ -7,10 +7,6 @@
 
 namespace sbsim::radio {
 
-namespace {
-constexpr double kUnitsPerMw = 18446744073709551616.0;  // 2^64: scaling by it is exact
-}  // namespace
-
 Reception::Reception(const ChannelSettings& settings, Listener& listener)
     : listener_(listener),
       fer_(settings.ferTable),
@@ -19,8 +15,6 @@ Reception::Reception(const ChannelSettings& settings, Listener& listener)
       floorMw_(dbToLinear(settings.interferenceFloorDbm)),
       ratioDb_(linearToDb(settings.bandwidthHz / (settings.rateMbps * 1e6))),
       sensingUnits_(unitsOf(sensingMw_)) {}
-
-double Reception::mwOf(Units units) { return static_cast<double>(units) / kUnitsPerMw; }
 
 void Reception::addStation() {
     heard_.push_back(0);

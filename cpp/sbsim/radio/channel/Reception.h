@@ -115,7 +115,15 @@ public:
     }
 
 private:
-    static double mwOf(Units units);
+    /// `units` in mW. Below 2^64 units (1 mW: every sum near the sensing threshold) the low word is the whole
+    /// value and converting it rounds exactly as the 128-bit conversion does; scaling by 2^-64 is exact like the
+    /// division. Only larger sums pay libgcc's out-of-line __floatuntidf: the same double either way.
+    static double mwOf(Units units) {
+        const auto high = static_cast<std::uint64_t>(units >> 64);
+        if (high == 0) [[likely]]
+            return static_cast<double>(static_cast<std::uint64_t>(units)) * 0x1p-64;
+        return static_cast<double>(units) * 0x1p-64;
+    }
     /// mwOf to within a rounding, without libgcc's 128-bit conversion: for the far tier's maxima.
     static double roughMwOf(Units units) {
         return static_cast<double>(static_cast<std::uint64_t>(units >> 64)) +
