@@ -27,18 +27,12 @@ std::int32_t cellCoordinate(double v, double inverseCellSize) {
 }
 }  // namespace
 
-void PairSweep::build(const VehicleSnapshot& snapshot, double radius, std::span<const std::uint8_t> inert) {
+void PairSweep::build(const VehicleSnapshot& snapshot, double radius) {
     if (!(radius >= 0) || !std::isfinite(radius)) {
         throw std::invalid_argument(fmt::format("pair sweep: radius must be finite and >= 0, not {:f}", radius));
     }
-    const auto n = static_cast<std::size_t>(snapshot.size());
-    if (!inert.empty() && inert.size() != n) {
-        throw std::invalid_argument(
-            fmt::format("pair sweep: {} inert flags for {} vehicles", inert.size(), snapshot.size()));
-    }
     r2_ = radius * radius;
-    // Inert vehicles are placed after the others of their cell (pass 1 the others, pass 2 the inert).
-    const auto isInert = [&](std::size_t i) { return !inert.empty() && inert[i] != 0; };
+    const auto n = static_cast<std::size_t>(snapshot.size());
     const Eigen::Matrix2Xd& positions = snapshot.positions();
     xs_.resize(n);
     ys_.resize(n);
@@ -76,21 +70,14 @@ void PairSweep::build(const VehicleSnapshot& snapshot, double radius, std::span<
     };
     const auto addCell = [&](std::int32_t cx, std::int32_t cy, std::size_t begin) {
         if (cells_.empty() || cells_.back().cy != cy) rowStart_.push_back(static_cast<std::uint32_t>(cells_.size()));
-        cells_.push_back(Cell{cx, cy, static_cast<std::int32_t>(begin), 0});  // inert: set once placed
+        cells_.push_back(Cell{cx, cy, static_cast<std::int32_t>(begin)});
     };
 
     const double boxCells = static_cast<double>(maxX - minX + 1) * static_cast<double>(maxY - minY + 1);
     if (!swept) {
         // An absurd position (beyond a billion km): every vehicle in one cell, all pairs tested.
-        std::size_t slot = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!isInert(i)) place(slot++, i);
-        }
+        for (std::size_t i = 0; i < n; ++i) place(i, i);
         addCell(0, 0, 0);
-        cells_.back().inert = static_cast<std::int32_t>(slot);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (isInert(i)) place(slot++, i);
-        }
     } else if (boxCells <= 4.0 * static_cast<double>(n) + 4096) {
         // Few cells per vehicle: a counting sort over the bounding box's cells, row by row.
         const auto columns = static_cast<std::size_t>(maxX - minX + 1);
@@ -112,19 +99,7 @@ void PairSweep::build(const VehicleSnapshot& snapshot, double radius, std::span<
             counts_[b + 1] += counts_[b];
         }
         // counts_[b] is bucket b's insertion cursor (stable: ascending index within a cell).
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!isInert(i)) place(static_cast<std::size_t>(counts_[bucketOfVehicle_[i]]++), i);
-        }
-        for (Cell& cell : cells_) {
-            const std::size_t b =
-                static_cast<std::size_t>(cell.cy - minY) * columns + static_cast<std::size_t>(cell.cx - minX);
-            cell.inert = counts_[b];
-        }
-        if (!inert.empty()) {
-            for (std::size_t i = 0; i < n; ++i) {
-                if (isInert(i)) place(static_cast<std::size_t>(counts_[bucketOfVehicle_[i]]++), i);
-            }
-        }
+        for (std::size_t i = 0; i < n; ++i) place(static_cast<std::size_t>(counts_[bucketOfVehicle_[i]]++), i);
     } else {
         // Spread far apart (a network tens of kilometres wide, a stray position): sorted by cell.
         std::vector<std::size_t> order(n);
@@ -132,23 +107,16 @@ void PairSweep::build(const VehicleSnapshot& snapshot, double radius, std::span<
         std::vector<std::pair<std::int32_t, std::int32_t>> cellOfI(n);  // row first
         for (std::size_t i = 0; i < n; ++i) cellOfI[i] = {cellOfVehicle_[i].second, cellOfVehicle_[i].first};
         std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-            if (cellOfI[a] != cellOfI[b]) return cellOfI[a] < cellOfI[b];
-            return isInert(a) != isInert(b) ? isInert(b) : a < b;
+            return cellOfI[a] != cellOfI[b] ? cellOfI[a] < cellOfI[b] : a < b;
         });
         for (std::size_t k = 0; k < n; ++k) {
             const std::size_t i = order[k];
             place(k, i);
-            const bool newCell = k == 0 || cellOfI[i] != cellOfI[order[k - 1]];
-            if (newCell) addCell(cellOfI[i].second, cellOfI[i].first, k);
-            // The cell's first inert vehicle; a cell without one ends them at its end (below).
-            if (isInert(i) && (newCell || !isInert(order[k - 1]))) cells_.back().inert = static_cast<std::int32_t>(k);
-            if (newCell && k > 0 && !isInert(order[k - 1]))
-                cells_[cells_.size() - 2].inert = static_cast<std::int32_t>(k);
+            if (k == 0 || cellOfI[i] != cellOfI[order[k - 1]]) addCell(cellOfI[i].second, cellOfI[i].first, k);
         }
-        if (!isInert(order[n - 1])) cells_.back().inert = static_cast<std::int32_t>(n);
     }
     // The end: a cell no row holds, whose begin closes the last cell (and whose cy ends the last row).
-    cells_.push_back(Cell{0, 0, static_cast<std::int32_t>(n), static_cast<std::int32_t>(n)});
+    cells_.push_back(Cell{0, 0, static_cast<std::int32_t>(n)});
     rowStart_.push_back(static_cast<std::uint32_t>(cells_.size() - 1));
 }
 

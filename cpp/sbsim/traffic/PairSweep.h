@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <span>
 #include <utility>
 #include <vector>
 
@@ -18,25 +17,19 @@ namespace sbsim::traffic {
 /// above (half of the 3x3 stencil), so a pair costs one distance test where a search per vehicle
 /// (forEachWithin for each) costs two. Rows of cells are independent, for a pool. Kept apart from
 /// NeighbourGrid (which stays one search per vehicle) so that the grid's many includers do not change.
-///
-/// A caller that knows some pairs cannot matter (two standing vehicles for a time-to-collision
-/// test) marks their vehicles inert: a pair of two inert vehicles is then never visited, not even
-/// distance-tested. Within a cell the others come first, so an inert vehicle is swept against the
-/// others of the neighbouring cells alone.
 class PairSweep {
 public:
     using Index = VehicleSnapshot::Index;
 
-    /// Sorts `snapshot`'s vehicles (positions copied) into cells for `radius`. `inert` (empty, or
-    /// one flag per vehicle): vehicles with a non-zero flag are inert, their pairs with each other skipped.
-    /// Throws std::invalid_argument unless radius is finite and >= 0, or for `inert` of another size.
-    void build(const VehicleSnapshot& snapshot, double radius, std::span<const std::uint8_t> inert = {});
+    /// Sorts `snapshot`'s vehicles (positions copied) into cells for `radius`.
+    /// Throws std::invalid_argument unless radius is finite and >= 0.
+    void build(const VehicleSnapshot& snapshot, double radius);
 
     /// Rows of occupied cells: each pair belongs to exactly one.
     std::size_t rows() const { return rowStart_.empty() ? 0 : rowStart_.size() - 1; }
 
     /// Calls `visit(a, b)` (a != b, either may be the smaller index) once for every pair of row
-    /// `row` within the radius, but for pairs of two inert vehicles. The order of the calls is unspecified.
+    /// `row` within the radius. The order of the calls is unspecified.
     template <typename Visit>
     void forEachPairInRow(std::size_t row, Visit&& visit) const;
 
@@ -59,7 +52,6 @@ private:
     struct Cell {
         std::int32_t cx, cy;
         std::int32_t begin;  // its vehicles are items [begin, next cell's begin)
-        std::int32_t inert;  // its inert vehicles are items [inert, next cell's begin)
     };
 
     double r2_ = 0;
@@ -109,19 +101,9 @@ void PairSweep::forEachPairInRow(std::size_t row, Visit&& visit) const {
             upBegin = cells_[from].begin;
             upEnd = cells_[to].begin;
         }
-        for (std::int32_t a = begin; a < cell.inert; ++a) {
+        for (std::int32_t a = begin; a < end; ++a) {
             for (std::int32_t b = a + 1; b < runEnd; ++b) test(a, b);
             for (std::int32_t b = upBegin; b < upEnd; ++b) test(a, b);
-        }
-        if (cell.inert == end) continue;
-        // The inert ones meet only the others: none of their own cell's is after them, those of the
-        // next cell and of the cells above lead each cell.
-        const std::int32_t nextOthers = runEnd != end ? cells_[c + 1].inert : end;
-        for (std::int32_t a = cell.inert; a < end; ++a) {
-            for (std::int32_t b = end; b < nextOthers; ++b) test(a, b);
-            for (std::uint32_t u = from; above && u < to; ++u) {
-                for (std::int32_t b = cells_[u].begin; b < cells_[u].inert; ++b) test(a, b);
-            }
         }
     }
 }

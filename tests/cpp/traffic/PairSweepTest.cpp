@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -21,14 +20,11 @@ using test::Vehicle;
 using Index = PairSweep::Index;
 using Pairs = std::vector<std::pair<Index, Index>>;
 
-/// Every pair (smaller index first) within `radius`, by NeighbourGrid's test, ascending; without
-/// the pairs of two vehicles flagged in `inert` (if given).
-Pairs bruteForce(const VehicleSnapshot& s, double radius, const std::vector<std::uint8_t>& inert = {}) {
+/// Every pair (smaller index first) within `radius`, by NeighbourGrid's test, ascending.
+Pairs bruteForce(const VehicleSnapshot& s, double radius) {
     Pairs out;
     for (Index i = 0; i < s.size(); ++i) {
         for (Index j = i + 1; j < s.size(); ++j) {
-            if (!inert.empty() && inert[static_cast<std::size_t>(i)] != 0 && inert[static_cast<std::size_t>(j)] != 0)
-                continue;
             const double dx = s.positions()(0, j) - s.positions()(0, i);
             const double dy = s.positions()(1, j) - s.positions()(1, i);
             if (dx * dx + dy * dy <= radius * radius) out.emplace_back(i, j);
@@ -45,44 +41,22 @@ Pairs swept(const PairSweep& sweep) {
     return out;
 }
 
-/// Inert flags to sweep each scene with: none, all, every other vehicle, runs of ten, and a
-/// random 45 % (the bench's standing share), so cells hold only inert vehicles, none or both.
-std::vector<std::vector<std::uint8_t>> inertPatterns(std::size_t n) {
-    std::vector<std::vector<std::uint8_t>> out{{}, std::vector<std::uint8_t>(n, 1)};
-    std::vector<std::uint8_t> alternate(n), runs(n), random(n);
-    std::mt19937_64 rng(45);
-    std::bernoulli_distribution standing(0.45);
-    for (std::size_t i = 0; i < n; ++i) {
-        alternate[i] = i % 2 == 0 ? 1 : 0;
-        runs[i] = (i / 10) % 2 == 0 ? 1 : 0;
-        random[i] = standing(rng) ? 1 : 0;
-    }
-    out.push_back(alternate);
-    out.push_back(runs);
-    out.push_back(random);
-    return out;
-}
-
 /// The sweep visits exactly the brute force's pairs, each once and never a vehicle with itself,
-/// and the rows together are the whole sweep; with each of inertPatterns(), exactly those
-/// without the pairs of two inert vehicles. Returns how many pairs there were (none inert).
+/// and the rows together are the whole sweep. Returns how many pairs there were.
 std::size_t expectSameAsBruteForce(const VehicleSnapshot& s, double radius) {
     PairSweep sweep;
-    for (const std::vector<std::uint8_t>& inert : inertPatterns(static_cast<std::size_t>(s.size()))) {
-        sweep.build(s, radius, inert);
-        const Pairs expected = bruteForce(s, radius, inert);
-        const Pairs got = swept(sweep);
-        EXPECT_EQ(got, expected) << "radius " << radius << ", " << s.size() << " vehicles, " << inert.size()
-                                 << " inert flags";
-        for (const auto& [a, b] : got) EXPECT_NE(a, b);
-        Pairs byRow;
-        for (std::size_t row = 0; row < sweep.rows(); ++row) {
-            sweep.forEachPairInRow(row, [&](Index a, Index b) { byRow.emplace_back(std::min(a, b), std::max(a, b)); });
-        }
-        std::sort(byRow.begin(), byRow.end());
-        EXPECT_EQ(byRow, expected) << "radius " << radius;
+    sweep.build(s, radius);
+    const Pairs expected = bruteForce(s, radius);
+    const Pairs got = swept(sweep);
+    EXPECT_EQ(got, expected) << "radius " << radius << ", " << s.size() << " vehicles";
+    for (const auto& [a, b] : got) EXPECT_NE(a, b);
+    Pairs byRow;
+    for (std::size_t row = 0; row < sweep.rows(); ++row) {
+        sweep.forEachPairInRow(row, [&](Index a, Index b) { byRow.emplace_back(std::min(a, b), std::max(a, b)); });
     }
-    return bruteForce(s, radius).size();
+    std::sort(byRow.begin(), byRow.end());
+    EXPECT_EQ(byRow, expected) << "radius " << radius;
+    return expected.size();
 }
 
 TEST(PairSweep, MatchesBruteForceOnRandomPositions) {
@@ -180,22 +154,6 @@ TEST(PairSweep, RejectsABadRadius) {
     EXPECT_THROW(sweep.build(s, -1), std::invalid_argument);
     EXPECT_THROW(sweep.build(s, std::numeric_limits<double>::infinity()), std::invalid_argument);
     EXPECT_THROW(sweep.build(s, std::nan("")), std::invalid_argument);
-    s.assign({car("a", 0, 0), car("b", 1, 0)}, kernel::SimTime::zero());
-    const std::vector<std::uint8_t> oneFlag{1};
-    EXPECT_THROW(sweep.build(s, 5, oneFlag), std::invalid_argument);
-}
-
-TEST(PairSweep, InertPairsAreSkippedInSmallCases) {
-    // a, c inert on one point, b not: b meets both, a and c never meet.
-    VehicleSnapshot s;
-    s.assign({car("a", 0, 0), car("b", 3, 4), car("c", 0, 0), car("d", -6, -8)}, kernel::SimTime::zero());
-    PairSweep sweep;
-    sweep.build(s, 10, std::vector<std::uint8_t>{1, 0, 1, 1});
-    EXPECT_EQ(swept(sweep), (Pairs{{0, 1}, {1, 2}}));
-    sweep.build(s, 10, std::vector<std::uint8_t>{0, 0, 0, 0});
-    EXPECT_EQ(swept(sweep), (Pairs{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {2, 3}}));
-    sweep.build(s, 10, std::vector<std::uint8_t>{1, 1, 1, 1});
-    EXPECT_TRUE(swept(sweep).empty());
 }
 
 }  // namespace

@@ -51,14 +51,7 @@ void SpeedDifferenceCondition::computeAnswers(const EvaluationContext& ctx) {
     const traffic::VehicleSnapshot& snapshot = ctx.snapshot();
     const auto n = static_cast<std::size_t>(snapshot.size());
     const Eigen::VectorXd& speeds = snapshot.speeds();
-    // Two vehicles whose speeds both exceed the step's lowest by at most delta cannot qualify either
-    // way: for such a and b, rounded a - b <= rounded a - lowest <= delta (rounded subtraction is
-    // monotone). Their pairs (queues, vehicles standing or slow) are not even visited. NaN is inert too.
-    inert_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        inert_[k] = !(speeds[static_cast<Eigen::Index>(k)] - lowestSpeed_ > delta_) ? 1 : 0;
-    }
-    sweep_.build(snapshot, *distance_, inert_);
+    sweep_.build(snapshot, *distance_);
     // Sorted by ego, then other: each ego's answer is one ascending run.
     sweep_.collectSorted(*ctx.parallel(), rowFound_, found_, [&](VehicleIndex a, VehicleIndex b, auto& out) {
         if (qualifies(speeds[a], speeds[b])) out.emplace_back(a, b);

@@ -68,7 +68,6 @@ private:
     std::vector<std::int32_t> answerStart_;
     std::vector<VehicleIndex> answerOthers_;
     traffic::PairSweep sweep_;
-    std::vector<std::uint8_t> inert_;  // per vehicle: within delta of the step's lowest speed (see computeAnswers)
     std::vector<std::vector<std::pair<VehicleIndex, VehicleIndex>>> rowFound_;
     std::vector<std::pair<VehicleIndex, VehicleIndex>> found_;
 };

@@ -46,15 +46,8 @@ void TtcCondition::prepare(const EvaluationContext& ctx) {
 void TtcCondition::computePairs(const EvaluationContext& ctx) {
     const std::size_t n = movers_.size();
     // One sweep visits each pair within distance_ once (a search per vehicle meets it twice);
-    // a pair is tested with its smaller index first, as the search per vehicle does. Two vehicles
-    // that are both standing (or of no length) never conflict: mayConflict's first test, whose
-    // shorter sample step is one of theirs. Such pairs (queues at junctions) are not even visited.
-    inert_.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const double step = circles_[k].sampleStep;
-        inert_[k] = !(step > 0 && std::isfinite(step)) ? 1 : 0;
-    }
-    sweep_.build(ctx.snapshot(), distance_, inert_);
+    // a pair is tested with its smaller index first, as the search per vehicle does.
+    sweep_.build(ctx.snapshot(), distance_);
     // Few pairs conflict: sorted, they are each vehicle's later conflicts in ascending order.
     sweep_.collectSorted(*ctx.parallel(), rowConflicts_, conflicting_, [&](VehicleIndex a, VehicleIndex b, auto& out) {
         const VehicleIndex ego = std::min(a, b);

@@ -109,7 +109,6 @@ private:
     std::vector<std::int32_t> pairStart_;
     std::vector<VehicleIndex> pairOthers_;
     traffic::PairSweep sweep_;
-    std::vector<std::uint8_t> inert_;  // per vehicle: standing or of no length (the sweep skips pairs of two)
     std::vector<std::vector<std::pair<VehicleIndex, VehicleIndex>>> rowConflicts_;
     std::vector<std::pair<VehicleIndex, VehicleIndex>> conflicting_;
     std::atomic<std::size_t> tests_{0};  // test() calls since the last prepare()
