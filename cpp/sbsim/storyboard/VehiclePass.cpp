@@ -146,14 +146,11 @@ void VehiclePass::run(const EvaluationContext& ctx, kernel::ParallelFor& paralle
         Row& row = rows_[static_cast<std::size_t>(i)];
         std::uint8_t* const active = activeFlags_.data() + static_cast<std::size_t>(i) * stride;
         bool changed = false;
-        for (std::size_t s = 0; s < stride; ++s) {
-            const Entry& entry = stories_[s];
-            ConditionResult tested(false);
-            const ConditionResult& result =
-                entry.pure ? precomputed_[s][i] : (tested = entry.story->condition().test(ctx, i));
+        // Story s's result for the vehicle: activates or deactivates it if it turned on or off.
+        const auto apply = [&](std::size_t s, const Entry& entry, const ConditionResult& result) {
             if (!active[s] && result.isTrue()) {
                 // A vehicle without state has never activated anything.
-                if ((row.state != nullptr ? row.state->activations[s] : 0) >= entry.maxActivations) continue;
+                if ((row.state != nullptr ? row.state->activations[s] : 0) >= entry.maxActivations) return;
                 if (row.state == nullptr) row.state = &stateFor(id);
                 activate(*row.state, s, id, result, snapshot);
                 active[s] = 1;
@@ -162,6 +159,16 @@ void VehiclePass::run(const EvaluationContext& ctx, kernel::ParallelFor& paralle
                 deactivate(*row.state, s, id);
                 active[s] = 0;
                 changed = true;
+            }
+        };
+        for (std::size_t s = 0; s < stride; ++s) {
+            const Entry& entry = stories_[s];
+            if (entry.pure) {
+                // Most pure stories neither turn on nor off: no result is made or dropped for them.
+                const ConditionResult& result = precomputed_[s][i];
+                if (result.isTrue() != (active[s] != 0)) apply(s, entry, result);
+            } else {
+                apply(s, entry, entry.story->condition().test(ctx, i));
             }
         }
         // A vehicle's state is kept until it leaves, even while idle: stories that flip often
