@@ -74,7 +74,7 @@ void Medium::stationChanged(const std::string& stationId) {
     receiversFilledAt_ = stationChanges_;
 }
 
-void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
+void Medium::deliverLater(std::shared_ptr<const V2xMessage> message, Receivers receivers,
                           std::vector<StationIndex> stations, kernel::SimTime delay) {
     if (receivers.empty()) return;
     queue(std::move(message), std::make_shared<const Recipients>(Recipients{std::move(receivers), std::move(stations)}),

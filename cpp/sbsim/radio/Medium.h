@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "sbsim/kernel/DefaultInitAllocator.h"
 #include "sbsim/kernel/Export.h"
 #include "sbsim/kernel/Module.h"
 #include "sbsim/radio/CertificatePolicy.h"
@@ -50,9 +51,11 @@ public:
     static constexpr double kDistanceBin = 50;
     /// A station's index for the run (StationIds), as media hand receivers to deliverLater().
     using StationIndex = StationIds::Index;
+    /// A frame's receiving sides, grown without a zero-fill: a medium writes each one it takes.
+    using Receivers = std::vector<Receiver*, kernel::DefaultInitAllocator<Receiver*>>;
     /// A frame's receivers (their stationIndex() in `stations`), shareable by the frames of a step.
     struct Recipients {
-        std::vector<Receiver*> receivers;
+        Receivers receivers;
         std::vector<StationIndex> stations;
     };
     /// Channel busy ratio over every station's 100 ms samples.
@@ -156,7 +159,7 @@ protected:
     /// `delay`, from one kernel event. A station that has left by then is skipped, as its own event
     /// would have been dropped: the pointers are used only while no module joined or left meanwhile,
     /// else the stations are looked up again by name.
-    void deliverLater(std::shared_ptr<const V2xMessage> message, std::vector<Receiver*> receivers,
+    void deliverLater(std::shared_ptr<const V2xMessage> message, Receivers receivers,
                       std::vector<StationIndex> stations, kernel::SimTime delay);
     /// The same with receivers a medium keeps (and may hand several frames) rather than copies. They
     /// must not change while another holder has them (the certificate policy keeps a sender's last

@@ -233,7 +233,7 @@ void ChannelMedium::endTransmission(std::uint64_t id) {
     // events would have run); a drawn delay gives each its own.
     const bool drawnDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Uniform ||
                             settings_.extraDelay == ChannelSettings::ExtraDelay::Gamma;
-    std::vector<Receiver*> receivers;
+    Receivers receivers;
     std::vector<StationIndex> stations;
     const kernel::SimTime sharedDelay = settings_.extraDelay == ChannelSettings::ExtraDelay::Constant
                                             ? kernel::SimTime::fromSeconds(settings_.delay)

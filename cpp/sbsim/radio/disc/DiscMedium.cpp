@@ -106,7 +106,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
     }
     // With a trace, stations out to the trace range are visited too (to report them out of range);
     // the draws stay those of the stations in range, in the same ascending order.
-    std::vector<Receiver*> receivers;
+    Receivers receivers;
     std::vector<StationIndex> stations;
     Counts* counts = countsOf(*shared);
     // Every station in range receives, nothing traced: a frame takes its sender's receivers of the step.
@@ -234,7 +234,7 @@ void DiscMedium::buildGrid() {
 }
 
 void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
-    std::vector<Receiver*>& receivers = scratch_.receivers;
+    Receivers& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
     // Counted per bin in a small array while the range has few bins (no growth check per link).
     constexpr std::size_t kFewBins = 64;
