@@ -92,12 +92,18 @@ struct LinesTrace : MessageTrace {
 struct Bench {
     explicit Bench(const std::vector<std::pair<std::string, double>>& stations, ChannelSettings settings = quiet(),
                    unsigned threads = 1, std::shared_ptr<const Obstacles> obstacles = {})
+        : Bench(onTheAxis(stations), std::move(settings), threads, std::move(obstacles)) {}
+    /// Stations anywhere in the plane: (id, x, y).
+    explicit Bench(const std::vector<std::tuple<std::string, double, double>>& stations,
+                   ChannelSettings settings = quiet(), unsigned threads = 1,
+                   std::shared_ptr<const Obstacles> obstacles = {})
         : sim(42, threads) {
         std::vector<traffic::VehicleSnapshot::Vehicle> vehicles;
-        for (const auto& [id, x] : stations) {
+        for (const auto& [id, x, y] : stations) {
             traffic::VehicleSnapshot::Vehicle v;
             v.id = id;
             v.x = x;
+            v.y = y;
             vehicles.push_back(v);
             modules[id] = &sim.emplaceModule<Station>(id);
         }
@@ -111,6 +117,12 @@ struct Bench {
             std::move(obstacles));
         medium->setTrace(&trace);
         script = &sim.emplaceModule<Script>();
+    }
+    static std::vector<std::tuple<std::string, double, double>> onTheAxis(
+        const std::vector<std::pair<std::string, double>>& stations) {
+        std::vector<std::tuple<std::string, double, double>> placed;
+        for (const auto& [id, x] : stations) placed.emplace_back(id, x, 0.0);
+        return placed;
     }
     /// No shadowing: outcomes follow distance alone.
     static ChannelSettings quiet() {
@@ -377,6 +389,88 @@ TEST(ChannelMedium, TheFarTierCountsEachReceiverOnceAndInterferesAsItsLinksDid) 
     }
     EXPECT_GT(sinr[2] - sinr[0], 0.5);  // the far frame's interference counts
     EXPECT_NEAR(sinr[1], sinr[0], 0.05);
+}
+
+TEST(ChannelMedium, FarCellsAtTheirCentresSenseAndDeferAsTheirLinksDidWithFramesOfTwoSizes) {
+    // Every station at its cell's centre, so a cell's field is exactly its members' links: the far
+    // tier must then change nothing a station does. Station a0 hears n just below the sensing
+    // threshold; far senders on a ring beyond the far range, apart enough to overlap, push it over
+    // with their fields. Frames of two sizes (CAM-like and longer) overlap and end in every order,
+    // so a cell's field must rise and fall by each frame's own figure.
+    ChannelSettings cells = Bench::quiet();
+    cells.farCellM = 20;
+    ChannelSettings links = cells;
+    links.farCellM = 0;
+    const Bench probe({{"a", 0}}, cells);
+    const double far = probe.medium->farRange();
+    const double size = cells.farCellM;
+    const auto centre = [&](int i) { return (i + 0.5) * size; };
+    const auto mw = [&](double d) { return std::pow(10.0, probe.medium->meanPowerDbm(d) / 10); };
+    const double sensingMw = std::pow(10.0, cells.sensingDbm / 10);
+    // n: the cell centre whose link to a0 is closest to 0.3 dB below the threshold.
+    std::tuple<std::string, double, double> n{"n", 0, 0};
+    double best = 1e9;
+    for (int i = 1; i < 40; ++i) {
+        for (int j = 0; j < 40; ++j) {
+            const double d = std::hypot(centre(i) - centre(0), centre(j) - centre(0));
+            const double gap = std::abs(probe.medium->meanPowerDbm(d) - (cells.sensingDbm - 0.3));
+            if (gap < best) {
+                best = gap;
+                n = {"n", centre(i), centre(j)};
+            }
+        }
+    }
+    const double nMw = mw(std::hypot(std::get<1>(n) - centre(0), std::get<2>(n) - centre(0)));
+    ASSERT_LT(nMw, sensingMw);
+    ASSERT_GT(nMw, 0.8 * sensingMw);
+    std::vector<std::tuple<std::string, double, double>> scene{{"a0", centre(0), centre(0)}, n};
+    std::vector<std::string> ring;
+    double fieldMw = 0;
+    const int span = static_cast<int>(far / size) + 12;
+    for (int i = -span; i <= span; ++i) {
+        for (int j = -span; j <= span; ++j) {
+            const double x = centre(i), y = centre(j);
+            const double d = std::hypot(x - centre(0), y - centre(0));
+            if (d < far + 1.5 * size || d > far + 8 * size) continue;
+            bool apart = true;
+            for (const auto& [id, ox, oy] : scene) apart = apart && std::hypot(x - ox, y - oy) >= 300;
+            if (!apart) continue;
+            ring.push_back(fmt::format("f{}", ring.size()));
+            scene.emplace_back(ring.back(), x, y);
+            fieldMw += mw(d);
+        }
+    }
+    ASSERT_GT(nMw + fieldMw, sensingMw);
+    std::map<std::string, std::vector<SimTime>> tx[3];
+    std::map<std::string, std::vector<std::string>> got[3];
+    std::map<std::string, std::string_view> losses[3];
+    for (int mode : {0, 1, 2}) {
+        Bench b(scene, mode == 1 ? cells : links);
+        for (int k = 0; k < 6; ++k) {
+            const SimTime at = SimTime::fromNanoseconds(1'000'000 + 900'000 * k);
+            if (mode < 2) {
+                for (std::size_t f = 0; f < ring.size(); ++f) {
+                    const SimTime t = at + SimTime::fromNanoseconds(37'000 * static_cast<std::int64_t>(f % 5));
+                    if ((f + k) % 2 == 0) {
+                        b.sendCam(t, ring[f]);
+                    } else {
+                        b.send(t, ring[f]);
+                    }
+                }
+            }
+            b.send(at, "n");
+            b.sendCam(at + SimTime::fromNanoseconds(150'000), "a0");
+        }
+        b.run();
+        tx[mode] = b.trace.txTimes;
+        for (const auto& [id, station] : b.modules) got[mode][id] = station->received;
+        losses[mode] = b.trace.losses;
+    }
+    EXPECT_TRUE(tx[1] == tx[0]);
+    EXPECT_TRUE(got[1] == got[0]);
+    EXPECT_TRUE(losses[1] == losses[0]);
+    // The far senders' fields mattered: without them a0 sends at other times.
+    EXPECT_FALSE(tx[2].at("a0") == tx[0].at("a0"));
 }
 
 TEST(FarCells, AStationAtNoPlaceHasNoCellAndLeavesTheOthersTheirs) {
