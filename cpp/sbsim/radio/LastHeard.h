@@ -87,8 +87,8 @@ private:
     std::vector<Index> stations_;                // ascending
     std::vector<kernel::SimTime::rep> heardNs_;  // as stations_
     /// Stations new to the table lately, ascending, none in stations_, and when they heard: the
-    /// arrays above take them by the kLateMerge, so a sender's next step, which brings a few,
-    /// moves no block of the arrays (a miss per cache line of a table of ~1,500 stations).
+    /// arrays above take them once there are more than kLateMerge, so a sender's next step, which
+    /// brings a few, moves no block of the arrays (a miss per cache line of a ~1,500-station table).
     std::vector<Index> late_;
     std::vector<kernel::SimTime::rep> lateNs_;
     static constexpr std::size_t kLateMerge = 64;
