@@ -6,6 +6,10 @@ namespace sbsim::radio {
 
 CertificatePolicy::Station& CertificatePolicy::of(Index station, kernel::SimTime now) {
     forgetOld(now);
+    return activate(station, now);
+}
+
+CertificatePolicy::Station& CertificatePolicy::activate(Index station, kernel::SimTime now) {
     if (station >= stations_.size()) stations_.resize(station + 1);
     Station& s = stations_[station];
     if (!s.active) {
@@ -52,7 +56,7 @@ void CertificatePolicy::heard(Index station, Index sender, SecurityProfile profi
     const auto before = heardBy_[sender].hear(station, now);
     const bool wasKnown = before && now - *before <= kForgetAfter;
     // Vanetza asks for its own certificate only on a CAM from an unknown station.
-    if (!wasKnown && profile == SecurityProfile::Cam) of(station, now).requested = true;
+    if (!wasKnown && profile == SecurityProfile::Cam) activate(station, now).requested = true;
 }
 
 template <typename Hear>
@@ -62,7 +66,7 @@ void CertificatePolicy::heardBy(Index sender, SecurityProfile profile, kernel::S
     unknown_.clear();
     hear(heardBy_[sender], now - kForgetAfter);
     if (profile != SecurityProfile::Cam) return;
-    for (const Index station : unknown_) of(station, now).requested = true;
+    for (const Index station : unknown_) activate(station, now).requested = true;  // swept above
 }
 
 void CertificatePolicy::heardAll(std::span<const Index> stations, Index sender, SecurityProfile profile,

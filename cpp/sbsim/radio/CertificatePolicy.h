@@ -83,6 +83,9 @@ private:
         kernel::SimTime lastActive;
     };
     Station& of(Index station, kernel::SimTime now);
+    /// of() once forgetOld(now) ran: a frame's unknown receivers (a whole list at a table's first
+    /// fill) pay the sweep's check once, not once each.
+    Station& activate(Index station, kernel::SimTime now);
     void forgetOld(kernel::SimTime now);
     /// heardAll's common part: `hear(table, since)` records a frame's stations in the sender's
     /// table and leaves the ones it did not know in unknown_.

@@ -193,14 +193,21 @@ void Medium::stamp(V2xMessage& message, const std::string& sender) {
     const SecurityProfile profile = message.securityProfile();
     message.frameBytes_ = radio::frameBytes(message.byteSize(), message.gnTransport(), profile,
                                             certificates_.sign(index, profile, simTime()));
-    auto c = counts_.find(message.typeName());
-    if (c == counts_.end()) c = counts_.emplace(std::string(message.typeName()), Counts{}).first;
-    ++(message.geonet().hops() > 1 ? c->second.forwarded : c->second.sent);
+    Counts* c = countsOf(message);
+    if (c == nullptr) c = &counts_.emplace(std::string(message.typeName()), Counts{}).first->second;
+    ++(message.geonet().hops() > 1 ? c->forwarded : c->sent);
 }
 
 Medium::Counts* Medium::countsOf(const V2xMessage& message) {
-    const auto it = counts_.find(message.typeName());
-    return it == counts_.end() ? nullptr : &it->second;
+    // Asked three times per frame (stamp, the medium's links, the delivery), nearly always for the
+    // type asked last: its name compared once instead of a search of the map.
+    const std::string_view type = message.typeName();
+    if (lastCounts_ != nullptr && type == lastCountsType_) return lastCounts_;
+    const auto it = counts_.find(type);
+    if (it == counts_.end()) return nullptr;
+    lastCountsType_ = it->first;  // the map's own key: nodes are never erased
+    lastCounts_ = &it->second;
+    return lastCounts_;
 }
 
 void Medium::countLink(const V2xMessage& message, double distance, bool received) {

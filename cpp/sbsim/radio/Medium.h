@@ -179,6 +179,9 @@ private:
     std::vector<std::unique_ptr<FrameDelivery>> frames_;
     std::vector<FrameDelivery*> spareFrames_;
     std::map<std::string, Counts, std::less<>> counts_;
+    // The counts countsOf() found last and their type's name (a view of their key in counts_).
+    Counts* lastCounts_ = nullptr;
+    std::string_view lastCountsType_;
     std::vector<std::uint64_t> sequences_;  // next per sender, by station index
     MessageTrace* trace_ = nullptr;
     FixedStations fixed_;

@@ -166,6 +166,19 @@ TEST(DiscMedium, CountsSentAndDeliveredPerType) {
     EXPECT_EQ(received(h, "r3"), 0u);
 }
 
+TEST(DiscMedium, CountsFollowEachFramesTypeWhenTypesAlternate) {
+    // The medium remembers the counts it found last (by type name): frames of one class whose names
+    // alternate, sent and delivered interleaved, each count under their own name.
+    Harness h(kAllButBare, disc(100));
+    h.step(secs(1), {vehicle("s"), vehicle("r1", 50, 0), vehicle("r2", 0, 150)});
+    const std::vector<std::string> types = {"Alpha", "Beta", "Alpha", "Gamma", "Beta", "Alpha", "Alpha"};
+    for (std::size_t i = 0; i < types.size(); ++i)
+        sendAt(h, secs(1.0 + 0.0005 * static_cast<double>(i)), "s", types[i]);
+    h.sim.run(secs(2));
+    EXPECT_EQ(countsOf(h.medium), (Counts{{"Alpha", {4, 4}}, {"Beta", {2, 2}}, {"Gamma", {1, 1}}}));
+    EXPECT_EQ(received(h, "r1"), types.size());
+}
+
 TEST(DiscMedium, AStationsFramesByIndexAndByNameShareOneNumbering) {
     // A middleware hands its frames over with its index (broadcastFrom); a frame sent by name from
     // the same station continues the same numbering. A broadcastFrom() that throws leaves no index
