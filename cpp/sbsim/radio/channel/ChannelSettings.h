@@ -78,11 +78,8 @@ struct SBSIM_API ChannelSettings {
     /// with the tiers off (`[performance] link_budget = "exact"`). bench/tiers.py measures the error.
     bool linkTiers = true;
     /// dB between a link's mean power and the sensing threshold below which it is interference
-    /// only: with σ = 3 dB a draw reaches it with probability 0.01 (2.3 σ; 10 dB: 4·10⁻⁴); with
-    /// fading 3 dB more (LinkBudget). 7 dB was chosen by its error against the exact model over
-    /// seeds: within 0.0011 per 50 m bin on the loaded highway, 0.0062 on bench5k's CA run (10 dB:
-    /// 0.0063), for 27 % fewer drawn links than 10 dB (bench/README, w-margin).
-    double tierMarginDb = 7;
+    /// only: with σ = 3 dB a draw reaches it with probability 4·10⁻⁴ (3.3 σ).
+    double tierMarginDb = 10;
     /// The far tier, with the tiers and without buildings: m, the side of square cells; 0 = off. A
     /// sender's links to a whole cell beyond the far range — where the mean power is below the
     /// interference-only tier's bound, and at least `traceRange` away — are one figure per frame

@@ -40,13 +40,6 @@ LinkBudget::LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Ob
     // E[10^(σZ/10)] = exp((σ ln10 / 10)² / 2): an interference-only link adds its mean in mW.
     meanGainDb_ = settings_.shadowingSigmaDb * settings_.shadowingSigmaDb * std::log(10.0) / 20;
     floorMw_ = dbToLinear(settings_.interferenceFloorDbm);
-    // The interference-only tier: below the sensing threshold by the tier margin (and by the mean's
-    // own gain: never detectable on average). Fading's upper tail needs 3 dB more: with Nakagami
-    // m = 1.5 an interference-free link at 450 m still delivers 0.02 at 7 dB, while 10 dB (the
-    // margin fading runs had before 7 dB became the default) keeps the closed form to 0.01.
-    const double fadingDb = settings_.fading == ChannelSettings::Fading::None ? 0.0 : 3.0;
-    fullFromDbm_ =
-        std::min(settings_.sensingDbm - settings_.tierMarginDb - fadingDb, settings_.sensingDbm - meanGainDb_);
     const auto above = [&](double d) { return meanPowerDbm(d) + floorMarginDb_ >= settings_.interferenceFloorDbm; };
     double lo = 1;
     double hi = 2;
@@ -64,7 +57,8 @@ LinkBudget::LinkBudget(const ChannelSettings& settings, std::shared_ptr<const Ob
     // range (links there have their lost lines). Buildings lower links one by one: no far tier.
     far_ = settings_.linkTiers && settings_.farCellM > 0 && !(obstacles_ && obstacles_->size() > 0);
     if (far_) {
-        const double fullFrom = fullFromDbm_;
+        const double fullFrom =
+            std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
         double d = cutoff_;
         while (d > 1 && meanPowerDbm(d - 1) < fullFrom) d -= 1;
         farRange_ = std::max(d, settings_.traceRange);
@@ -380,7 +374,7 @@ void LinkBudget::classify(Slot s) {
     // the sensing threshold by the tier margin with its mean power below it too (so it can never
     // be detected).
     const double skipBelow = settings_.interferenceFloorDbm - floorMarginDb_;
-    const double fullFrom = fullFromDbm_;
+    const double fullFrom = std::min(settings_.sensingDbm - settings_.tierMarginDb, settings_.sensingDbm - meanGainDb_);
     const bool far = far_ && cells_.usable();
     // In passes over columns (the links' distances, then their path loss in one call) rather than
     // link by link: the square roots go two at a time and the law is one virtual call, not one a

@@ -116,7 +116,6 @@ private:
     double cutoff_ = 0;
     double floorMarginDb_ = 0;  // the cutoff's margin for shadowing and fading
     double meanGainDb_ = 0;     // shadowing's linear mean, in dB: σ² ln10 / 20
-    double fullFromDbm_ = 0;    // a link's mean power from which it is drawn (the tier bound)
     double floorMw_ = 0;        // Reception's floor: an interference-only link below it adds nothing
     bool far_ = false;          // the far tier (ChannelSettings::farCellM) is on
     double farRange_ = 0;       // beyond it every link is interference only and untraced
