@@ -10,6 +10,8 @@ against the noise.
     PYTHONPATH=python:tools .venv/bin/python bench/tiers.py [--seconds 4] [--seeds 3] [--tier-margin 7 5 ...]
 
 Each mode's error is printed beside its runs' CPU seconds (user + sys, all seeds) and their ratio to the exact model's.
+With several seeds it is also printed over seeds: per 50 m bin (two 25 m points), each seed's difference from the
+exact model's run of that seed, their mean and its standard error.
 """
 
 from __future__ import annotations
@@ -54,6 +56,41 @@ def neglected_dbm(density: float, hz: float) -> float:
         total += 2 * density * duty * gain * 10 ** ((POWER - winner_b1(d)) / 10)
         d += 1.0
     return 10 * math.log10(total) if total > 0 else -math.inf
+
+
+def over_seeds(curves: dict[str, list[dict]], labels: dict[str, str]) -> None:
+    """Per 50 m bin (the 25 m points 2j and 2j + 1), the mean over seeds of each seed's difference from
+    its exact run, ± its standard error: a seed is one sample of the draws and of who collides with whom,
+    so the spread between seeds says how far a mean is from the modes' own difference."""
+    bins = [(k, k + 1) for k in range(0, len(DISTANCES) - 1, 2)]
+
+    def ratio(curve: dict, pair: tuple[int, int]) -> float | None:
+        n = sum(curve["links"][k] for k in pair)
+        return sum(curve["received"][k] for k in pair) / n if n else None
+
+    exact = curves["exact"]
+    print(f"\nover {len(exact)} seeds, mean Δ vs exact ± s.e. per 50 m bin (25 m points merged):")
+    print(f"{'metres':>8}" + "".join(f" {f'{DISTANCES[a]:.0f}+{DISTANCES[b]:.0f}':>15}" for a, b in bins))
+    for mode in curves:
+        if mode == "exact":
+            continue
+        row, worst = "", (0.0, 0.0, 0.0)
+        for pair in bins:
+            diffs = [
+                rb - ra
+                for a, b in zip(exact, curves[mode], strict=True)
+                if (ra := ratio(a, pair)) is not None and (rb := ratio(b, pair)) is not None
+            ]
+            if len(diffs) < 2:
+                row += f" {'-':>15}"
+                continue
+            m = sum(diffs) / len(diffs)
+            se = math.sqrt(sum((d - m) ** 2 for d in diffs) / (len(diffs) - 1) / len(diffs))
+            row += f" {m:+7.4f}±{se:.4f}"
+            if abs(m) > abs(worst[0]):
+                worst = (m, se, DISTANCES[pair[0]])
+        print(f"{mode:>8}{row}")
+        print(f"{'':>8} {labels[mode]}: largest mean Δ {worst[0]:+.4f} ± {worst[1]:.4f} at {worst[2]:.0f} m")
 
 
 def main() -> None:
@@ -123,6 +160,8 @@ def main() -> None:
             f"{labels[mode]:<34} {w:12.4f} {'within' if w <= 0.01 else 'OUTSIDE':>10} {pooledBy[mode]['cbr']:8.3f} "
             f"{cpu[mode]:7.1f} {cpu[mode] / cpu['exact']:7.2f}"
         )
+    if args.seeds > 1:
+        over_seeds(curves, labels)
     neglected = neglected_dbm(c.density, c.hz)
     print(
         f"\ncutoff {cutoff_m():.0f} m; neglected interference beyond it: {neglected:.1f} dBm, "
