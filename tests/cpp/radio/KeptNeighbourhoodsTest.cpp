@@ -12,6 +12,7 @@
 #include <numeric>
 #include <random>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "sbsim/radio/disc/KeptNeighbourhoods.h"
@@ -51,6 +52,24 @@ Indices within(KeptNeighbourhoods& kept, const Eigen::Matrix2Xd& p, Index i) {
         EXPECT_EQ(std::bit_cast<std::uint64_t>(std::sqrt(squared[k])),
                   std::bit_cast<std::uint64_t>((p.col(j) - p.col(i)).norm()))
             << "vehicles " << i << " and " << j;
+    }
+    // visitWithin(): the same neighbours and squares, bit for bit, after one reserve() that bounds them.
+    std::size_t reserved = 0;
+    int reserves = 0;
+    std::vector<std::pair<Index, std::uint64_t>> visited;
+    kept.visitWithin(
+        i,
+        [&](std::size_t n) {
+            reserved = n;
+            ++reserves;
+        },
+        [&](Index j, double square) { visited.emplace_back(j, std::bit_cast<std::uint64_t>(square)); });
+    EXPECT_EQ(reserves, 1);
+    EXPECT_LE(visited.size(), reserved);
+    EXPECT_EQ(visited.size() + 1, got.size()) << "vehicle " << i;
+    for (std::size_t k = 1; k < got.size() && k <= visited.size(); ++k) {
+        EXPECT_EQ(visited[k - 1].first, got[k]) << "vehicle " << i << ", neighbour " << k;
+        EXPECT_EQ(visited[k - 1].second, std::bit_cast<std::uint64_t>(squared[k])) << "vehicle " << i;
     }
     return Indices(got.begin() + 1, got.end());
 }

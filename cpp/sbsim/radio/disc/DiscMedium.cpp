@@ -80,7 +80,6 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         gridTime_ = snapshot_.time();
         ++step_;
         gridBuilt_ = false;
-        slots_.clear();
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
         fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));
@@ -163,7 +162,13 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             }
             near.others.clear();
             near.squared.clear();
-            if (kept_->lasting(kLastingUpdates)) {
+            // Every station in range receiving: the receivers straight from the kept lists
+            // (takeReceivers), no list of neighbours written and read again.
+            const bool lasting = kept_->lasting(kLastingUpdates);
+            near.fromKept = everyoneInRange && lasting;
+            if (near.fromKept) {
+                // Nothing to write: takeReceivers visits the sender's kept list.
+            } else if (lasting) {
                 kept_->within(*self, near.others, near.squared);
             } else {
                 // The grid's answer as a bit set read in ascending order, with the grid test's own squares.
@@ -187,7 +192,8 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             near.receiversKnown = false;
         }
         if (everyoneInRange) {
-            if (!near.receiversKnown || near.receiversChanges != receiversChanges_) takeReceivers(senderIndex, near);
+            if (!near.receiversKnown || near.receiversChanges != receiversChanges_)
+                takeReceivers(senderIndex, *self, near);
             shareable = near.recipients;
             if (counts != nullptr && !near.perBin.empty()) {
                 if (counts->linkStations.size() < near.perBin.size()) {
@@ -233,7 +239,7 @@ void DiscMedium::buildGrid() {
     gridBuilt_ = true;
 }
 
-void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
+void DiscMedium::takeReceivers(StationIndex sender, traffic::VehicleSnapshot::Index self, Neighbourhood& near) {
     Receivers& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
     // Counted per bin in a small array while the range has few bins (no growth check per link).
@@ -241,41 +247,59 @@ void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
     std::array<std::uint64_t, kFewBins> few{};
     const bool fewBins = settings_.range / kDistanceBin < kFewBins - 1;
     near.perBin.clear();
+    // The sender's last list: each station taken is compared with the one at its place there, so
+    // the loop knows whether the list is the same (then the certificate policy compares nothing).
+    std::shared_ptr<Recipients> last = near.recipients;
+    const StationIndex* const lastStations = last != nullptr ? last->stations.data() : nullptr;
+    const std::size_t lastSize = last != nullptr ? last->stations.size() : 0;
+    bool differs = false;
     // One pass over the neighbours: range and bin from the square (no root), receiver and station
     // from one record per vehicle, written through pointers held in registers (a push_back's
     // stores would make the compiler reload the vectors' ends, and the tables, at every link).
-    const std::size_t n = near.others.size();
-    receivers.resize(n);
-    stations.resize(n);
-    Receiver** const toReceiver = receivers.data();
-    StationIndex* const toStation = stations.data();
+    Receiver** toReceiver = nullptr;
+    StationIndex* toStation = nullptr;
     std::size_t taken = 0;
-    const KeptNeighbourhoods::Index* const others = near.others.data();
-    const double* const squares = near.squared.data();
     Slot* const slots = slots_.data();
     const SquaredDistanceBins::Lookup binOf = bins_.lookup();
     const double maxSquared = bins_.maxSquared();
-    for (std::size_t k = 0; k < n; ++k) {
-        const double squared = squares[k];
-        if (squared > maxSquared) continue;  // beyond the range
-        Slot& slot = slots[others[k]];
+    const auto reserve = [&](std::size_t n) {
+        // Room for every neighbour (grown without a zero-fill only for the receivers), cut at the end.
+        if (receivers.size() < n) receivers.resize(n);
+        if (stations.size() < n) stations.resize(n);
+        toReceiver = receivers.data();
+        toStation = stations.data();
+    };
+    const auto take = [&](KeptNeighbourhoods::Index other, double squared) {
+        if (squared > maxSquared) return;  // beyond the range
+        Slot& slot = slots[other];
         if (!slot.known) {
-            slot.receiver = receivingSide(slot.station, snapshot_.ids()[static_cast<std::size_t>(others[k])]);
+            slot.receiver = receivingSide(slot.station, snapshot_.ids()[static_cast<std::size_t>(other)]);
             slot.known = true;
         }
         Receiver* const receiver = slot.receiver;
-        if (receiver == nullptr) continue;  // a vehicle without services
+        if (receiver == nullptr) return;  // a vehicle without services
+        const StationIndex station = slot.station;
         toReceiver[taken] = receiver;
-        toStation[taken] = slot.station;
+        toStation[taken] = station;
+        if (taken < lastSize) differs |= station != lastStations[taken];
         ++taken;
-        if (!(squared >= 0)) continue;  // as Medium::countLink
+        if (!(squared >= 0)) return;  // as Medium::countLink
         const std::size_t bin = binOf.of(squared);
         if (fewBins && bin < kFewBins) {
             ++few[bin];
-            continue;
+            return;
         }
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
+    };
+    if (near.fromKept) {
+        kept_->visitWithin(self, reserve, take);
+    } else {
+        const std::size_t n = near.others.size();
+        reserve(n);
+        const KeptNeighbourhoods::Index* const others = near.others.data();
+        const double* const squares = near.squared.data();
+        for (std::size_t k = 0; k < n; ++k) take(others[k], squares[k]);
     }
     receivers.resize(taken);
     stations.resize(taken);
@@ -290,14 +314,17 @@ void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
     // (Medium::receiverChanges()): the same stations are then the same receivers.
     const bool sameModules = near.receiversChanges == receiversChanges_;
     near.receiversChanges = receiversChanges_;
-    // The same receivers as the sender's last list: that list again (the certificate policy then
-    // walks nothing). The comparison is the sender's table's own split of the two lists, which it
-    // takes when this list's frames come instead of matching them again. Else a new list, unless
-    // nobody else holds the last (frames on the air, the policy) and it can be refilled in place.
-    std::shared_ptr<Recipients> last = near.recipients;
-    if (last != nullptr && certificates().sameList(sender, last->stations, stations) &&
-        (sameModules || last->receivers == receivers))
-        return;
+    // The same receivers as the sender's last list (found in the loop): that list again (the
+    // certificate policy then walks nothing, and compares nothing). Else the sender's table's own
+    // split of the two lists, which it takes when this list's frames come instead of matching them
+    // again; and a new list, unless nobody else holds the last (frames on the air, the policy) and
+    // it can be refilled in place.
+    if (last != nullptr) {
+        const bool sameStations = !differs && taken == lastSize;
+        if (sameStations && (sameModules || last->receivers == receivers)) return;
+        // Compared by the sender's table all the same: its split of the two lists, named below.
+        certificates().sameList(sender, last->stations, stations);
+    }
     if (last == nullptr || last.use_count() > 2) {  // held elsewhere than here and in `last`
         near.recipients = std::make_shared<Recipients>();
         near.recipients->receivers.reserve(receivers.size());

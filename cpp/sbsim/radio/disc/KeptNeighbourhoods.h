@@ -50,6 +50,11 @@ public:
     /// Appends to `out` the vehicles j != i within radius() of vehicle i, ascending, and to
     /// `squared` (as long as `out` on entry) each one's (xj - xi)² + (yj - yi)².
     void within(Index i, Indices& out, Squares& squared);
+    /// within()'s answer without writing it: calls `reserve(n)` once (n: at least the answers'
+    /// count), then `visit(j, square)` for each answer j, ascending, with within()'s square. A
+    /// caller that turns the neighbours into something else (a medium's receivers) reads no list.
+    template <typename Reserve, typename Visit>
+    void visitWithin(Index i, Reserve&& reserve, Visit&& visit);
 
     /// Epochs started so far (for tests and figures).
     std::uint64_t epochs() const { return epochs_; }
@@ -66,6 +71,10 @@ private:
         std::size_t newcomersSeen = 0;   // newcomers_ checked so far
     };
     void startEpoch();
+    /// Vehicle i's list made current for this update, its newcomers in range in tail_ (ascending).
+    List& prepare(Index i);
+    /// A list's epoch candidates map to ascending current indices (the keys ascend in both orders).
+    bool ordered() const { return epochOrdered_ && currentOrdered_; }
     /// epochCurrent_ from epochToCurrent_ and the update's positions.
     void placeCurrent();
     /// Whether the references of `a` and `b` are within radius + skin.
@@ -102,6 +111,42 @@ private:
     bool epochOrdered_ = false;                   // the epoch's keys ascend
     bool currentOrdered_ = false;                 // the keys of the last update ascend
     std::vector<std::pair<Index, double>> tail_;  // within()'s newcomers in range, and its unsorted case
+    Indices unorderedOut_;                        // visitWithin()'s answer while not ordered()
+    Squares unorderedSquared_;
 };
+
+template <typename Reserve, typename Visit>
+void KeptNeighbourhoods::visitWithin(Index i, Reserve&& reserve, Visit&& visit) {
+    if (!ordered()) {
+        // Keys out of the positions' order: within()'s sorted answer, then visited.
+        unorderedOut_.clear();
+        unorderedSquared_.clear();
+        within(i, unorderedOut_, unorderedSquared_);
+        reserve(unorderedOut_.size());
+        for (std::size_t k = 0; k < unorderedOut_.size(); ++k) visit(unorderedOut_[k], unorderedSquared_[k]);
+        return;
+    }
+    const List& list = prepare(i);
+    reserve(list.epochOthers.size() + tail_.size());
+    const Eigen::Matrix2Xd& positions = *positions_;
+    const double x = positions(0, i);
+    const double y = positions(1, i);
+    const double r2 = radius_ * radius_;
+    const Candidate* const current = epochCurrent_.data();
+    // within()'s test on each candidate (a gone or moved one has a NaN place, never within), the
+    // few newcomers in range merged in by index as the candidates pass them.
+    const std::pair<Index, double>* t = tail_.data();
+    const std::pair<Index, double>* const tEnd = t + tail_.size();
+    for (const Index e : list.epochOthers) {
+        const Candidate& c = current[e];
+        const double dx = c.x - x;
+        const double dy = c.y - y;
+        const double d2 = dx * dx + dy * dy;
+        if (!((c.j != i) & (d2 <= r2))) continue;
+        for (; t != tEnd && t->first < c.j; ++t) visit(t->first, t->second);
+        visit(c.j, d2);
+    }
+    for (; t != tEnd; ++t) visit(t->first, t->second);
+}
 
 }  // namespace sbsim::radio
