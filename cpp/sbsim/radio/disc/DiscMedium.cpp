@@ -269,7 +269,8 @@ void DiscMedium::takeReceivers(StationIndex sender, traffic::VehicleSnapshot::In
         toReceiver = receivers.data();
         toStation = stations.data();
     };
-    const auto take = [&](KeptNeighbourhoods::Index other, double squared) {
+    // Inlined at each place it is called (the compiler would call it: visitWithin calls it at four).
+    const auto take = [&](KeptNeighbourhoods::Index other, double squared) __attribute__((always_inline)) {
         if (squared > maxSquared) return;  // beyond the range
         Slot& slot = slots[other];
         if (!slot.known) {

@@ -73,8 +73,8 @@ private:
     void startEpoch();
     /// Vehicle i's list made current for this update, its newcomers in range in tail_ (ascending).
     List& prepare(Index i);
-    /// A list's epoch candidates map to ascending current indices (the keys ascend in both orders).
-    bool ordered() const { return epochOrdered_ && currentOrdered_; }
+    /// A list's epoch candidates map to ascending current indices.
+    bool ordered() const { return ascending_; }
     /// epochCurrent_ from epochToCurrent_ and the update's positions.
     void placeCurrent();
     /// Whether the references of `a` and `b` are within radius + skin.
@@ -106,10 +106,10 @@ private:
     std::vector<Index> keyToCurrent_;
     std::vector<Key> newcomers_;  // keys that came during the epoch, in order of arrival
     std::vector<List> lists_;     // by key
-    /// Current indices ascend with the epoch's (keys ascending in both orders): a list's answer
-    /// needs no check of its order.
-    bool epochOrdered_ = false;                   // the epoch's keys ascend
-    bool currentOrdered_ = false;                 // the keys of the last update ascend
+    /// The current indices of the epoch's vehicles still in place ascend with their epoch indices
+    /// (the vehicles keep their order in the positions, whatever their keys): a list's answer
+    /// needs no check of its order. Found at each update.
+    bool ascending_ = false;
     std::vector<std::pair<Index, double>> tail_;  // within()'s newcomers in range, and its unsorted case
     Indices unorderedOut_;                        // visitWithin()'s answer while not ordered()
     Squares unorderedSquared_;
