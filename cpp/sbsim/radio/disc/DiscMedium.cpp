@@ -253,23 +253,32 @@ void DiscMedium::takeReceivers(StationIndex sender, traffic::VehicleSnapshot::In
     const StationIndex* const lastStations = last != nullptr ? last->stations.data() : nullptr;
     const std::size_t lastSize = last != nullptr ? last->stations.size() : 0;
     bool differs = false;
-    // One pass over the neighbours: range and bin from the square (no root), receiver and station
-    // from one record per vehicle, written through pointers held in registers (a push_back's
-    // stores would make the compiler reload the vectors' ends, and the tables, at every link).
-    Receiver** toReceiver = nullptr;
-    StationIndex* toStation = nullptr;
+    // The kept list's candidates, or (its keys out of order, or no kept lists) the neighbours.
+    KeptNeighbourhoods::Candidates kept{};
+    if (near.fromKept) {
+        kept = kept_->candidates(self);
+        if (!kept.ordered) {
+            near.others.clear();
+            near.squared.clear();
+            kept_->within(self, near.others, near.squared);
+        }
+    }
+    const bool fromCandidates = near.fromKept && kept.ordered;
+    // Room for every neighbour (grown without a zero-fill for the receivers), cut at the end.
+    const std::size_t n = fromCandidates ? kept.others.size() + kept.newcomers.size() : near.others.size();
+    if (receivers.size() < n) receivers.resize(n);
+    if (stations.size() < n) stations.resize(n);
+    Receiver** const toReceiver = receivers.data();
+    StationIndex* const toStation = stations.data();
     std::size_t taken = 0;
     Slot* const slots = slots_.data();
     const SquaredDistanceBins::Lookup binOf = bins_.lookup();
     const double maxSquared = bins_.maxSquared();
-    const auto reserve = [&](std::size_t n) {
-        // Room for every neighbour (grown without a zero-fill only for the receivers), cut at the end.
-        if (receivers.size() < n) receivers.resize(n);
-        if (stations.size() < n) stations.resize(n);
-        toReceiver = receivers.data();
-        toStation = stations.data();
-    };
-    // Inlined at each place it is called (the compiler would call it: visitWithin calls it at four).
+    // One pass over the neighbours: range and bin from the square (no root), receiver and station
+    // from one record per vehicle, written through pointers held in registers (a push_back's
+    // stores would make the compiler reload the vectors' ends, and the tables, at every link).
+    // A neighbour `other` at `squared`: its receiver and station taken, compared with the last
+    // list's at its place, counted in its bin. Inlined where it is used (all state in registers).
     const auto take = [&](KeptNeighbourhoods::Index other, double squared) __attribute__((always_inline)) {
         if (squared > maxSquared) return;  // beyond the range
         Slot& slot = slots[other];
@@ -293,11 +302,24 @@ void DiscMedium::takeReceivers(StationIndex sender, traffic::VehicleSnapshot::In
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
     };
-    if (near.fromKept) {
-        kept_->visitWithin(self, reserve, take);
+    if (fromCandidates) {
+        // KeptNeighbourhoods::within()'s test on each candidate, the few newcomers in range merged
+        // in by index as the candidates pass them: its answer, in its order, with its squares.
+        const KeptNeighbourhoods::Candidate* const current = kept.current;
+        const auto* t = kept.newcomers.data();
+        const auto* const tEnd = t + kept.newcomers.size();
+        const auto i = static_cast<KeptNeighbourhoods::Index>(self);
+        for (const KeptNeighbourhoods::Index e : kept.others) {
+            const KeptNeighbourhoods::Candidate& c = current[e];
+            const double dx = c.x - kept.x;
+            const double dy = c.y - kept.y;
+            const double d2 = dx * dx + dy * dy;
+            if (!(static_cast<int>(c.j != i) & static_cast<int>(d2 <= kept.r2))) continue;
+            for (; t != tEnd && t->first < c.j; ++t) take(t->first, t->second);
+            take(c.j, d2);
+        }
+        for (; t != tEnd; ++t) take(t->first, t->second);
     } else {
-        const std::size_t n = near.others.size();
-        reserve(n);
         const KeptNeighbourhoods::Index* const others = near.others.data();
         const double* const squares = near.squared.data();
         for (std::size_t k = 0; k < n; ++k) take(others[k], squares[k]);

@@ -165,6 +165,13 @@ KeptNeighbourhoods::List& KeptNeighbourhoods::prepare(Index i) {
     return list;
 }
 
+KeptNeighbourhoods::Candidates KeptNeighbourhoods::candidates(Index i) {
+    const List& list = prepare(i);
+    const Eigen::Matrix2Xd& positions = *positions_;
+    return {list.epochOthers, epochCurrent_.data(), positions(0, i), positions(1, i), radius_ * radius_, tail_,
+            ordered()};
+}
+
 void KeptNeighbourhoods::within(Index i, Indices& out, Squares& squared) {
     if (squared.size() != out.size()) throw std::invalid_argument("kept neighbourhoods: squares not as long as out");
     const List& list = prepare(i);

@@ -50,11 +50,25 @@ public:
     /// Appends to `out` the vehicles j != i within radius() of vehicle i, ascending, and to
     /// `squared` (as long as `out` on entry) each one's (xj - xi)² + (yj - yi)².
     void within(Index i, Indices& out, Squares& squared);
-    /// within()'s answer without writing it: calls `reserve(n)` once (n: at least the answers'
-    /// count), then `visit(j, square)` for each answer j, ascending, with within()'s square. A
-    /// caller that turns the neighbours into something else (a medium's receivers) reads no list.
-    template <typename Reserve, typename Visit>
-    void visitWithin(Index i, Reserve&& reserve, Visit&& visit);
+    /// A candidate of a list: a vehicle's current place and index (NaN and -1: gone or moved,
+    /// never within).
+    struct Candidate {
+        double x, y;
+        Index j;
+    };
+    /// Vehicle i's candidates, for a caller's own loop giving within()'s answer without a list (a
+    /// medium turning the neighbours into receivers): j = current[e].j for each e of `others`
+    /// (ascending), kept when j != i and its square (current[e].x - x)² + (current[e].y - y)² <= r2,
+    /// and the newcomers in range (index and square, ascending), merged in by index. Valid until the
+    /// next call or update. `ordered` false (keys out of the positions' order): use within().
+    struct Candidates {
+        std::span<const Index> others;
+        const Candidate* current;
+        double x, y, r2;
+        std::span<const std::pair<Index, double>> newcomers;
+        bool ordered;
+    };
+    Candidates candidates(Index i);
 
     /// Epochs started so far (for tests and figures).
     std::uint64_t epochs() const { return epochs_; }
@@ -93,10 +107,6 @@ private:
     std::vector<Index> epochToCurrent_;  // per reference index, its current index, or -1 (gone)
     /// Per reference index, its vehicle's current position and index (NaN and -1: gone or moved),
     /// set at each update: a list's candidate is one read, not an index and then a position.
-    struct Candidate {
-        double x, y;
-        Index j;
-    };
     std::vector<Candidate> epochCurrent_;
     // Per key: its reference position (set: hasReference_), and its current index (or -1).
     std::vector<double> referenceX_, referenceY_;
@@ -111,42 +121,6 @@ private:
     /// needs no check of its order. Found at each update.
     bool ascending_ = false;
     std::vector<std::pair<Index, double>> tail_;  // within()'s newcomers in range, and its unsorted case
-    Indices unorderedOut_;                        // visitWithin()'s answer while not ordered()
-    Squares unorderedSquared_;
 };
-
-template <typename Reserve, typename Visit>
-void KeptNeighbourhoods::visitWithin(Index i, Reserve&& reserve, Visit&& visit) {
-    if (!ordered()) {
-        // Keys out of the positions' order: within()'s sorted answer, then visited.
-        unorderedOut_.clear();
-        unorderedSquared_.clear();
-        within(i, unorderedOut_, unorderedSquared_);
-        reserve(unorderedOut_.size());
-        for (std::size_t k = 0; k < unorderedOut_.size(); ++k) visit(unorderedOut_[k], unorderedSquared_[k]);
-        return;
-    }
-    const List& list = prepare(i);
-    reserve(list.epochOthers.size() + tail_.size());
-    const Eigen::Matrix2Xd& positions = *positions_;
-    const double x = positions(0, i);
-    const double y = positions(1, i);
-    const double r2 = radius_ * radius_;
-    const Candidate* const current = epochCurrent_.data();
-    // within()'s test on each candidate (a gone or moved one has a NaN place, never within), the
-    // few newcomers in range merged in by index as the candidates pass them.
-    const std::pair<Index, double>* t = tail_.data();
-    const std::pair<Index, double>* const tEnd = t + tail_.size();
-    for (const Index e : list.epochOthers) {
-        const Candidate& c = current[e];
-        const double dx = c.x - x;
-        const double dy = c.y - y;
-        const double d2 = dx * dx + dy * dy;
-        if (!((c.j != i) & (d2 <= r2))) continue;
-        for (; t != tEnd && t->first < c.j; ++t) visit(t->first, t->second);
-        visit(c.j, d2);
-    }
-    for (; t != tEnd; ++t) visit(t->first, t->second);
-}
 
 }  // namespace sbsim::radio
