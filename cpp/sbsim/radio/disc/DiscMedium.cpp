@@ -162,13 +162,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             }
             near.others.clear();
             near.squared.clear();
-            // Every station in range receiving: the receivers straight from the kept lists
-            // (takeReceivers), no list of neighbours written and read again.
-            const bool lasting = kept_->lasting(kLastingUpdates);
-            near.fromKept = everyoneInRange && lasting;
-            if (near.fromKept) {
-                // Nothing to write: takeReceivers visits the sender's kept list.
-            } else if (lasting) {
+            if (kept_->lasting(kLastingUpdates)) {
                 kept_->within(*self, near.others, near.squared);
             } else {
                 // The grid's answer as a bit set read in ascending order, with the grid test's own squares.
@@ -192,8 +186,7 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
             near.receiversKnown = false;
         }
         if (everyoneInRange) {
-            if (!near.receiversKnown || near.receiversChanges != receiversChanges_)
-                takeReceivers(senderIndex, *self, near);
+            if (!near.receiversKnown || near.receiversChanges != receiversChanges_) takeReceivers(senderIndex, near);
             shareable = near.recipients;
             if (counts != nullptr && !near.perBin.empty()) {
                 if (counts->linkStations.size() < near.perBin.size()) {
@@ -239,7 +232,7 @@ void DiscMedium::buildGrid() {
     gridBuilt_ = true;
 }
 
-void DiscMedium::takeReceivers(StationIndex sender, traffic::VehicleSnapshot::Index self, Neighbourhood& near) {
+void DiscMedium::takeReceivers(StationIndex sender, Neighbourhood& near) {
     Receivers& receivers = scratch_.receivers;
     std::vector<StationIndex>& stations = scratch_.stations;
     // Counted per bin in a small array while the range has few bins (no growth check per link).
@@ -247,82 +240,41 @@ void DiscMedium::takeReceivers(StationIndex sender, traffic::VehicleSnapshot::In
     std::array<std::uint64_t, kFewBins> few{};
     const bool fewBins = settings_.range / kDistanceBin < kFewBins - 1;
     near.perBin.clear();
-    // The sender's last list: each station taken is compared with the one at its place there, so
-    // the loop knows whether the list is the same (then the certificate policy compares nothing).
-    std::shared_ptr<Recipients> last = near.recipients;
-    const StationIndex* const lastStations = last != nullptr ? last->stations.data() : nullptr;
-    const std::size_t lastSize = last != nullptr ? last->stations.size() : 0;
-    bool differs = false;
-    // The kept list's candidates, or (its keys out of order, or no kept lists) the neighbours.
-    KeptNeighbourhoods::Candidates kept{};
-    if (near.fromKept) {
-        kept = kept_->candidates(self);
-        if (!kept.ordered) {
-            near.others.clear();
-            near.squared.clear();
-            kept_->within(self, near.others, near.squared);
-        }
-    }
-    const bool fromCandidates = near.fromKept && kept.ordered;
-    // Room for every neighbour (grown without a zero-fill for the receivers), cut at the end.
-    const std::size_t n = fromCandidates ? kept.others.size() + kept.newcomers.size() : near.others.size();
-    if (receivers.size() < n) receivers.resize(n);
-    if (stations.size() < n) stations.resize(n);
-    Receiver** const toReceiver = receivers.data();
-    StationIndex* const toStation = stations.data();
-    std::size_t taken = 0;
-    Slot* const slots = slots_.data();
-    const SquaredDistanceBins::Lookup binOf = bins_.lookup();
-    const double maxSquared = bins_.maxSquared();
     // One pass over the neighbours: range and bin from the square (no root), receiver and station
     // from one record per vehicle, written through pointers held in registers (a push_back's
     // stores would make the compiler reload the vectors' ends, and the tables, at every link).
-    // A neighbour `other` at `squared`: its receiver and station taken, compared with the last
-    // list's at its place, counted in its bin. Inlined where it is used (all state in registers).
-    const auto take = [&](KeptNeighbourhoods::Index other, double squared) __attribute__((always_inline)) {
-        if (squared > maxSquared) return;  // beyond the range
-        Slot& slot = slots[other];
+    const std::size_t n = near.others.size();
+    receivers.resize(n);
+    stations.resize(n);
+    Receiver** const toReceiver = receivers.data();
+    StationIndex* const toStation = stations.data();
+    std::size_t taken = 0;
+    const KeptNeighbourhoods::Index* const others = near.others.data();
+    const double* const squares = near.squared.data();
+    Slot* const slots = slots_.data();
+    const SquaredDistanceBins::Lookup binOf = bins_.lookup();
+    const double maxSquared = bins_.maxSquared();
+    for (std::size_t k = 0; k < n; ++k) {
+        const double squared = squares[k];
+        if (squared > maxSquared) continue;  // beyond the range
+        Slot& slot = slots[others[k]];
         if (!slot.known) {
-            slot.receiver = receivingSide(slot.station, snapshot_.ids()[static_cast<std::size_t>(other)]);
+            slot.receiver = receivingSide(slot.station, snapshot_.ids()[static_cast<std::size_t>(others[k])]);
             slot.known = true;
         }
         Receiver* const receiver = slot.receiver;
-        if (receiver == nullptr) return;  // a vehicle without services
-        const StationIndex station = slot.station;
+        if (receiver == nullptr) continue;  // a vehicle without services
         toReceiver[taken] = receiver;
-        toStation[taken] = station;
-        if (taken < lastSize) differs |= station != lastStations[taken];
+        toStation[taken] = slot.station;
         ++taken;
-        if (!(squared >= 0)) return;  // as Medium::countLink
+        if (!(squared >= 0)) continue;  // as Medium::countLink
         const std::size_t bin = binOf.of(squared);
         if (fewBins && bin < kFewBins) {
             ++few[bin];
-            return;
+            continue;
         }
         if (near.perBin.size() <= bin) near.perBin.resize(bin + 1);
         ++near.perBin[bin];
-    };
-    if (fromCandidates) {
-        // KeptNeighbourhoods::within()'s test on each candidate, the few newcomers in range merged
-        // in by index as the candidates pass them: its answer, in its order, with its squares.
-        const KeptNeighbourhoods::Candidate* const current = kept.current;
-        const auto* t = kept.newcomers.data();
-        const auto* const tEnd = t + kept.newcomers.size();
-        const auto i = static_cast<KeptNeighbourhoods::Index>(self);
-        for (const KeptNeighbourhoods::Index e : kept.others) {
-            const KeptNeighbourhoods::Candidate& c = current[e];
-            const double dx = c.x - kept.x;
-            const double dy = c.y - kept.y;
-            const double d2 = dx * dx + dy * dy;
-            if (!(static_cast<int>(c.j != i) & static_cast<int>(d2 <= kept.r2))) continue;
-            for (; t != tEnd && t->first < c.j; ++t) take(t->first, t->second);
-            take(c.j, d2);
-        }
-        for (; t != tEnd; ++t) take(t->first, t->second);
-    } else {
-        const KeptNeighbourhoods::Index* const others = near.others.data();
-        const double* const squares = near.squared.data();
-        for (std::size_t k = 0; k < n; ++k) take(others[k], squares[k]);
     }
     receivers.resize(taken);
     stations.resize(taken);
@@ -337,17 +289,14 @@ void DiscMedium::takeReceivers(StationIndex sender, traffic::VehicleSnapshot::In
     // (Medium::receiverChanges()): the same stations are then the same receivers.
     const bool sameModules = near.receiversChanges == receiversChanges_;
     near.receiversChanges = receiversChanges_;
-    // The same receivers as the sender's last list (found in the loop): that list again (the
-    // certificate policy then walks nothing, and compares nothing). Else the sender's table's own
-    // split of the two lists, which it takes when this list's frames come instead of matching them
-    // again; and a new list, unless nobody else holds the last (frames on the air, the policy) and
-    // it can be refilled in place.
-    if (last != nullptr) {
-        const bool sameStations = !differs && taken == lastSize;
-        if (sameStations && (sameModules || last->receivers == receivers)) return;
-        // Compared by the sender's table all the same: its split of the two lists, named below.
-        certificates().sameList(sender, last->stations, stations);
-    }
+    // The same receivers as the sender's last list: that list again (the certificate policy then
+    // walks nothing). The comparison is the sender's table's own split of the two lists, which it
+    // takes when this list's frames come instead of matching them again. Else a new list, unless
+    // nobody else holds the last (frames on the air, the policy) and it can be refilled in place.
+    std::shared_ptr<Recipients> last = near.recipients;
+    if (last != nullptr && certificates().sameList(sender, last->stations, stations) &&
+        (sameModules || last->receivers == receivers))
+        return;
     if (last == nullptr || last.use_count() > 2) {  // held elsewhere than here and in `last`
         near.recipients = std::make_shared<Recipients>();
         near.recipients->receivers.reserve(receivers.size());

@@ -83,8 +83,6 @@ private:
         /// range (receivers, their indices, in the order above) and their count per distance bin,
         /// taken once per step and module change, so a frame copies them instead of visiting each link.
         bool receiversKnown = false;
-        /// The receivers come straight from the kept lists (`others` and `squared` left empty).
-        bool fromKept = false;
         std::uint64_t receiversChanges = 0;
         /// Shared with the frames on the air and held by the certificate policy as the sender's
         /// last list: kept from step to step while the receivers stay the same, so the policy
@@ -94,9 +92,8 @@ private:
     };
     /// The step's grid_, once per step.
     void buildGrid();
-    /// `near`'s receivers in range (of `sender`, near_[sender], the vehicle `self`), as of the
-    /// current modules.
-    void takeReceivers(StationIndex sender, traffic::VehicleSnapshot::Index self, Neighbourhood& near);
+    /// `near`'s receivers in range (of `sender`, near_[sender]), as of the current modules.
+    void takeReceivers(StationIndex sender, Neighbourhood& near);
     std::vector<Neighbourhood> near_;
     Recipients scratch_;                            // takeReceivers' new list, compared with the last
     std::shared_ptr<kernel::RandomStream> random_;  // the simulation's, taken at initialize()

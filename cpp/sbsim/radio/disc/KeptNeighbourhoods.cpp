@@ -128,7 +128,8 @@ bool KeptNeighbourhoods::reachable(Key a, Key b) const {
     return dx * dx + dy * dy <= reach_ * reach_;
 }
 
-KeptNeighbourhoods::List& KeptNeighbourhoods::prepare(Index i) {
+void KeptNeighbourhoods::within(Index i, Indices& out, Squares& squared) {
+    if (squared.size() != out.size()) throw std::invalid_argument("kept neighbourhoods: squares not as long as out");
     const Key self = keys_[static_cast<std::size_t>(i)];
     if (lists_.size() <= self) lists_.resize(self + 1);
     List& list = lists_[self];
@@ -143,45 +144,20 @@ KeptNeighbourhoods::List& KeptNeighbourhoods::prepare(Index i) {
         const Key k = newcomers_[list.newcomersSeen];
         if (k != self && reachable(self, k)) list.newcomers.push_back(k);
     }
-    // The newcomers in range, ascending (NeighbourGrid's test, on the current positions).
+
+    // NeighbourGrid's test, on the current positions.
     const Eigen::Matrix2Xd& positions = *positions_;
     const double x = positions(0, i);
     const double y = positions(1, i);
     const double r2 = radius_ * radius_;
-    tail_.clear();
-    for (const Key k : list.newcomers) {
-        const Index j = keyToCurrent_[k];
-        if (j < 0 || j == i) continue;
+    const auto square = [&](Index j) {
         const double dx = positions(0, j) - x;
         const double dy = positions(1, j) - y;
-        const double d2 = dx * dx + dy * dy;
-        if (d2 <= r2) tail_.emplace_back(j, d2);
-    }
-    if (!tail_.empty()) {
-        // A vehicle may be a newcomer twice (it moved again): once in the answer.
-        std::sort(tail_.begin(), tail_.end());
-        tail_.erase(std::unique(tail_.begin(), tail_.end()), tail_.end());
-    }
-    return list;
-}
-
-KeptNeighbourhoods::Candidates KeptNeighbourhoods::candidates(Index i) {
-    const List& list = prepare(i);
-    const Eigen::Matrix2Xd& positions = *positions_;
-    return {list.epochOthers, epochCurrent_.data(), positions(0, i), positions(1, i), radius_ * radius_, tail_,
-            ordered()};
-}
-
-void KeptNeighbourhoods::within(Index i, Indices& out, Squares& squared) {
-    if (squared.size() != out.size()) throw std::invalid_argument("kept neighbourhoods: squares not as long as out");
-    const List& list = prepare(i);
-    const Eigen::Matrix2Xd& positions = *positions_;
-    const double x = positions(0, i);
-    const double y = positions(1, i);
-    const double r2 = radius_ * radius_;
+        return dx * dx + dy * dy;
+    };
     const std::size_t start = out.size();
     // Room for every candidate (no zero-fill), cut to the answer at the end.
-    out.resize(start + list.epochOthers.size() + tail_.size());
+    out.resize(start + list.epochOthers.size() + list.newcomers.size());
     squared.resize(out.size());
     // Branch-free: every candidate written with its square, the cursor advanced for those kept (a
     // candidate gone or moved has a NaN place, never within).
@@ -200,8 +176,20 @@ void KeptNeighbourhoods::within(Index i, Indices& out, Squares& squared) {
         s += kept;
     }
     std::size_t end = static_cast<std::size_t>(w - out.data());
-    if (!ordered() && !std::is_sorted(out.begin() + static_cast<std::ptrdiff_t>(start),
-                                      out.begin() + static_cast<std::ptrdiff_t>(end))) {
+    tail_.clear();
+    for (const Key k : list.newcomers) {
+        const Index j = keyToCurrent_[k];
+        if (j < 0 || j == i) continue;
+        const double d2 = square(j);
+        if (d2 <= r2) tail_.emplace_back(j, d2);
+    }
+    if (!tail_.empty()) {
+        // A vehicle may be a newcomer twice (it moved again): once in the answer.
+        std::sort(tail_.begin(), tail_.end());
+        tail_.erase(std::unique(tail_.begin(), tail_.end()), tail_.end());
+    }
+    if (!ascending_ && !std::is_sorted(out.begin() + static_cast<std::ptrdiff_t>(start),
+                                       out.begin() + static_cast<std::ptrdiff_t>(end))) {
         // Keys whose order is not the positions' order from step to step: correct, only slower.
         for (std::size_t k = start; k < end; ++k) tail_.emplace_back(out[k], squared[k]);
         std::sort(tail_.begin(), tail_.end());

@@ -50,25 +50,6 @@ public:
     /// Appends to `out` the vehicles j != i within radius() of vehicle i, ascending, and to
     /// `squared` (as long as `out` on entry) each one's (xj - xi)² + (yj - yi)².
     void within(Index i, Indices& out, Squares& squared);
-    /// A candidate of a list: a vehicle's current place and index (NaN and -1: gone or moved,
-    /// never within).
-    struct Candidate {
-        double x, y;
-        Index j;
-    };
-    /// Vehicle i's candidates, for a caller's own loop giving within()'s answer without a list (a
-    /// medium turning the neighbours into receivers): j = current[e].j for each e of `others`
-    /// (ascending), kept when j != i and its square (current[e].x - x)² + (current[e].y - y)² <= r2,
-    /// and the newcomers in range (index and square, ascending), merged in by index. Valid until the
-    /// next call or update. `ordered` false (keys out of the positions' order): use within().
-    struct Candidates {
-        std::span<const Index> others;
-        const Candidate* current;
-        double x, y, r2;
-        std::span<const std::pair<Index, double>> newcomers;
-        bool ordered;
-    };
-    Candidates candidates(Index i);
 
     /// Epochs started so far (for tests and figures).
     std::uint64_t epochs() const { return epochs_; }
@@ -85,10 +66,6 @@ private:
         std::size_t newcomersSeen = 0;   // newcomers_ checked so far
     };
     void startEpoch();
-    /// Vehicle i's list made current for this update, its newcomers in range in tail_ (ascending).
-    List& prepare(Index i);
-    /// A list's epoch candidates map to ascending current indices.
-    bool ordered() const { return ascending_; }
     /// epochCurrent_ from epochToCurrent_ and the update's positions.
     void placeCurrent();
     /// Whether the references of `a` and `b` are within radius + skin.
@@ -107,6 +84,10 @@ private:
     std::vector<Index> epochToCurrent_;  // per reference index, its current index, or -1 (gone)
     /// Per reference index, its vehicle's current position and index (NaN and -1: gone or moved),
     /// set at each update: a list's candidate is one read, not an index and then a position.
+    struct Candidate {
+        double x, y;
+        Index j;
+    };
     std::vector<Candidate> epochCurrent_;
     // Per key: its reference position (set: hasReference_), and its current index (or -1).
     std::vector<double> referenceX_, referenceY_;
@@ -117,8 +98,9 @@ private:
     std::vector<Key> newcomers_;  // keys that came during the epoch, in order of arrival
     std::vector<List> lists_;     // by key
     /// The current indices of the epoch's vehicles still in place ascend with their epoch indices
-    /// (the vehicles keep their order in the positions, whatever their keys): a list's answer
-    /// needs no check of its order. Found at each update.
+    /// (the vehicles keep their order in the positions, whatever their keys: bench5k's station
+    /// indices do not ascend in the snapshot's order): a list's answer needs no check of its order.
+    /// Found at each update.
     bool ascending_ = false;
     std::vector<std::pair<Index, double>> tail_;  // within()'s newcomers in range, and its unsorted case
 };
