@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "ServicesTestSupport.h"
@@ -324,6 +325,34 @@ TEST(DiscMedium, AStationBackWithAnotherReceiverIsReachedThere) {
     ASSERT_NE(h.log.find("b"), nullptr);
     EXPECT_EQ(h.log.find("b")->indications.size(), 2u) << "b's first side heard the frames before it left";
     EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {5, 10}}}));
+}
+
+// The medium finds in its loop over the neighbours whether a sender's receivers are its last list
+// (then handed again, uncompared): a list as long as the last with another station at its end or
+// at its start, a shorter and a longer one must each be a new list. The stations cross the range's
+// edge by 2.5 m a step (within the kept lists' skin: found among a list's own candidates) and, in
+// a second run, jump 100 m a step (past the skin: found among its newcomers); no module changes.
+TEST(DiscMedium, AChangedListOfTheSameModulesIsANewList) {
+    for (const auto& [in, out] : {std::pair{99.0, 101.5}, std::pair{50.0, 150.0}}) {
+        Harness h(kAllButBare, disc(100));
+        // Per step, who is in range: {a, c}, {a, d}, {c, d}, {c, d}, {c}, {c, d}, {a, c, d}, {a, c, d}.
+        const std::vector<std::string> lists = {"ac", "ad", "cd", "cd", "c", "cd", "acd", "acd"};
+        for (std::size_t k = 0; k < lists.size(); ++k) {
+            const auto at = [&](char id) { return lists[k].find(id) != std::string::npos ? in : out; };
+            std::vector<VehicleSnapshot::Vehicle> vehicles = {vehicle("a", at('a'), 0), vehicle("c", 0, at('c')),
+                                                              vehicle("d", -at('d'), 0), vehicle("s")};
+            for (int b = 0; b < 30; ++b)
+                vehicles.push_back(vehicle("bare" + std::to_string(b), 30.0 * b, 500 + 90.0 * b));
+            const SimTime t = secs(1 + 0.1 * static_cast<double>(k + 1));
+            h.step(t, std::move(vehicles));
+            sendAt(h, t, "s", "Ping", static_cast<int>(k + 1));
+        }
+        h.sim.run(secs(3));
+        EXPECT_EQ(heardSeqs(h, "a"), (std::vector<int>{1, 2, 7, 8})) << "in " << in;
+        EXPECT_EQ(heardSeqs(h, "c"), (std::vector<int>{1, 3, 4, 5, 6, 7, 8})) << "in " << in;
+        EXPECT_EQ(heardSeqs(h, "d"), (std::vector<int>{2, 3, 4, 6, 7, 8})) << "in " << in;
+        EXPECT_EQ(countsOf(h.medium), (Counts{{"Ping", {8, 17}}}));
+    }
 }
 
 // Without packet errors or a trace a frame takes its sender's receivers of the step (taken once

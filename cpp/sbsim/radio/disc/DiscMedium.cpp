@@ -80,7 +80,6 @@ void DiscMedium::broadcast(const std::string& sender, std::unique_ptr<V2xMessage
         gridTime_ = snapshot_.time();
         ++step_;
         gridBuilt_ = false;
-        slots_.clear();
     }
     while (fixedIndices_.size() < static_cast<std::size_t>(fixed.size()))
         fixedIndices_.push_back(stationIndex(fixed.ids()[fixedIndices_.size()]));

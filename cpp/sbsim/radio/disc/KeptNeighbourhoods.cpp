@@ -29,7 +29,6 @@ void KeptNeighbourhoods::update(const Eigen::Matrix2Xd& positions, std::span<con
             referenceY_.resize(top + 1);
         }
         std::fill(keyToCurrent_.begin(), keyToCurrent_.end(), -1);
-        currentOrdered_ = std::is_sorted(keys.begin(), keys.end());
         for (Index i = 0; i < n; ++i) {
             const Key k = keys[static_cast<std::size_t>(i)];
             keyToCurrent_[k] = i;
@@ -80,9 +79,14 @@ void KeptNeighbourhoods::placeCurrent() {
     const Eigen::Matrix2Xd& positions = *positions_;
     const double none = std::numeric_limits<double>::quiet_NaN();  // never within: the test is false
     epochCurrent_.resize(epochToCurrent_.size());
+    Index previous = -1;
+    ascending_ = true;
     for (std::size_t e = 0; e < epochToCurrent_.size(); ++e) {
         const Index j = epochToCurrent_[e];
         epochCurrent_[e] = j < 0 ? Candidate{none, none, -1} : Candidate{positions(0, j), positions(1, j), j};
+        if (j < 0) continue;
+        ascending_ = ascending_ && j > previous;
+        previous = j;
     }
 }
 
@@ -103,7 +107,6 @@ void KeptNeighbourhoods::startEpoch() {
     newcomers_.clear();
     epochPositions_ = positions;
     epochKeys_.assign(keys_.begin(), keys_.end());
-    epochOrdered_ = currentOrdered_;
     epochToCurrent_.resize(epochKeys_.size());
     epochKeysSorted_.resize(epochKeys_.size());
     for (std::size_t i = 0; i < epochKeys_.size(); ++i) {
@@ -185,15 +188,15 @@ void KeptNeighbourhoods::within(Index i, Indices& out, Squares& squared) {
         std::sort(tail_.begin(), tail_.end());
         tail_.erase(std::unique(tail_.begin(), tail_.end()), tail_.end());
     }
-    if (!(epochOrdered_ && currentOrdered_) && !std::is_sorted(out.begin() + static_cast<std::ptrdiff_t>(start),
-                                                               out.begin() + static_cast<std::ptrdiff_t>(end))) {
+    if (!ascending_ && !std::is_sorted(out.begin() + static_cast<std::ptrdiff_t>(start),
+                                       out.begin() + static_cast<std::ptrdiff_t>(end))) {
         // Keys whose order is not the positions' order from step to step: correct, only slower.
         for (std::size_t k = start; k < end; ++k) tail_.emplace_back(out[k], squared[k]);
         std::sort(tail_.begin(), tail_.end());
         end = start;
     }
     // The few newcomers merged in from the back, in place (a list ascends: its epoch's candidates
-    // map to ascending current indices while the keys ascend in both orders, else sorted above).
+    // map to ascending current indices while the vehicles keep their order, else sorted above).
     std::size_t to = end + tail_.size();
     const std::size_t size = to;
     for (std::size_t from = end, t = tail_.size(); t > 0;) {

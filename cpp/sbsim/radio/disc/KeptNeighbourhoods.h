@@ -97,10 +97,11 @@ private:
     std::vector<Index> keyToCurrent_;
     std::vector<Key> newcomers_;  // keys that came during the epoch, in order of arrival
     std::vector<List> lists_;     // by key
-    /// Current indices ascend with the epoch's (keys ascending in both orders): a list's answer
-    /// needs no check of its order.
-    bool epochOrdered_ = false;                   // the epoch's keys ascend
-    bool currentOrdered_ = false;                 // the keys of the last update ascend
+    /// The current indices of the epoch's vehicles still in place ascend with their epoch indices
+    /// (the vehicles keep their order in the positions, whatever their keys: bench5k's station
+    /// indices do not ascend in the snapshot's order): a list's answer needs no check of its order.
+    /// Found at each update.
+    bool ascending_ = false;
     std::vector<std::pair<Index, double>> tail_;  // within()'s newcomers in range, and its unsorted case
 };
 
