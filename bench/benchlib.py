@@ -132,6 +132,12 @@ def median(values: Sequence[float]) -> float:
     return statistics.median(values)
 
 
+def mean_se(values: Sequence[float]) -> tuple[float, float]:
+    """The mean and its standard error (sample sd / √n; NaN for fewer than two values)."""
+    m = statistics.fmean(values)
+    return m, statistics.stdev(values) / len(values) ** 0.5 if len(values) > 1 else float("nan")
+
+
 def paired_ratio(results: dict[str, list[Run]], name: str, base: str = "sumo") -> tuple[float, float, float]:
     """Median, min and max over rounds of name's wall time / base's in the same round: interleaved
     runs share the machine's drift, so a ratio per round is steadier than a ratio of medians."""

@@ -24,6 +24,7 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from benchlib import mean_se  # noqa: E402
 from closed_form import NOISE, POWER, RATE, SIGMA, winner_b1  # noqa: E402
 from radio import CONFIGS, DISTANCES, LENGTH, pooled, run  # noqa: E402
 
@@ -84,8 +85,7 @@ def over_seeds(curves: dict[str, list[dict]], labels: dict[str, str]) -> None:
             if len(diffs) < 2:
                 row += f" {'-':>15}"
                 continue
-            m = sum(diffs) / len(diffs)
-            se = math.sqrt(sum((d - m) ** 2 for d in diffs) / (len(diffs) - 1) / len(diffs))
+            m, se = mean_se(diffs)
             row += f" {m:+7.4f}±{se:.4f}"
             if abs(m) > abs(worst[0]):
                 worst = (m, se, DISTANCES[pair[0]])

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import resource
 import subprocess
 import sys
@@ -21,7 +20,7 @@ import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from benchlib import OUT, sbsim  # noqa: E402
+from benchlib import OUT, mean_se, sbsim  # noqa: E402
 
 BINS = 9  # 0-450 m: beyond it every mode delivers nothing
 
@@ -50,16 +49,6 @@ def run(
         "links": s["links"],
         "cpu": after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime,
     }
-
-
-def mean_se(values: list[float]) -> tuple[float, float]:
-    """The mean and its standard error (sample sd / √n)."""
-    n = len(values)
-    m = sum(values) / n
-    if n < 2:
-        return m, math.nan
-    var = sum((v - m) ** 2 for v in values) / (n - 1)
-    return m, math.sqrt(var / n)
 
 
 def main() -> None:
